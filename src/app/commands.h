@@ -1,0 +1,19 @@
+// The subcommands of the `veduta` program. Each registers its options with CLI11 and runs
+// when chosen; exit codes are the ones documented in README.md.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace veduta {
+
+enum ExitCode : int {
+    kExitOk = 0,
+    kExitBadInput = 1,    // a scene or data file is wrong; the message says where
+    kExitBadUsage = 2,    // the command line is wrong
+    kExitFailure = 3,     // output could not be written, or an internal error
+};
+
+void addRenderCommand(CLI::App &app, int &exitCode);
+void addInfoCommand(CLI::App &app, int &exitCode);
+
+}  // namespace veduta

@@ -1,0 +1,45 @@
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "app/commands.h"
+#include "app/run_guarded.h"
+#include "app/scene_loading.h"
+#include "render/bvh.h"
+#include "scene/build_scene.h"
+
+namespace veduta {
+
+namespace {
+
+void runInfo(const std::string &path) {
+    RenderScene scene = buildRenderScene(loadSceneDescription(path));
+    uint64_t stored = 0;
+    for (const BakedMesh &m : scene.meshes) stored += m.mesh.triangleCount();
+    for (const Mesh &p : scene.prototypes) stored += p.triangleCount();
+    Bvh bvh(scene);
+
+    std::printf("scene: %s\n", path.empty() ? "<built-in default scene>" : path.c_str());
+    std::printf("resolution: %dx%d\n", scene.camera.width, scene.camera.height);
+    std::printf("spp: %u\n", scene.settings.samplesPerPixel);
+    std::printf("materials: %zu\n", scene.materials.size());
+    std::printf("meshes: %zu\n", scene.meshes.size());
+    std::printf("prototypes: %zu\n", scene.prototypes.size());
+    std::printf("instances: %zu\n", scene.instances.size());
+    std::printf("stored_triangles: %llu\n", (unsigned long long)stored);
+    std::printf("effective_triangles: %llu\n", (unsigned long long)scene.effectiveTriangleCount());
+    std::printf("bvh_build_seconds: %.3f\n", bvh.stats().buildSeconds);
+    std::printf("bvh_bytes: %lld\n", (long long)bvh.stats().bytes);
+    std::printf("bvh_peak_bytes: %lld\n", (long long)bvh.stats().peakBytes);
+}
+
+}  // namespace
+
+void addInfoCommand(CLI::App &app, int &exitCode) {
+    auto path = std::make_shared<std::string>();
+    CLI::App *cmd = app.add_subcommand("info", "Build a scene's geometry and BVH and print key: value statistics");
+    cmd->add_option("scene", *path, "Scene file (XML); the built-in default scene when omitted")->check(CLI::ExistingFile);
+    cmd->callback([path, &exitCode] { exitCode = runGuarded([&] { runInfo(*path); }); });
+}
+
+}  // namespace veduta

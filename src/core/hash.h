@@ -1,0 +1,30 @@
+// Integer hashing: the root of every random choice. A choice is a pure function of the scene
+// seed and the stable identity of the thing it is made for, never of global state.
+#pragma once
+
+#include <cstdint>
+#include <initializer_list>
+
+namespace veduta {
+
+// Chris Wellons' "lowbias32" integer finaliser: full avalanche, cheap.
+inline uint32_t mix32(uint32_t x) {
+    x ^= x >> 16;
+    x *= 0x7feb352du;
+    x ^= x >> 15;
+    x *= 0x846ca68bu;
+    x ^= x >> 16;
+    return x;
+}
+
+// Hash of an ordered list of integers: hashValues({seed, x, y}) != hashValues({seed, y, x}).
+inline uint32_t hashValues(std::initializer_list<uint32_t> values) {
+    uint32_t h = 0x9e3779b9u;
+    for (uint32_t v : values) h = mix32(h ^ mix32(v + 0x632be5abu));
+    return h;
+}
+
+// Maps 32 random bits to a float in [0, 1); never returns 1.
+inline float bitsToUnitFloat(uint32_t bits) { return float(bits >> 8) * 0x1p-24f; }
+
+}  // namespace veduta

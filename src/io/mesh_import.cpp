@@ -1,0 +1,59 @@
+#include "io/mesh_import.h"
+
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include "core/error.h"
+
+namespace veduta {
+
+namespace {
+
+Transform toTransform(const aiMatrix4x4 &m) {
+    return {{m.a1, m.a2, m.a3, m.a4, m.b1, m.b2, m.b3, m.b4, m.c1, m.c2, m.c3, m.c4}};
+}
+
+Mesh convert(const aiMesh &in) {
+    Mesh m;
+    m.positions.reserve(in.mNumVertices);
+    for (unsigned i = 0; i < in.mNumVertices; ++i) m.positions.push_back({in.mVertices[i].x, in.mVertices[i].y, in.mVertices[i].z});
+    if (in.HasNormals()) {
+        for (unsigned i = 0; i < in.mNumVertices; ++i) m.normals.push_back({in.mNormals[i].x, in.mNormals[i].y, in.mNormals[i].z});
+    }
+    if (in.HasTextureCoords(0)) {
+        for (unsigned i = 0; i < in.mNumVertices; ++i) m.uvs.push_back({in.mTextureCoords[0][i].x, in.mTextureCoords[0][i].y});
+    }
+    for (unsigned f = 0; f < in.mNumFaces; ++f) {
+        const aiFace &face = in.mFaces[f];
+        if (face.mNumIndices != 3) continue;  // points and lines left after triangulation
+        m.indices.insert(m.indices.end(), {face.mIndices[0], face.mIndices[1], face.mIndices[2]});
+    }
+    m.setMaterial(0);
+    return m;
+}
+
+void collect(const aiScene &scene, const aiNode &node, const Transform &parent, Mesh &out) {
+    Transform toWorld = parent * toTransform(node.mTransformation);
+    for (unsigned i = 0; i < node.mNumMeshes; ++i) out.append(convert(*scene.mMeshes[node.mMeshes[i]]), toWorld);
+    for (unsigned i = 0; i < node.mNumChildren; ++i) collect(scene, *node.mChildren[i], toWorld, out);
+}
+
+}  // namespace
+
+Mesh importMesh(const std::filesystem::path &file) {
+    if (!std::filesystem::is_regular_file(file)) throw InputError({file.string()}, "no such mesh file");
+    Assimp::Importer importer;
+    // Normals are the file's own; we do not invent smooth normals for faceted models.
+    const aiScene *scene = importer.ReadFile(file.string(), aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                                                                aiProcess_SortByPType);
+    if (!scene || !scene->mRootNode || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) {
+        throw InputError({file.string()}, std::string("cannot read mesh: ") + importer.GetErrorString());
+    }
+    Mesh mesh;
+    collect(*scene, *scene->mRootNode, Transform{}, mesh);
+    if (mesh.triangleCount() == 0) throw InputError({file.string()}, "mesh file holds no triangles");
+    return mesh;
+}
+
+}  // namespace veduta

@@ -1,0 +1,154 @@
+#include "render/bvh.h"
+
+#include <chrono>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <embree3/rtcore.h>
+
+namespace veduta {
+
+namespace {
+
+struct MemoryCounter {
+    std::atomic<int64_t> current{0};
+    std::atomic<int64_t> peak{0};
+};
+
+bool countMemory(void *user, ssize_t bytes, bool /*post*/) {
+    auto *counter = static_cast<MemoryCounter *>(user);
+    int64_t now = counter->current.fetch_add(bytes) + bytes;
+    int64_t peak = counter->peak.load();
+    while (now > peak && !counter->peak.compare_exchange_weak(peak, now)) {
+    }
+    return true;
+}
+
+// Embree calls this from its own threads, through C frames: record, never throw.
+void recordError(void *user, RTCError code, const char *message) {
+    auto *error = static_cast<std::string *>(user);
+    if (error->empty()) *error = "Embree error " + std::to_string(int(code)) + ": " + (message ? message : "");
+}
+
+RTCGeometry makeTriangles(RTCDevice device, const Mesh &mesh) {
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto *vertices = static_cast<float *>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                                  RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.vertexCount()));
+    for (size_t i = 0; i < mesh.vertexCount(); ++i) {
+        vertices[3 * i] = mesh.positions[i].x;
+        vertices[3 * i + 1] = mesh.positions[i].y;
+        vertices[3 * i + 2] = mesh.positions[i].z;
+    }
+    auto *indices = static_cast<uint32_t *>(rtcSetNewGeometryBuffer(
+        geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), mesh.triangleCount()));
+    std::copy(mesh.indices.begin(), mesh.indices.end(), indices);
+    rtcCommitGeometry(geometry);
+    return geometry;
+}
+
+RTCRayHit toRayHit(const Ray &ray, float tMax) {
+    RTCRayHit rh{};
+    rh.ray.org_x = ray.origin.x;
+    rh.ray.org_y = ray.origin.y;
+    rh.ray.org_z = ray.origin.z;
+    rh.ray.dir_x = ray.direction.x;
+    rh.ray.dir_y = ray.direction.y;
+    rh.ray.dir_z = ray.direction.z;
+    rh.ray.tnear = 0;
+    rh.ray.tfar = tMax;
+    rh.ray.mask = ~0u;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    return rh;
+}
+
+}  // namespace
+
+struct Bvh::Impl {
+    MemoryCounter memory;
+    std::string error;
+    RTCDevice device = nullptr;
+    std::vector<RTCScene> prototypes;
+    RTCScene top = nullptr;
+    uint32_t meshCount = 0;
+
+    ~Impl() {
+        if (top) rtcReleaseScene(top);
+        for (RTCScene s : prototypes) rtcReleaseScene(s);
+        if (device) rtcReleaseDevice(device);
+    }
+};
+
+Bvh::Bvh(const RenderScene &scene) : impl_(std::make_unique<Impl>()) {
+    auto start = std::chrono::steady_clock::now();
+    impl_->device = rtcNewDevice("verbose=0");
+    if (!impl_->device) throw std::runtime_error("cannot create an Embree device");
+    rtcSetDeviceErrorFunction(impl_->device, recordError, &impl_->error);
+    rtcSetDeviceMemoryMonitorFunction(impl_->device, countMemory, &impl_->memory);
+
+    for (const Mesh &prototype : scene.prototypes) {
+        RTCScene s = rtcNewScene(impl_->device);
+        RTCGeometry g = makeTriangles(impl_->device, prototype);
+        rtcAttachGeometryByID(s, g, 0);
+        rtcReleaseGeometry(g);
+        rtcCommitScene(s);
+        impl_->prototypes.push_back(s);
+    }
+
+    // Geometry ids: baked meshes first, then instances, so a hit's id says which it is.
+    impl_->top = rtcNewScene(impl_->device);
+    impl_->meshCount = uint32_t(scene.meshes.size());
+    for (uint32_t i = 0; i < scene.meshes.size(); ++i) {
+        RTCGeometry g = makeTriangles(impl_->device, scene.meshes[i].mesh);
+        rtcAttachGeometryByID(impl_->top, g, i);
+        rtcReleaseGeometry(g);
+    }
+    for (uint32_t i = 0; i < scene.instances.size(); ++i) {
+        const Instance &instance = scene.instances[i];
+        RTCGeometry g = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_INSTANCE);
+        rtcSetGeometryInstancedScene(g, impl_->prototypes[instance.prototype]);
+        rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, instance.objectToWorld.m.data());
+        rtcCommitGeometry(g);
+        rtcAttachGeometryByID(impl_->top, g, impl_->meshCount + i);
+        rtcReleaseGeometry(g);
+    }
+    rtcCommitScene(impl_->top);
+    if (!impl_->error.empty()) throw std::runtime_error(impl_->error);
+
+    stats_.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stats_.bytes = impl_->memory.current.load();
+    stats_.peakBytes = impl_->memory.peak.load();
+}
+
+Bvh::~Bvh() = default;
+
+std::optional<Hit> Bvh::intersect(const Ray &ray, bool coherent) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+    RTCRayHit rh = toRayHit(ray, std::numeric_limits<float>::infinity());
+    rtcIntersect1(impl_->top, &context, &rh);
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+
+    Hit hit;
+    hit.t = rh.ray.tfar;
+    hit.instanced = rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID;
+    hit.index = hit.instanced ? rh.hit.instID[0] - impl_->meshCount : rh.hit.geomID;
+    hit.primitive = rh.hit.primID;
+    hit.u = rh.hit.u;
+    hit.v = rh.hit.v;
+    return hit;
+}
+
+bool Bvh::occluded(const Ray &ray, float tMax) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+    RTCRay r = toRayHit(ray, tMax).ray;
+    rtcOccluded1(impl_->top, &context, &r);
+    return r.tfar < 0;  // Embree sets tfar to -inf on a hit
+}
+
+}  // namespace veduta

@@ -1,0 +1,48 @@
+// The ray-tracing acceleration structure: Embree 3 with one BVH per prototype and a top-level
+// BVH over the baked meshes and the instances. This is the only file pair that sees Embree.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <optional>
+
+#include "scene/camera.h"
+#include "scene/render_scene.h"
+
+namespace veduta {
+
+struct Hit {
+    float t = 0;
+    bool instanced = false;
+    uint32_t index = 0;      // into RenderScene::instances if instanced, else RenderScene::meshes
+    uint32_t primitive = 0;  // triangle within the mesh or prototype
+    float u = 0, v = 0;      // barycentrics of vertices 1 and 2
+};
+
+struct BvhStats {
+    double buildSeconds = 0;
+    int64_t bytes = 0;  // memory Embree holds for the scene after the build
+    int64_t peakBytes = 0;
+};
+
+class Bvh {
+  public:
+    explicit Bvh(const RenderScene &scene);
+    ~Bvh();
+    Bvh(const Bvh &) = delete;
+    Bvh &operator=(const Bvh &) = delete;
+
+    // `coherent` tells Embree that neighbouring calls trace similar rays (camera rays).
+    std::optional<Hit> intersect(const Ray &ray, bool coherent) const;
+    bool occluded(const Ray &ray, float tMax) const;
+
+    const BvhStats &stats() const { return stats_; }
+
+  private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+    BvhStats stats_;
+};
+
+}  // namespace veduta

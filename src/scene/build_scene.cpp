@@ -1,0 +1,85 @@
+#include "scene/build_scene.h"
+
+#include <map>
+
+#include <fmt/format.h>
+
+#include "io/mesh_import.h"
+
+namespace veduta {
+
+namespace {
+
+class SceneAssembler {
+  public:
+    explicit SceneAssembler(const SceneDescription &d) : d_(d) {}
+
+    RenderScene assemble() && {
+        builder_.setCamera(d_.camera);
+        builder_.setSun(d_.sun);
+        builder_.setEnvironment(d_.environment);
+        builder_.setSettings(d_.settings);
+        // Material 0 is the default for geometry that names none.
+        builder_.addMaterial(Material{"default", Vec3f(0.8f)});
+        for (const MaterialDesc &m : d_.materials) builder_.addMaterial(m.material);
+
+        for (const GeometryDesc &g : d_.geometry) {
+            builder_.addMesh(part(g), g.transform, g.objectId.value_or(nextObjectId()));
+        }
+        for (const PrototypeDesc &p : d_.prototypes) {
+            Mesh merged;
+            for (const GeometryDesc &g : p.parts) merged.append(part(g), g.transform);
+            prototypeIds_[p.name] = builder_.addPrototype(std::move(merged));
+        }
+        for (const InstanceDesc &inst : d_.instances) {
+            auto it = prototypeIds_.find(inst.prototype.name);
+            if (it == prototypeIds_.end()) {
+                throw InputError(inst.prototype.loc, fmt::format("unknown prototype '{}'", inst.prototype.name));
+            }
+            MaterialId override = inst.material.name.empty() ? kNoMaterial : material(inst.material);
+            builder_.addInstance({inst.transform, it->second, override, inst.objectId.value_or(nextObjectId())});
+        }
+        return std::move(builder_).build();
+    }
+
+  private:
+    // The mesh of one geometry element in its own frame, with its material applied.
+    Mesh part(const GeometryDesc &g) {
+        Mesh mesh = g.shape ? makeShape(*g.shape) : meshFile(g);
+        mesh.setMaterial(g.material.name.empty() ? 0 : material(g.material));
+        return mesh;
+    }
+
+    const Mesh &meshFile(const GeometryDesc &g) {
+        auto it = meshFiles_.find(g.meshFile);
+        if (it != meshFiles_.end()) return it->second;
+        try {
+            return meshFiles_.emplace(g.meshFile, importMesh(g.meshFile)).first->second;
+        } catch (const InputError &e) {
+            throw InputError(g.meshFileLoc, e.what());
+        }
+    }
+
+    MaterialId material(const NameRef &ref) const {
+        MaterialId id = builder_.findMaterial(ref.name);
+        if (id == kNoMaterial) throw InputError(ref.loc, fmt::format("unknown material '{}'", ref.name));
+        return id;
+    }
+
+    // Objects without an explicit id are numbered in file order, from 1.
+    ObjectId nextObjectId() { return ++lastObjectId_; }
+
+    const SceneDescription &d_;
+    RenderSceneBuilder builder_;
+    std::map<std::string, PrototypeId> prototypeIds_;
+    std::map<std::filesystem::path, Mesh> meshFiles_;
+    ObjectId lastObjectId_ = 0;
+};
+
+}  // namespace
+
+RenderScene buildRenderScene(const SceneDescription &description) {
+    return SceneAssembler(description).assemble();
+}
+
+}  // namespace veduta

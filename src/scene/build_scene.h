@@ -1,0 +1,15 @@
+// The generator for what a scene file lists directly: shapes, mesh files, prototypes and
+// instances. It turns a SceneDescription into a RenderScene; later generators (terrain,
+// city, GIS) add to the same builder.
+#pragma once
+
+#include "scene/render_scene.h"
+#include "scene/scene_description.h"
+
+namespace veduta {
+
+// Throws InputError at the place in the scene file a problem comes from (an unknown material
+// or prototype, a mesh file that cannot be read).
+RenderScene buildRenderScene(const SceneDescription &description);
+
+}  // namespace veduta

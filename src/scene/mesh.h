@@ -1,0 +1,30 @@
+// A triangle mesh as generators emit it and renderers consume it.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/vecmath.h"
+
+namespace veduta {
+
+using MaterialId = uint32_t;
+inline constexpr MaterialId kNoMaterial = ~0u;
+
+struct Mesh {
+    std::vector<Vec3f> positions;
+    std::vector<Vec3f> normals;  // per vertex; empty means flat shading
+    std::vector<Vec2f> uvs;      // per vertex; may be empty
+    std::vector<uint32_t> indices;             // three per triangle
+    std::vector<MaterialId> triangleMaterials;  // one per triangle
+
+    size_t triangleCount() const { return indices.size() / 3; }
+    size_t vertexCount() const { return positions.size(); }
+
+    // Appends `other` with `transform` applied, keeping its per-triangle materials.
+    void append(const Mesh &other, const Transform &transform);
+    // Gives every triangle the same material.
+    void setMaterial(MaterialId material);
+};
+
+}  // namespace veduta

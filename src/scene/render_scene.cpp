@@ -1,0 +1,73 @@
+#include "scene/render_scene.h"
+
+#include <stdexcept>
+
+namespace veduta {
+
+uint64_t RenderScene::effectiveTriangleCount() const {
+    uint64_t count = 0;
+    for (const BakedMesh &m : meshes) count += m.mesh.triangleCount();
+    for (const Instance &instance : instances) count += prototypes[instance.prototype].triangleCount();
+    return count;
+}
+
+MaterialId RenderSceneBuilder::addMaterial(Material material) {
+    auto id = MaterialId(scene_.materials.size());
+    materialsByName_[material.name] = id;
+    scene_.materials.push_back(std::move(material));
+    return id;
+}
+
+MaterialId RenderSceneBuilder::findMaterial(const std::string &name) const {
+    auto it = materialsByName_.find(name);
+    return it == materialsByName_.end() ? kNoMaterial : it->second;
+}
+
+void RenderSceneBuilder::addMesh(const Mesh &mesh, const Transform &objectToWorld, ObjectId objectId) {
+    BakedMesh baked;
+    baked.mesh.append(mesh, objectToWorld);
+    baked.objectId = objectId;
+    scene_.meshes.push_back(std::move(baked));
+}
+
+PrototypeId RenderSceneBuilder::addPrototype(Mesh mesh) {
+    scene_.prototypes.push_back(std::move(mesh));
+    return PrototypeId(scene_.prototypes.size() - 1);
+}
+
+void RenderSceneBuilder::addInstance(const Instance &instance) {
+    if (instance.prototype >= scene_.prototypes.size()) throw std::out_of_range("instance of an unknown prototype");
+    scene_.instances.push_back(instance);
+}
+
+RenderScene RenderSceneBuilder::build() && {
+    std::vector<uint32_t> uses(scene_.prototypes.size(), 0);
+    for (const Instance &instance : scene_.instances) ++uses[instance.prototype];
+
+    // Bake prototypes used once; renumber the others densely and drop unused ones.
+    std::vector<PrototypeId> newId(scene_.prototypes.size(), 0);
+    std::vector<Mesh> shared;
+    for (size_t p = 0; p < scene_.prototypes.size(); ++p) {
+        if (uses[p] > 1) {
+            newId[p] = PrototypeId(shared.size());
+            shared.push_back(std::move(scene_.prototypes[p]));
+        }
+    }
+    std::vector<Instance> kept;
+    for (const Instance &instance : scene_.instances) {
+        if (uses[instance.prototype] > 1) {
+            Instance moved = instance;
+            moved.prototype = newId[instance.prototype];
+            kept.push_back(moved);
+            continue;
+        }
+        Mesh mesh = scene_.prototypes[instance.prototype];
+        if (instance.materialOverride != kNoMaterial) mesh.setMaterial(instance.materialOverride);
+        addMesh(mesh, instance.objectToWorld, instance.objectId);
+    }
+    scene_.prototypes = std::move(shared);
+    scene_.instances = std::move(kept);
+    return std::move(scene_);
+}
+
+}  // namespace veduta

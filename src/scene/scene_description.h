@@ -1,0 +1,73 @@
+// SceneDescription: what a scene file says, checked for form but not yet turned into
+// geometry. docs/scene-format.md documents the XML it comes from.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "scene/camera.h"
+#include "scene/environment.h"
+#include "scene/material.h"
+#include "scene/render_settings.h"
+#include "scene/shapes.h"
+#include "scene/sun.h"
+
+namespace veduta {
+
+// A reference by name, with the place it was written for messages.
+struct NameRef {
+    std::string name;  // empty: none given
+    FileLoc loc;
+};
+
+// A <box>, <sphere>, ... or <mesh> element: one piece of geometry with its placement.
+struct GeometryDesc {
+    FileLoc loc;
+    std::optional<ShapeSpec> shape;  // set for primitive shapes
+    std::filesystem::path meshFile;  // set for <mesh>, already resolved against the scene's folder
+    FileLoc meshFileLoc;
+    Transform transform;
+    NameRef material;
+    std::optional<uint32_t> objectId;
+};
+
+struct PrototypeDesc {
+    FileLoc loc;
+    std::string name;
+    std::vector<GeometryDesc> parts;
+};
+
+struct InstanceDesc {
+    FileLoc loc;
+    NameRef prototype;
+    Transform transform;
+    NameRef material;  // overrides the prototype's materials when given
+    std::optional<uint32_t> objectId;
+};
+
+struct MaterialDesc {
+    FileLoc loc;
+    Material material;
+};
+
+struct SceneDescription {
+    std::string source;  // file name, or a name for built-in text
+    Camera camera;
+    Sun sun;
+    Environment environment;
+    RenderSettings settings;
+    std::vector<MaterialDesc> materials;
+    std::vector<GeometryDesc> geometry;
+    std::vector<PrototypeDesc> prototypes;
+    std::vector<InstanceDesc> instances;
+};
+
+// Parse a scene file; throws InputError with file:line:column on any problem.
+SceneDescription readSceneFile(const std::filesystem::path &file);
+// Parse scene XML held in memory; relative mesh paths resolve against `baseDirectory`.
+SceneDescription readSceneText(std::string text, const std::string &name, const std::filesystem::path &baseDirectory);
+
+}  // namespace veduta

@@ -1,0 +1,239 @@
+// The scene-file reader: XML → SceneDescription. No geometry is made here.
+#include <fmt/format.h>
+
+#include "io/xml_reader.h"
+#include "scene/scene_description.h"
+
+namespace veduta {
+
+namespace {
+
+class SceneFileReader {
+  public:
+    SceneFileReader(const XmlDocument &doc, std::filesystem::path baseDirectory)
+        : doc_(doc), baseDirectory_(std::move(baseDirectory)) {}
+
+    SceneDescription read() {
+        XmlElement root(doc_, doc_.root());
+        if (root.name() != "scene") root.fail(fmt::format("the root element is <{}>, expected <scene>", root.name()));
+        if (root.integer("version", 1, 1, 1) != 1) root.failAt("version", "unsupported version");
+        root.checkAllRead();
+        scene_.source = doc_.name();
+        for (const XmlElement &e : root.children()) readTopLevel(e);
+        return std::move(scene_);
+    }
+
+  private:
+    void readTopLevel(const XmlElement &e) {
+        std::string_view n = e.name();
+        if (n == "camera") {
+            readCamera(e);
+        } else if (n == "sun") {
+            readSun(e);
+        } else if (n == "environment") {
+            scene_.environment.radiance = e.color("radiance", scene_.environment.radiance);
+            e.checkAllRead();
+        } else if (n == "render") {
+            readSettings(e);
+        } else if (n == "material") {
+            readMaterial(e);
+        } else if (n == "prototype") {
+            readPrototype(e);
+        } else if (n == "instance") {
+            readInstance(e);
+        } else if (isGeometry(n)) {
+            scene_.geometry.push_back(readGeometry(e));
+        } else {
+            e.fail(fmt::format("unknown element <{}>", n));
+        }
+    }
+
+    static bool isGeometry(std::string_view n) {
+        return n == "box" || n == "sphere" || n == "cylinder" || n == "cone" || n == "plane" || n == "mesh";
+    }
+
+    void readCamera(const XmlElement &e) {
+        Camera &c = scene_.camera;
+        c.position = e.vec3("position", c.position);
+        c.lookAt = e.vec3("look_at", c.lookAt);
+        c.up = e.vec3("up", c.up);
+        c.verticalFovDegrees = e.number("fov", c.verticalFovDegrees, 0.01f, 179.0f);
+        if (e.has("resolution")) {
+            std::vector<float> r = e.numbers("resolution");
+            if (r.size() != 2 || r[0] < 1 || r[1] < 1 || r[0] > 65536 || r[1] > 65536 || r[0] != std::floor(r[0]) ||
+                r[1] != std::floor(r[1])) {
+                e.failAt("resolution", "resolution takes two whole numbers, width and height, 1 to 65536");
+            }
+            c.width = int(r[0]);
+            c.height = int(r[1]);
+        }
+        if (length(c.lookAt - c.position) == 0) e.fail("camera position and look_at are the same point");
+        if (length(cross(c.lookAt - c.position, c.up)) == 0) e.fail("camera up is parallel to the view direction");
+        e.checkAllRead();
+    }
+
+    void readSun(const XmlElement &e) {
+        Sun &sun = scene_.sun;
+        if (e.has("direction") && (e.has("azimuth") || e.has("elevation"))) {
+            e.fail("give the sun either 'direction' or 'azimuth' and 'elevation', not both");
+        }
+        if (e.has("direction")) {
+            Vec3f d = e.vec3("direction", sun.direction);
+            if (length(d) == 0) e.failAt("direction", "sun direction has zero length");
+            sun.direction = normalize(d);
+        } else if (e.has("azimuth") || e.has("elevation")) {
+            sun.direction = Sun::directionFromAzimuthElevation(e.number("azimuth", 180, -360, 360),
+                                                               e.number("elevation", 45, -90, 90));
+        }
+        sun.irradiance = e.color("irradiance", sun.irradiance);
+        sun.angularDiameterDegrees = e.number("angular_diameter", sun.angularDiameterDegrees, 0, 30);
+        e.checkAllRead();
+    }
+
+    void readSettings(const XmlElement &e) {
+        RenderSettings &s = scene_.settings;
+        s.samplesPerPixel = uint32_t(e.integer("spp", int(s.samplesPerPixel), 1, 1 << 24));
+        s.maxDepth = uint32_t(e.integer("max_depth", int(s.maxDepth), 1, 1024));
+        s.seed = e.unsignedInteger("seed", s.seed);
+        s.tileSize = uint32_t(e.integer("tile_size", int(s.tileSize), 1, 4096));
+        e.checkAllRead();
+    }
+
+    void readMaterial(const XmlElement &e) {
+        MaterialDesc m{e.loc(), {}};
+        m.material.name = e.string("name");
+        m.material.diffuse = e.color("diffuse", m.material.diffuse);
+        if (m.material.diffuse.x < 0 || m.material.diffuse.y < 0 || m.material.diffuse.z < 0 ||
+            maxComponent(m.material.diffuse) > 1) {
+            e.failAt("diffuse", "diffuse albedo must lie in [0, 1]");
+        }
+        for (const MaterialDesc &other : scene_.materials) {
+            if (other.material.name == m.material.name) {
+                e.failAt("name", fmt::format("material '{}' is already defined at {}", m.material.name, other.loc.toString()));
+            }
+        }
+        e.checkAllRead();
+        scene_.materials.push_back(std::move(m));
+    }
+
+    void readPrototype(const XmlElement &e) {
+        PrototypeDesc p{e.loc(), e.string("name"), {}};
+        for (const PrototypeDesc &other : scene_.prototypes) {
+            if (other.name == p.name) {
+                e.failAt("name", fmt::format("prototype '{}' is already defined at {}", p.name, other.loc.toString()));
+            }
+        }
+        e.checkAllRead();
+        for (const XmlElement &child : e.children()) {
+            if (!isGeometry(child.name())) child.fail(fmt::format("<{}> cannot stand inside <prototype>", child.name()));
+            p.parts.push_back(readGeometry(child));
+        }
+        if (p.parts.empty()) e.fail(fmt::format("prototype '{}' has no geometry", p.name));
+        scene_.prototypes.push_back(std::move(p));
+    }
+
+    void readInstance(const XmlElement &e) {
+        InstanceDesc inst;
+        inst.loc = e.loc();
+        inst.prototype = {e.string("prototype"), e.attributeLoc("prototype")};
+        inst.transform = readTransform(e);
+        inst.material = readNameRef(e, "material");
+        inst.objectId = readObjectId(e);
+        e.checkAllRead();
+        scene_.instances.push_back(std::move(inst));
+    }
+
+    GeometryDesc readGeometry(const XmlElement &e) {
+        GeometryDesc g;
+        g.loc = e.loc();
+        if (e.name() == "mesh") {
+            std::filesystem::path file = e.string("file");
+            g.meshFile = file.is_absolute() ? file : baseDirectory_ / file;
+            g.meshFileLoc = e.attributeLoc("file");
+        } else {
+            g.shape = readShape(e);
+        }
+        g.transform = readTransform(e);
+        g.material = readNameRef(e, "material");
+        g.objectId = readObjectId(e);
+        e.checkAllRead();
+        return g;
+    }
+
+    static ShapeSpec readShape(const XmlElement &e) {
+        ShapeSpec s;
+        std::string_view n = e.name();
+        if (n == "box") {
+            s.kind = ShapeKind::Box;
+            s.size = e.vec3("size", s.size);
+        } else if (n == "plane") {
+            s.kind = ShapeKind::Plane;
+            if (e.has("size")) {
+                std::vector<float> v = e.numbers("size");
+                if (v.size() != 2) e.failAt("size", "plane size takes two numbers, x and y");
+                s.size = {v[0], v[1], 0};
+            }
+        } else {
+            s.kind = n == "sphere" ? ShapeKind::Sphere : (n == "cylinder" ? ShapeKind::Cylinder : ShapeKind::Cone);
+            s.radius = e.number("radius", s.radius, 1e-6f, 1e7f);
+            s.segments = e.integer("segments", s.segments, 3, 4096);
+            if (s.kind == ShapeKind::Sphere) {
+                s.rings = e.integer("rings", s.rings, 2, 4096);
+            } else {
+                s.height = e.number("height", s.height, 1e-6f, 1e7f);
+                s.smooth = e.boolean("smooth", s.smooth);
+            }
+        }
+        if (s.size.x < 0 || s.size.y < 0 || s.size.z < 0) e.failAt("size", "sizes must not be negative");
+        return s;
+    }
+
+    // Scale, then rotate about x, y and z in that order, then translate; or a full matrix.
+    static Transform readTransform(const XmlElement &e) {
+        if (e.has("matrix")) {
+            if (e.has("translate") || e.has("rotate") || e.has("scale")) {
+                e.failAt("matrix", "give either 'matrix' or 'translate'/'rotate'/'scale', not both");
+            }
+            std::vector<float> m = e.numbers("matrix");
+            if (m.size() != 12) e.failAt("matrix", "matrix takes 12 numbers: a 3x4 matrix, row by row");
+            Transform t;
+            std::copy(m.begin(), m.end(), t.m.begin());
+            if (t.determinant() == 0) e.failAt("matrix", "matrix is singular");
+            return t;
+        }
+        Vec3f scale = e.has("scale") ? e.color("scale", Vec3f(1)) : Vec3f(1);
+        if (scale.x * scale.y * scale.z == 0) e.failAt("scale", "scale must not be zero");
+        Vec3f rotate = e.vec3("rotate", {0, 0, 0});
+        Vec3f translate = e.vec3("translate", {0, 0, 0});
+        return Transform::translate(translate) * Transform::rotate(2, rotate.z) * Transform::rotate(1, rotate.y) *
+               Transform::rotate(0, rotate.x) * Transform::scale(scale);
+    }
+
+    static NameRef readNameRef(const XmlElement &e, const char *attribute) {
+        if (!e.has(attribute)) return {};
+        return {e.string(attribute), e.attributeLoc(attribute)};
+    }
+
+    static std::optional<uint32_t> readObjectId(const XmlElement &e) {
+        if (!e.has("id")) return std::nullopt;
+        return e.unsignedInteger("id", 0);
+    }
+
+    const XmlDocument &doc_;
+    std::filesystem::path baseDirectory_;
+    SceneDescription scene_;
+};
+
+}  // namespace
+
+SceneDescription readSceneFile(const std::filesystem::path &file) {
+    XmlDocument doc = XmlDocument::fromFile(file);
+    return SceneFileReader(doc, file.parent_path()).read();
+}
+
+SceneDescription readSceneText(std::string text, const std::string &name, const std::filesystem::path &baseDirectory) {
+    XmlDocument doc = XmlDocument::fromString(std::move(text), name);
+    return SceneFileReader(doc, baseDirectory).read();
+}
+
+}  // namespace veduta
