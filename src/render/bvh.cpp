@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <embree3/rtcore.h>
+#include <fmt/format.h>
 
 namespace veduta {
 
@@ -29,7 +30,7 @@ bool countMemory(void *user, ssize_t bytes, bool /*post*/) {
 // Embree calls this from its own threads, through C frames: record, never throw.
 void recordError(void *user, RTCError code, const char *message) {
     auto *error = static_cast<std::string *>(user);
-    if (error->empty()) *error = "Embree error " + std::to_string(int(code)) + ": " + (message ? message : "");
+    if (error->empty()) *error = fmt::format("Embree error {}: {}", int(code), message ? message : "");
 }
 
 RTCGeometry makeTriangles(RTCDevice device, const Mesh &mesh) {
@@ -123,6 +124,8 @@ Bvh::Bvh(const RenderScene &scene) : impl_(std::make_unique<Impl>()) {
 }
 
 Bvh::~Bvh() = default;
+
+void *Bvh::embreeScene() const { return impl_->top; }
 
 std::optional<Hit> Bvh::intersect(const Ray &ray, bool coherent) const {
     RTCIntersectContext context;

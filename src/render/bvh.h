@@ -38,6 +38,8 @@ class Bvh {
     bool occluded(const Ray &ray, float tMax) const;
 
     const BvhStats &stats() const { return stats_; }
+    // The top-level RTCScene, for benchmarks that measure Embree itself on our BVH.
+    void *embreeScene() const;
 
   private:
     struct Impl;

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include <OpenImageIO/imageio.h>
+#include <fmt/format.h>
 #include <unistd.h>
 
 namespace veduta {
@@ -13,20 +14,20 @@ namespace {
 
 // The temporary keeps the target's extension: OpenImageIO picks the format by it.
 std::filesystem::path temporaryName(const std::filesystem::path &file) {
-    return file.parent_path() / ("." + file.stem().string() + ".tmp" + std::to_string(getpid()) + file.extension().string());
+    return file.parent_path() / fmt::format(".{}.tmp{}{}", file.stem().string(), getpid(), file.extension().string());
 }
 
 void writeImage(const std::filesystem::path &file, const OIIO::ImageSpec &spec, const void *pixels) {
     if (!file.parent_path().empty()) std::filesystem::create_directories(file.parent_path());
     std::filesystem::path tmp = temporaryName(file);
     auto out = OIIO::ImageOutput::create(file.string());
-    if (!out) throw std::runtime_error(file.string() + ": cannot write this image format: " + OIIO::geterror());
+    if (!out) throw std::runtime_error(fmt::format("{}: cannot write this image format: {}", file.string(), OIIO::geterror()));
     bool ok = out->open(tmp.string(), spec) && out->write_image(spec.format, pixels) && out->close();
     if (!ok) {
         std::string message = out->geterror();
         std::error_code ignored;
         std::filesystem::remove(tmp, ignored);
-        throw std::runtime_error(file.string() + ": " + message);
+        throw std::runtime_error(fmt::format("{}: {}", file.string(), message));
     }
     std::filesystem::rename(tmp, file);
 }

@@ -1,0 +1,144 @@
+// Path-tracer throughput against Embree's own: rays per second of a whole render of the
+// default scene, and raw rtcIntersect1 throughput for incoherent rays in the same BVH, in the
+// same run, on one thread each. Prints the medians and their ratio.
+//
+//   build/release/bench/bench_path_tracer [--benchmark_repetitions=5]
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <random>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+#include <embree3/rtcore.h>
+#include <pmmintrin.h>
+#include <tbb/task_arena.h>
+#include <xmmintrin.h>
+
+#include "app/scene_loading.h"
+#include "render/renderer.h"
+#include "render/sampling.h"
+#include "render/surface_interaction.h"
+#include "scene/build_scene.h"
+
+namespace veduta {
+namespace {
+
+struct BenchScene {
+    RenderScene scene;
+    Bvh bvh;
+    std::vector<Ray> incoherentRays;
+
+    BenchScene() : scene(makeScene()), bvh(scene), incoherentRays(makeIncoherentRays()) {}
+
+    static RenderScene makeScene() {
+        SceneDescription d = loadSceneDescription("");
+        d.camera.width = 160;
+        d.camera.height = 90;
+        d.settings.samplesPerPixel = 16;
+        return buildRenderScene(d);
+    }
+
+    // Rays leaving visible surface points in uniformly random directions: what diffuse
+    // bounces look like to the BVH, without any coherence between neighbours.
+    std::vector<Ray> makeIncoherentRays() const {
+        std::mt19937 rng(1);
+        std::uniform_real_distribution<float> u(0, 1);
+        SurfaceLookup surfaces(scene);
+        std::vector<Ray> rays;
+        while (rays.size() < 1u << 20) {
+            Ray primary = scene.camera.generateRay(u(rng) * float(scene.camera.width), u(rng) * float(scene.camera.height));
+            std::optional<Hit> hit = bvh.intersect(primary, false);
+            if (!hit) continue;
+            SurfaceInteraction si = surfaces.at(*hit, primary.direction);
+            Vec3f local = sampleCosineHemisphere({u(rng), u(rng)});
+            rays.push_back({offsetRayOrigin(si.position, si.geometricNormal), Frame::fromNormal(si.geometricNormal).toWorld(local)});
+        }
+        std::shuffle(rays.begin(), rays.end(), rng);
+        return rays;
+    }
+};
+
+BenchScene &benchScene() {
+    static BenchScene s;
+    return s;
+}
+
+void BM_PathTracerRays(benchmark::State &state) {
+    BenchScene &b = benchScene();
+    tbb::task_arena one(1);
+    uint64_t rays = 0;
+    for (auto _ : state) {
+        RenderStats stats;
+        one.execute([&] { benchmark::DoNotOptimize(render(b.scene, b.bvh, RenderOptions{}, &stats)); });
+        rays += stats.rays.total();
+    }
+    state.counters["rays_per_second"] = benchmark::Counter(double(rays), benchmark::Counter::kIsRate);
+}
+
+void BM_EmbreeIncoherentIntersect1(benchmark::State &state) {
+    BenchScene &b = benchScene();
+    auto *scene = static_cast<RTCScene>(b.bvh.embreeScene());
+    _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
+    _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
+    uint64_t rays = 0, hits = 0;
+    for (auto _ : state) {
+        for (const Ray &ray : b.incoherentRays) {
+            RTCIntersectContext context;
+            rtcInitIntersectContext(&context);
+            context.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+            RTCRayHit rh{};
+            rh.ray.org_x = ray.origin.x;
+            rh.ray.org_y = ray.origin.y;
+            rh.ray.org_z = ray.origin.z;
+            rh.ray.dir_x = ray.direction.x;
+            rh.ray.dir_y = ray.direction.y;
+            rh.ray.dir_z = ray.direction.z;
+            rh.ray.tfar = std::numeric_limits<float>::infinity();
+            rh.ray.mask = ~0u;
+            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+            rtcIntersect1(scene, &context, &rh);
+            hits += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+        }
+        rays += b.incoherentRays.size();
+    }
+    benchmark::DoNotOptimize(hits);
+    state.counters["rays_per_second"] = benchmark::Counter(double(rays), benchmark::Counter::kIsRate);
+}
+
+BENCHMARK(BM_PathTracerRays)->Unit(benchmark::kMillisecond)->MinTime(1.0);
+BENCHMARK(BM_EmbreeIncoherentIntersect1)->Unit(benchmark::kMillisecond)->MinTime(1.0);
+
+// Keeps the console output and remembers each benchmark's median rays/s.
+class RatioReporter : public benchmark::ConsoleReporter {
+  public:
+    void ReportRuns(const std::vector<Run> &runs) override {
+        ConsoleReporter::ReportRuns(runs);
+        for (const Run &run : runs) {
+            bool median = run.run_type == Run::RT_Aggregate && run.aggregate_name == "median";
+            bool single = run.run_type == Run::RT_Iteration && run.repetitions <= 1;
+            if (!median && !single) continue;
+            auto it = run.counters.find("rays_per_second");
+            if (it != run.counters.end()) rates[run.run_name.function_name] = it->second.value;
+        }
+    }
+    std::map<std::string, double> rates;
+};
+
+}  // namespace
+}  // namespace veduta
+
+int main(int argc, char **argv) {
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    veduta::RatioReporter reporter;
+    benchmark::RunSpecifiedBenchmarks(&reporter);
+    auto &r = reporter.rates;
+    if (r.count("BM_PathTracerRays") && r.count("BM_EmbreeIncoherentIntersect1")) {
+        double pt = r["BM_PathTracerRays"], raw = r["BM_EmbreeIncoherentIntersect1"];
+        std::printf("\npath tracer: %.3f Mrays/s, raw Embree incoherent rtcIntersect1: %.3f Mrays/s, ratio: %.1f %%\n",
+                    pt * 1e-6, raw * 1e-6, 100.0 * pt / raw);
+    }
+    benchmark::Shutdown();
+    return 0;
+}

@@ -1,0 +1,101 @@
+#!/usr/bin/env bash
+# The veduta program as a script would call it: exit codes, messages, files written or not.
+# Usage: cli_test.sh VEDUTA_BINARY TEST_DATA_DIR SOURCE_DIR
+set -u
+veduta=$1 data=$2 source=$3
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+passed=0 failed=0
+
+check() {  # check NAME COMMAND...: passes when COMMAND succeeds
+    local name=$1; shift
+    if "$@"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAILED: $name"; fi
+}
+
+# Runs veduta, keeping stdout, stderr and the exit code.
+run() { "$veduta" "$@" >"$work/out" 2>"$work/err"; echo $? >"$work/rc"; }
+rc_is() { [ "$(cat "$work/rc")" = "$1" ] || { echo "exit code $(cat "$work/rc"), expected $1"; cat "$work/err"; false; }; }
+err_has() { grep -qF -- "$1" "$work/err" || { echo "stderr lacks '$1':"; cat "$work/err"; false; }; }
+out_has() { grep -qF -- "$1" "$work/out" || { echo "stdout lacks '$1':"; cat "$work/out"; false; }; }
+
+for sub in "" render info; do
+    run $sub --help
+    check "help $sub" rc_is 0
+    check "help $sub text" out_has "Usage"
+done
+run --version
+check "version" out_has "veduta 0."
+
+run render --bogus-option
+check "bad option exits 2" rc_is 2
+
+# The default scene renders to a valid EXR and PNG.
+run render --res 40x24 --spp 2 -q -o "$work/d.exr" --png "$work/d.png"
+check "default render" rc_is 0
+check "exr written" test -s "$work/d.exr"
+check "png written" test -s "$work/d.png"
+if command -v iinfo >/dev/null; then
+    check "iinfo reads the exr" bash -c "iinfo -v '$work/d.exr' | grep -q '40 x   24, 4 channel, float openexr'"
+    check "exr channels" bash -c "iinfo -v '$work/d.exr' | grep -q 'channel list: R, G, B, A'"
+fi
+check "no temporary left" bash -c "! ls -a '$work' | grep -q tmp"
+
+# 1 and 2 threads give bit-identical pixels.
+run render --res 64x36 --spp 3 -q --threads 1 -o "$work/t1.exr"
+check "1 thread" rc_is 0
+run render --res 64x36 --spp 3 -q --threads 2 -o "$work/t2.exr"
+check "2 threads" rc_is 0
+if command -v idiff >/dev/null; then
+    check "threads bit-identical" bash -c "idiff -fail 0 -failpercent 0 -warn 0 '$work/t1.exr' '$work/t2.exr' >/dev/null"
+fi
+
+# Bad scenes: exit 1, file:line: in the message, no output, an older output kept.
+cat >"$work/unknown.xml" <<'XML'
+<scene>
+  <camera resolution="8 8"/>
+  <teapot/>
+</scene>
+XML
+cat >"$work/number.xml" <<'XML'
+<scene>
+  <render spp="many"/>
+</scene>
+XML
+cat >"$work/mesh.xml" <<'XML'
+<scene>
+  <mesh file="missing.obj"/>
+</scene>
+XML
+for bad in unknown:3 number:2 mesh:2; do
+    name=${bad%%:*} line=${bad##*:}
+    run render "$work/$name.xml" -q -o "$work/$name.exr" --png "$work/$name.png"
+    check "$name exits 1" rc_is 1
+    check "$name message" err_has "$work/$name.xml:$line:"
+    check "$name no exr" test ! -e "$work/$name.exr"
+    check "$name no png" test ! -e "$work/$name.png"
+done
+echo "keep me" >"$work/old.exr"
+run render "$work/unknown.xml" -q -o "$work/old.exr"
+check "old output kept" grep -q "keep me" "$work/old.exr"
+
+# info prints the statistics scripts read.
+run info "$source/scenes/default.xml"
+check "info exits 0" rc_is 0
+for key in meshes: prototypes: instances: effective_triangles: bvh_build_seconds: bvh_bytes:; do
+    check "info $key" out_has "$key"
+done
+
+# A scene with a mesh file renders.
+cat >"$work/meshes.xml" <<XML
+<scene>
+  <camera position="2 -3 2" look_at="0 0 0" resolution="16 16"/>
+  <render spp="1"/>
+  <mesh file="$data/tetra.obj"/>
+  <mesh file="$data/quad.ply" translate="0 0 -0.1" scale="4"/>
+</scene>
+XML
+run render "$work/meshes.xml" -q -o "$work/meshes.exr"
+check "mesh scene renders" rc_is 0
+
+echo "cli: $passed passed, $failed failed"
+[ "$failed" = 0 ]

@@ -1,0 +1,174 @@
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include <tbb/task_arena.h>
+
+#include "app/scene_loading.h"
+#include "render/renderer.h"
+#include "test_scenes.h"
+
+namespace veduta {
+namespace {
+
+Film renderWith(const RenderScene &scene, int threads) {
+    tbb::task_arena arena(threads);
+    return arena.execute([&] {
+        Bvh bvh(scene);
+        return render(scene, bvh, RenderOptions{});
+    });
+}
+
+Film renderXml(const std::string &xml) { return renderWith(test::sceneFromXml(xml), 2); }
+
+RenderScene defaultSceneAt(int width, int height, uint32_t spp) {
+    std::ifstream in(std::string(VEDUTA_SOURCE_DIR) + "/scenes/default.xml");
+    std::stringstream text;
+    text << in.rdbuf();
+    SceneDescription d = readSceneText(text.str(), "default.xml", VEDUTA_SOURCE_DIR "/scenes");
+    d.camera.width = width;
+    d.camera.height = height;
+    d.settings.samplesPerPixel = spp;
+    return buildRenderScene(d);
+}
+
+TEST(Render, OneAndTwoThreadsGiveBitIdenticalImages) {
+    RenderScene scene = defaultSceneAt(96, 54, 4);
+    Film one = renderWith(scene, 1), two = renderWith(scene, 2);
+    EXPECT_EQ(one.pixels(), two.pixels());
+}
+
+TEST(Render, TileSizeDoesNotChangeTheImage) {
+    RenderScene scene = defaultSceneAt(96, 54, 4);
+    scene.settings.tileSize = 7;
+    Film small = renderWith(scene, 2);
+    scene.settings.tileSize = 64;
+    Film large = renderWith(scene, 2);
+    EXPECT_EQ(small.pixels(), large.pixels());
+}
+
+TEST(Render, SeedChangesTheNoiseOnly) {
+    RenderScene scene = defaultSceneAt(48, 27, 2);
+    Film a = renderWith(scene, 2);
+    scene.settings.seed = 1;
+    Film b = renderWith(scene, 2);
+    EXPECT_NE(a.pixels(), b.pixels());
+}
+
+// The same two objects, once as two instances of one prototype and once as plain shapes.
+struct InstancedAndBaked {
+    RenderScene instanced, baked;
+};
+
+InstancedAndBaked instancedAndBaked(int maxDepth) {
+    const std::string head = R"(<scene>
+  <camera position="0 -12 4" look_at="0 0 1" fov="40" resolution="96 64"/>
+  <sun azimuth="200" elevation="40" irradiance="3"/>
+  <environment radiance="0.4 0.5 0.7"/>
+  <render spp="8" max_depth=")" + std::to_string(maxDepth) + R"("/>
+  <material name="red" diffuse="0.8 0.2 0.1"/>
+  <plane size="40 40"/>)";
+    return {test::sceneFromXml(head + R"(
+  <prototype name="p"><box size="1 1 2" material="red"/><sphere radius="0.6" translate="0 0 2.5"/></prototype>
+  <instance prototype="p" translate="-2 0 0" rotate="0 0 30"/>
+  <instance prototype="p" translate="2 1 0" scale="1.5"/>
+</scene>)"),
+            test::sceneFromXml(head + R"(
+  <box size="1 1 2" material="red" translate="-2 0 0" rotate="0 0 30"/>
+  <sphere radius="0.6" matrix="0.8660254 -0.5 0 -2  0.5 0.8660254 0 0  0 0 1 2.5"/>
+  <box size="1 1 2" material="red" translate="2 1 0" scale="1.5"/>
+  <sphere radius="0.6" translate="2 1 3.75" scale="1.5"/>
+</scene>)")};
+}
+
+double mean(const Film &film) {
+    double sum = 0;
+    for (float v : film.pixels()) sum += v;
+    return sum / double(film.pixels().size());
+}
+
+// With direct light only, every sample traces the same two rays in both scenes, and the
+// only difference is float rounding in where the transform is applied.
+TEST(Render, InstancedObjectsRenderLikeTheSameObjectsBaked) {
+    InstancedAndBaked scenes = instancedAndBaked(1);
+    ASSERT_EQ(scenes.instanced.instances.size(), 2u);
+    ASSERT_EQ(scenes.baked.instances.size(), 0u);
+    Film a = renderWith(scenes.instanced, 2), b = renderWith(scenes.baked, 2);
+    for (size_t i = 0; i < a.pixels().size(); ++i) {
+        ASSERT_NEAR(a.pixels()[i], b.pixels()[i], 1e-5f * std::max(1.0f, a.pixels()[i])) << "value " << i;
+    }
+}
+
+// With bounces, a rounding difference can send a path elsewhere and change a pixel by one
+// path's worth, but never the image as a whole.
+TEST(Render, InstancedAndBakedAgreeWithIndirectLight) {
+    InstancedAndBaked scenes = instancedAndBaked(4);
+    Film a = renderWith(scenes.instanced, 2), b = renderWith(scenes.baked, 2);
+    EXPECT_NEAR(mean(a), mean(b), 1e-3 * mean(b));
+}
+
+// White furnace: an albedo-1 object in a constant environment of radiance 1 is invisible.
+TEST(Render, WhiteFurnace) {
+    Film film = renderXml(R"(<scene>
+  <camera position="0 -4 0" look_at="0 0 0" fov="40" resolution="48 48"/>
+  <sun irradiance="0"/>
+  <environment radiance="1"/>
+  <render spp="16" max_depth="64"/>
+  <material name="white" diffuse="1"/>
+  <sphere radius="1" segments="128" rings="64" material="white"/>
+</scene>)");
+    for (size_t i = 0; i < film.pixels().size(); ++i) ASSERT_NEAR(film.pixels()[i], 1.0f, 0.01f) << "value " << i;
+}
+
+// A Lambertian plane of albedo ρ lit by a sun of irradiance E at incidence θ, with a black
+// sky, has radiance ρ·E·cos θ / π everywhere.
+void expectPlaneRadiance(const std::string &sun, float expected) {
+    Film film = renderXml(R"(<scene>
+  <camera position="0 0 10" look_at="0 0 0" up="0 1 0" fov="30" resolution="32 32"/>
+  )" + sun + R"(
+  <environment radiance="0"/>
+  <render spp="16" max_depth="8"/>
+  <material name="grey" diffuse="0.5"/>
+  <plane size="1000 1000" material="grey"/>
+</scene>)");
+    for (int y = 0; y < film.height(); ++y) {
+        for (int x = 0; x < film.width(); ++x) {
+            for (int c = 0; c < 3; ++c) {
+                float v = film.rgba()[(size_t(y) * size_t(film.width()) + size_t(x)) * 4 + size_t(c)];
+                ASSERT_NEAR(v, expected, 0.01f * expected) << "pixel " << x << "," << y;
+            }
+        }
+    }
+}
+
+TEST(Render, AnalyticPlaneUnderSunAtNormalIncidence) {
+    expectPlaneRadiance(R"(<sun direction="0 0 1" irradiance="2" angular_diameter="0.53"/>)", 0.5f * 2.0f / kPi);
+}
+
+TEST(Render, AnalyticPlaneUnderSunAtSixtyDegrees) {
+    expectPlaneRadiance(R"(<sun azimuth="30" elevation="30" irradiance="2" angular_diameter="0"/>)",
+                        0.5f * 2.0f * 0.5f / kPi);
+}
+
+// Under a uniform sky of radiance 1 and nothing else, a plane of albedo ρ reflects ρ.
+TEST(Render, AnalyticPlaneUnderUniformSky) {
+    Film film = renderXml(R"(<scene>
+  <camera position="0 0 10" look_at="0 0 0" up="0 1 0" fov="30" resolution="32 32"/>
+  <sun irradiance="0"/>
+  <environment radiance="1"/>
+  <render spp="16" max_depth="8"/>
+  <material name="grey" diffuse="0.5"/>
+  <plane size="1000 1000" material="grey"/>
+</scene>)");
+    for (size_t i = 0; i < film.pixels().size(); ++i) ASSERT_NEAR(film.pixels()[i], i % 4 == 3 ? 1.0f : 0.5f, 0.005f);
+}
+
+TEST(Render, BuiltInDefaultSceneParsesAndHasInstances) {
+    RenderScene scene = buildRenderScene(loadSceneDescription(""));
+    EXPECT_GT(scene.instances.size(), 10u);
+    EXPECT_GT(scene.meshes.size(), 3u);
+}
+
+}  // namespace
+}  // namespace veduta

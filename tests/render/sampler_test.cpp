@@ -1,0 +1,62 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+#include <vector>
+
+#include "render/sampler.h"
+
+namespace veduta {
+namespace {
+
+TEST(Sampler, IsAPureFunctionOfSeedPixelSampleAndDimension) {
+    PixelSampler a(3, 10, 20, 5), b(3, 10, 20, 5);
+    for (int d = 0; d < 8; ++d) {
+        Vec2f x = a.next2D(), y = b.next2D();
+        EXPECT_EQ(x.x, y.x);
+        EXPECT_EQ(x.y, y.y);
+    }
+    Vec2f base = PixelSampler(3, 10, 20, 5).next2D();
+    for (PixelSampler other : {PixelSampler(4, 10, 20, 5), PixelSampler(3, 11, 20, 5), PixelSampler(3, 10, 21, 5),
+                               PixelSampler(3, 10, 20, 6)}) {
+        Vec2f v = other.next2D();
+        EXPECT_TRUE(v.x != base.x || v.y != base.y);
+    }
+}
+
+// The first 2^k samples of a pixel are a (0, k, 2)-net: one point in each of the 2^k
+// elementary intervals of any shape. Checked for the 4 x 4 and 16 x 1 grids of 16 points.
+TEST(Sampler, PowerOfTwoPrefixesAreStratified) {
+    for (uint32_t pixel = 0; pixel < 20; ++pixel) {
+        for (int pair = 0; pair < 3; ++pair) {
+            std::set<int> squares, columns, rows;
+            for (uint32_t s = 0; s < 16; ++s) {
+                PixelSampler sampler(1, pixel, 7, s);
+                Vec2f u{};
+                for (int k = 0; k <= pair; ++k) u = sampler.next2D();
+                ASSERT_GE(u.x, 0.0f);
+                ASSERT_LT(u.x, 1.0f);
+                squares.insert(int(u.x * 4) * 4 + int(u.y * 4));
+                columns.insert(int(u.x * 16));
+                rows.insert(int(u.y * 16));
+            }
+            EXPECT_EQ(squares.size(), 16u);
+            EXPECT_EQ(columns.size(), 16u);
+            EXPECT_EQ(rows.size(), 16u);
+        }
+    }
+}
+
+TEST(Sampler, PairsOfOnePixelAreDecorrelated) {
+    // Dimension pairs use independent scrambles: pair 0 and pair 1 of the same sample differ.
+    int same = 0;
+    for (uint32_t s = 0; s < 256; ++s) {
+        PixelSampler sampler(0, 3, 3, s);
+        Vec2f a = sampler.next2D(), b = sampler.next2D();
+        same += std::abs(a.x - b.x) < 1e-3f;
+    }
+    EXPECT_LT(same, 8);
+}
+
+}  // namespace
+}  // namespace veduta

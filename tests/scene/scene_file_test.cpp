@@ -1,0 +1,121 @@
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+#include "scene/build_scene.h"
+#include "scene/scene_description.h"
+#include "test_scenes.h"
+
+namespace veduta {
+namespace {
+
+SceneDescription parse(const std::string &xml) { return readSceneText(xml, "s.xml", VEDUTA_TEST_DATA); }
+
+// The message of the InputError that reading and building `xml` throws.
+std::string errorOf(const std::string &xml) {
+    try {
+        buildRenderScene(parse(xml));
+    } catch (const InputError &e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+TEST(SceneFile, ReadsEveryTopLevelElement) {
+    SceneDescription d = parse(R"(<scene version="1">
+  <camera position="1 2 3" look_at="0 0 0" up="0 0 1" fov="30" resolution="320 200"/>
+  <sun azimuth="90" elevation="0" irradiance="2" angular_diameter="0"/>
+  <environment radiance="0.1 0.2 0.3"/>
+  <render spp="7" max_depth="3" seed="42" tile_size="8"/>
+  <material name="red" diffuse="0.9 0.1 0.1"/>
+  <box size="1 2 3" material="red" translate="1 0 0" id="17"/>
+  <prototype name="p"><sphere radius="2" segments="8" rings="4"/></prototype>
+  <instance prototype="p" rotate="0 0 90" scale="2"/>
+</scene>)");
+    EXPECT_EQ(d.camera.position, Vec3f(1, 2, 3));
+    EXPECT_EQ(d.camera.width, 320);
+    EXPECT_EQ(d.camera.height, 200);
+    EXPECT_FLOAT_EQ(d.camera.verticalFovDegrees, 30);
+    // Azimuth 90 is east, elevation 0 the horizon.
+    EXPECT_NEAR(d.sun.direction.x, 1, 1e-6);
+    EXPECT_NEAR(d.sun.direction.y, 0, 1e-6);
+    EXPECT_NEAR(d.sun.direction.z, 0, 1e-6);
+    EXPECT_EQ(d.sun.irradiance, Vec3f(2));
+    EXPECT_EQ(d.environment.radiance, Vec3f(0.1f, 0.2f, 0.3f));
+    EXPECT_EQ(d.settings.samplesPerPixel, 7u);
+    EXPECT_EQ(d.settings.maxDepth, 3u);
+    EXPECT_EQ(d.settings.seed, 42u);
+    EXPECT_EQ(d.settings.tileSize, 8u);
+    ASSERT_EQ(d.materials.size(), 1u);
+    ASSERT_EQ(d.geometry.size(), 1u);
+    EXPECT_EQ(d.geometry[0].objectId, 17u);
+    EXPECT_EQ(d.geometry[0].transform.applyPoint({0, 0, 0}), Vec3f(1, 0, 0));
+    ASSERT_EQ(d.prototypes.size(), 1u);
+    ASSERT_EQ(d.instances.size(), 1u);
+    Vec3f p = d.instances[0].transform.applyPoint({1, 0, 0});
+    EXPECT_NEAR(p.x, 0, 1e-6);
+    EXPECT_NEAR(p.y, 2, 1e-6);
+}
+
+TEST(SceneFile, UnknownElementNamesLineAndColumn) {
+    EXPECT_EQ(errorOf("<scene>\n  <camera/>\n   <teapot/>\n</scene>"), "s.xml:3:4: unknown element <teapot>");
+}
+
+TEST(SceneFile, BadNumberPointsAtTheValue) {
+    EXPECT_EQ(errorOf("<scene>\n<render spp=\"12x\"/>\n</scene>"),
+              "s.xml:2:14: '12x' is not an integer (attribute 'spp')");
+    EXPECT_EQ(errorOf("<scene>\n<camera fov=\"wide\"/>\n</scene>"),
+              "s.xml:2:14: 'wide' is not a number (attribute 'fov')");
+}
+
+TEST(SceneFile, UnknownAttributeIsAnError) {
+    EXPECT_EQ(errorOf("<scene>\n<box sise=\"1 1 1\"/>\n</scene>"), "s.xml:2:6: unknown attribute 'sise' on <box>");
+}
+
+TEST(SceneFile, OutOfRangeValuesAreErrors) {
+    EXPECT_EQ(errorOf("<scene><render spp=\"0\"/></scene>"), "s.xml:1:21: attribute 'spp' is 0, outside [1, 16777216]");
+    EXPECT_EQ(errorOf("<scene><material name=\"m\" diffuse=\"1.5\"/></scene>"),
+              "s.xml:1:36: diffuse albedo must lie in [0, 1]");
+}
+
+TEST(SceneFile, MalformedXmlNamesThePlace) {
+    std::string message = errorOf("<scene>\n<box size=\"1 1 1\">\n</scene>");
+    EXPECT_EQ(message.rfind("s.xml:3:", 0), 0u) << message;
+}
+
+TEST(SceneFile, MissingMeshFileIsReportedAtTheAttribute) {
+    EXPECT_EQ(errorOf("<scene>\n  <mesh file=\"nowhere.obj\"/>\n</scene>"),
+              std::string("s.xml:2:15: ") + VEDUTA_TEST_DATA + "/nowhere.obj: no such mesh file");
+}
+
+TEST(SceneFile, UnreadableMeshFileIsReportedAtTheAttribute) {
+    std::string message = errorOf("<scene><mesh file=\"broken.obj\"/></scene>");
+    EXPECT_EQ(message.rfind("s.xml:1:20: ", 0), 0u) << message;
+}
+
+TEST(SceneFile, UnknownReferencesNameTheirPlace) {
+    EXPECT_EQ(errorOf("<scene>\n<box material=\"gold\"/>\n</scene>"), "s.xml:2:16: unknown material 'gold'");
+    EXPECT_EQ(errorOf("<scene>\n<instance prototype=\"tree\"/>\n</scene>"), "s.xml:2:22: unknown prototype 'tree'");
+}
+
+TEST(SceneFile, DuplicateNamesAreErrors) {
+    std::string message = errorOf("<scene><material name=\"a\"/>\n<material name=\"a\"/></scene>");
+    EXPECT_EQ(message, "s.xml:2:17: material 'a' is already defined at s.xml:1:8");
+}
+
+TEST(SceneFile, LoadsObjAndPlyMeshes) {
+    RenderScene scene = test::sceneFromXml(R"(<scene>
+  <mesh file="tetra.obj"/>
+  <mesh file="quad.ply" translate="5 0 0"/>
+</scene>)");
+    ASSERT_EQ(scene.meshes.size(), 2u);
+    EXPECT_EQ(scene.meshes[0].mesh.triangleCount(), 4u);
+    EXPECT_EQ(scene.meshes[1].mesh.triangleCount(), 2u);
+    EXPECT_FLOAT_EQ(scene.meshes[1].mesh.positions[0].x, 5);
+}
+
+TEST(SceneFile, RootMustBeScene) {
+    EXPECT_EQ(errorOf("<world/>"), "s.xml:1:1: the root element is <world>, expected <scene>");
+}
+
+}  // namespace
+}  // namespace veduta
