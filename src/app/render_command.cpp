@@ -35,16 +35,22 @@ void applyOverrides(const RenderArgs &args, SceneDescription &d) {
     if (args.seed) d.settings.seed = *args.seed;
     if (args.maxDepth) d.settings.maxDepth = *args.maxDepth;
     if (args.tileSize) d.settings.tileSize = *args.tileSize;
-    if (!args.resolution.empty()) {
-        int w = 0, h = 0;
-        char x = 0, extra = 0;
-        if (std::sscanf(args.resolution.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' || w < 1 || h < 1 ||
-            w > 65536 || h > 65536) {
-            throw InputError({"--res"}, fmt::format("'{}' is not a resolution like 1920x1080", args.resolution));
-        }
-        d.camera.width = w;
-        d.camera.height = h;
+    if (!args.resolution.empty()) std::sscanf(args.resolution.c_str(), "%dx%d", &d.camera.width, &d.camera.height);
+}
+
+// Checks a WxH resolution for CLI11: an empty string means the text is fine.
+std::string checkResolution(const std::string &text) {
+    int w = 0, h = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' || w < 1 || h < 1 || w > 65536 ||
+        h > 65536) {
+        return fmt::format("'{}' is not a resolution like 1920x1080", text);
     }
+    return {};
+}
+
+std::string checkExrName(const std::string &text) {
+    return std::filesystem::path(text).extension() == ".exr" ? std::string() : "the output must be an .exr file";
 }
 
 std::string defaultOutput(const std::string &scene) {
@@ -67,14 +73,14 @@ void runRender(const RenderArgs &args) {
     std::string exr = args.exr.empty() ? defaultOutput(args.scene) : args.exr;
     writeExr(film, exr);
     if (!args.png.empty()) writePng(film, args.png);
+    if (stats.nonFiniteSamples) {
+        std::fprintf(stderr, "veduta: warning: %llu samples were not finite and were dropped\n",
+                     (unsigned long long)stats.nonFiniteSamples);
+    }
     if (!args.quiet) {
         std::fprintf(stderr, "%s: %dx%d, %u spp, %.2f s, %.2f Mrays/s%s%s\n", exr.c_str(), film.width(), film.height(),
                      scene.settings.samplesPerPixel, stats.seconds, double(stats.rays.total()) / stats.seconds * 1e-6,
                      args.png.empty() ? "" : ", ", args.png.c_str());
-        if (stats.nonFiniteSamples) {
-            std::fprintf(stderr, "veduta: warning: %llu samples were not finite and were dropped\n",
-                         (unsigned long long)stats.nonFiniteSamples);
-        }
     }
 }
 
@@ -85,7 +91,8 @@ void addRenderCommand(CLI::App &app, int &exitCode) {
     CLI::App *cmd = app.add_subcommand("render", "Path-trace a scene to OpenEXR (and optionally PNG)");
     cmd->add_option("scene", args->scene, "Scene file (XML); the built-in default scene when omitted")
         ->check(CLI::ExistingFile);
-    cmd->add_option("-o,--output", args->exr, "EXR file to write [renders/<scene name>.exr]");
+    cmd->add_option("-o,--output", args->exr, "EXR file to write [renders/<scene name>.exr]")
+        ->check(CLI::Validator(checkExrName, "FILE.exr"));
     cmd->add_option("--png", args->png, "Also write an 8-bit sRGB PNG here");
     cmd->add_option("--spp", args->spp, "Samples per pixel (overrides the scene)")->check(CLI::Range(1u, 1u << 24));
     cmd->add_option("--seed", args->seed, "Seed of every random choice (overrides the scene)");
@@ -93,7 +100,8 @@ void addRenderCommand(CLI::App &app, int &exitCode) {
         ->check(CLI::Range(1u, 1024u));
     cmd->add_option("--tile", args->tileSize, "Tile size in pixels; changes speed, never the image")
         ->check(CLI::Range(1u, 4096u));
-    cmd->add_option("--res", args->resolution, "Resolution WxH (overrides the scene)");
+    cmd->add_option("--res", args->resolution, "Resolution WxH (overrides the scene)")
+        ->check(CLI::Validator(checkResolution, "WxH"));
     cmd->add_option("--threads", args->threads, "Worker threads [all cores]")->check(CLI::Range(1u, 4096u));
     cmd->add_flag("-q,--quiet", args->quiet, "No progress bar and no summary");
     cmd->callback([args, &exitCode] { exitCode = runGuarded([&] { runRender(*args); }); });

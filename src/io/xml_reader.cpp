@@ -146,6 +146,16 @@ Vec3f XmlElement::color(const char *attribute, Vec3f fallback) const {
     return {v[0], v[1], v[2]};
 }
 
+Vec3f XmlElement::color(const char *attribute, Vec3f fallback, float lo, float hi) const {
+    Vec3f value = color(attribute, fallback);
+    for (int i = 0; i < 3; ++i) {
+        if (value[i] < lo || value[i] > hi) {
+            failAt(attribute, fmt::format("attribute '{}' has {}, outside [{}, {}]", attribute, value[i], lo, hi));
+        }
+    }
+    return value;
+}
+
 std::vector<XmlElement> XmlElement::children() const {
     std::vector<XmlElement> result;
     for (pugi::xml_node child : node_.children()) {
@@ -158,6 +168,22 @@ void XmlElement::checkAllRead() const {
     for (pugi::xml_attribute a : node_.attributes()) {
         if (std::find(read_.begin(), read_.end(), a.name()) == read_.end()) {
             throw InputError(doc_->locate(a.name()), fmt::format("unknown attribute '{}' on <{}>", a.name(), name()));
+        }
+        // pugixml keeps both copies of a repeated attribute; lookups would see only the first.
+        for (pugi::xml_attribute b = a.next_attribute(); b; b = b.next_attribute()) {
+            if (std::string_view(a.name()) == b.name()) {
+                throw InputError(doc_->locate(b.name()), fmt::format("attribute '{}' is given twice", b.name()));
+            }
+        }
+    }
+}
+
+void XmlElement::checkLeaf() const {
+    checkAllRead();
+    for (pugi::xml_node child : node_.children()) {
+        if (child.type() == pugi::node_element) {
+            throw InputError(doc_->locate(child.name() - 1),
+                             fmt::format("<{}> cannot stand inside <{}>", child.name(), name()));
         }
     }
 }

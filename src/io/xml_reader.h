@@ -61,10 +61,14 @@ class XmlElement {
     Vec3f vec3(const char *attribute, Vec3f fallback) const;
     // Three numbers, or one number meaning all three.
     Vec3f color(const char *attribute, Vec3f fallback) const;
+    Vec3f color(const char *attribute, Vec3f fallback, float lo, float hi) const;  // each component
     std::vector<float> numbers(const char *attribute) const;
 
     std::vector<XmlElement> children() const;
+    // Reports attributes nobody read, and attributes given twice.
     void checkAllRead() const;
+    // checkAllRead(), and reports child elements: for elements that hold none.
+    void checkLeaf() const;
 
   private:
     void markRead(const char *attribute) const { read_.emplace_back(attribute); }

@@ -19,12 +19,13 @@ class SceneAssembler {
         builder_.setSun(d_.sun);
         builder_.setEnvironment(d_.environment);
         builder_.setSettings(d_.settings);
-        // Material 0 is the default for geometry that names none.
+        // Material 0 is for geometry that names none; a scene may redefine "default".
         builder_.addMaterial(Material{"default", Vec3f(0.8f)});
         for (const MaterialDesc &m : d_.materials) builder_.addMaterial(m.material);
+        defaultMaterial_ = builder_.findMaterial("default");
 
         for (const GeometryDesc &g : d_.geometry) {
-            builder_.addMesh(part(g), g.transform, g.objectId.value_or(nextObjectId()));
+            builder_.addMesh(part(g), g.transform, g.objectId);
         }
         for (const PrototypeDesc &p : d_.prototypes) {
             Mesh merged;
@@ -37,7 +38,7 @@ class SceneAssembler {
                 throw InputError(inst.prototype.loc, fmt::format("unknown prototype '{}'", inst.prototype.name));
             }
             MaterialId override = inst.material.name.empty() ? kNoMaterial : material(inst.material);
-            builder_.addInstance({inst.transform, it->second, override, inst.objectId.value_or(nextObjectId())});
+            builder_.addInstance({inst.transform, it->second, override, inst.objectId});
         }
         return std::move(builder_).build();
     }
@@ -46,7 +47,7 @@ class SceneAssembler {
     // The mesh of one geometry element in its own frame, with its material applied.
     Mesh part(const GeometryDesc &g) {
         Mesh mesh = g.shape ? makeShape(*g.shape) : meshFile(g);
-        mesh.setMaterial(g.material.name.empty() ? 0 : material(g.material));
+        mesh.setMaterial(g.material.name.empty() ? defaultMaterial_ : material(g.material));
         return mesh;
     }
 
@@ -66,14 +67,11 @@ class SceneAssembler {
         return id;
     }
 
-    // Objects without an explicit id are numbered in file order, from 1.
-    ObjectId nextObjectId() { return ++lastObjectId_; }
-
     const SceneDescription &d_;
     RenderSceneBuilder builder_;
     std::map<std::string, PrototypeId> prototypeIds_;
     std::map<std::filesystem::path, Mesh> meshFiles_;
-    ObjectId lastObjectId_ = 0;
+    MaterialId defaultMaterial_ = 0;
 };
 
 }  // namespace

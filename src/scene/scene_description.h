@@ -31,7 +31,7 @@ struct GeometryDesc {
     FileLoc meshFileLoc;
     Transform transform;
     NameRef material;
-    std::optional<uint32_t> objectId;
+    uint32_t objectId = 0;  // 0 inside prototypes: their instances carry the id
 };
 
 struct PrototypeDesc {
@@ -45,7 +45,7 @@ struct InstanceDesc {
     NameRef prototype;
     Transform transform;
     NameRef material;  // overrides the prototype's materials when given
-    std::optional<uint32_t> objectId;
+    uint32_t objectId = 0;
 };
 
 struct MaterialDesc {

@@ -1,4 +1,6 @@
 // The scene-file reader: XML → SceneDescription. No geometry is made here.
+#include <map>
+
 #include <fmt/format.h>
 
 #include "io/xml_reader.h"
@@ -16,10 +18,11 @@ class SceneFileReader {
     SceneDescription read() {
         XmlElement root(doc_, doc_.root());
         if (root.name() != "scene") root.fail(fmt::format("the root element is <{}>, expected <scene>", root.name()));
-        if (root.integer("version", 1, 1, 1) != 1) root.failAt("version", "unsupported version");
+        root.integer("version", 1, 1, 1);  // the only version so far
         root.checkAllRead();
         scene_.source = doc_.name();
         for (const XmlElement &e : root.children()) readTopLevel(e);
+        assignObjectIds();
         return std::move(scene_);
     }
 
@@ -31,8 +34,8 @@ class SceneFileReader {
         } else if (n == "sun") {
             readSun(e);
         } else if (n == "environment") {
-            scene_.environment.radiance = e.color("radiance", scene_.environment.radiance);
-            e.checkAllRead();
+            scene_.environment.radiance = e.color("radiance", scene_.environment.radiance, 0, 1e9f);
+            e.checkLeaf();
         } else if (n == "render") {
             readSettings(e);
         } else if (n == "material") {
@@ -42,7 +45,7 @@ class SceneFileReader {
         } else if (n == "instance") {
             readInstance(e);
         } else if (isGeometry(n)) {
-            scene_.geometry.push_back(readGeometry(e));
+            scene_.geometry.push_back(readGeometry(e, true));
         } else {
             e.fail(fmt::format("unknown element <{}>", n));
         }
@@ -69,7 +72,7 @@ class SceneFileReader {
         }
         if (length(c.lookAt - c.position) == 0) e.fail("camera position and look_at are the same point");
         if (length(cross(c.lookAt - c.position, c.up)) == 0) e.fail("camera up is parallel to the view direction");
-        e.checkAllRead();
+        e.checkLeaf();
     }
 
     void readSun(const XmlElement &e) {
@@ -77,17 +80,18 @@ class SceneFileReader {
         if (e.has("direction") && (e.has("azimuth") || e.has("elevation"))) {
             e.fail("give the sun either 'direction' or 'azimuth' and 'elevation', not both");
         }
+        if (e.has("azimuth") != e.has("elevation")) e.fail("give the sun both 'azimuth' and 'elevation'");
         if (e.has("direction")) {
             Vec3f d = e.vec3("direction", sun.direction);
             if (length(d) == 0) e.failAt("direction", "sun direction has zero length");
             sun.direction = normalize(d);
-        } else if (e.has("azimuth") || e.has("elevation")) {
-            sun.direction = Sun::directionFromAzimuthElevation(e.number("azimuth", 180, -360, 360),
-                                                               e.number("elevation", 45, -90, 90));
+        } else if (e.has("azimuth")) {
+            sun.direction = Sun::directionFromAzimuthElevation(e.number("azimuth", 0, -360, 360),
+                                                               e.number("elevation", 0, -90, 90));
         }
-        sun.irradiance = e.color("irradiance", sun.irradiance);
+        sun.irradiance = e.color("irradiance", sun.irradiance, 0, 1e9f);
         sun.angularDiameterDegrees = e.number("angular_diameter", sun.angularDiameterDegrees, 0, 30);
-        e.checkAllRead();
+        e.checkLeaf();
     }
 
     void readSettings(const XmlElement &e) {
@@ -96,23 +100,19 @@ class SceneFileReader {
         s.maxDepth = uint32_t(e.integer("max_depth", int(s.maxDepth), 1, 1024));
         s.seed = e.unsignedInteger("seed", s.seed);
         s.tileSize = uint32_t(e.integer("tile_size", int(s.tileSize), 1, 4096));
-        e.checkAllRead();
+        e.checkLeaf();
     }
 
     void readMaterial(const XmlElement &e) {
         MaterialDesc m{e.loc(), {}};
         m.material.name = e.string("name");
-        m.material.diffuse = e.color("diffuse", m.material.diffuse);
-        if (m.material.diffuse.x < 0 || m.material.diffuse.y < 0 || m.material.diffuse.z < 0 ||
-            maxComponent(m.material.diffuse) > 1) {
-            e.failAt("diffuse", "diffuse albedo must lie in [0, 1]");
-        }
+        m.material.diffuse = e.color("diffuse", m.material.diffuse, 0, 1);
         for (const MaterialDesc &other : scene_.materials) {
             if (other.material.name == m.material.name) {
                 e.failAt("name", fmt::format("material '{}' is already defined at {}", m.material.name, other.loc.toString()));
             }
         }
-        e.checkAllRead();
+        e.checkLeaf();
         scene_.materials.push_back(std::move(m));
     }
 
@@ -126,7 +126,7 @@ class SceneFileReader {
         e.checkAllRead();
         for (const XmlElement &child : e.children()) {
             if (!isGeometry(child.name())) child.fail(fmt::format("<{}> cannot stand inside <prototype>", child.name()));
-            p.parts.push_back(readGeometry(child));
+            p.parts.push_back(readGeometry(child, false));
         }
         if (p.parts.empty()) e.fail(fmt::format("prototype '{}' has no geometry", p.name));
         scene_.prototypes.push_back(std::move(p));
@@ -138,12 +138,12 @@ class SceneFileReader {
         inst.prototype = {e.string("prototype"), e.attributeLoc("prototype")};
         inst.transform = readTransform(e);
         inst.material = readNameRef(e, "material");
-        inst.objectId = readObjectId(e);
-        e.checkAllRead();
+        readObjectId(e, inst.loc);
+        e.checkLeaf();
         scene_.instances.push_back(std::move(inst));
     }
 
-    GeometryDesc readGeometry(const XmlElement &e) {
+    GeometryDesc readGeometry(const XmlElement &e, bool topLevel) {
         GeometryDesc g;
         g.loc = e.loc();
         if (e.name() == "mesh") {
@@ -155,8 +155,12 @@ class SceneFileReader {
         }
         g.transform = readTransform(e);
         g.material = readNameRef(e, "material");
-        g.objectId = readObjectId(e);
-        e.checkAllRead();
+        if (topLevel) {
+            readObjectId(e, g.loc);
+        } else if (e.has("id")) {
+            e.failAt("id", "parts of a prototype have no id of their own; give it to the <instance>");
+        }
+        e.checkLeaf();
         return g;
     }
 
@@ -201,8 +205,8 @@ class SceneFileReader {
             if (t.determinant() == 0) e.failAt("matrix", "matrix is singular");
             return t;
         }
-        Vec3f scale = e.has("scale") ? e.color("scale", Vec3f(1)) : Vec3f(1);
-        if (scale.x * scale.y * scale.z == 0) e.failAt("scale", "scale must not be zero");
+        Vec3f scale = e.color("scale", Vec3f(1));
+        if (scale.x == 0 || scale.y == 0 || scale.z == 0) e.failAt("scale", "scale must not be zero");
         Vec3f rotate = e.vec3("rotate", {0, 0, 0});
         Vec3f translate = e.vec3("translate", {0, 0, 0});
         return Transform::translate(translate) * Transform::rotate(2, rotate.z) * Transform::rotate(1, rotate.y) *
@@ -211,17 +215,44 @@ class SceneFileReader {
 
     static NameRef readNameRef(const XmlElement &e, const char *attribute) {
         if (!e.has(attribute)) return {};
-        return {e.string(attribute), e.attributeLoc(attribute)};
+        NameRef ref{e.string(attribute), e.attributeLoc(attribute)};
+        if (ref.name.empty()) e.failAt(attribute, fmt::format("attribute '{}' is empty", attribute));
+        return ref;
     }
 
-    static std::optional<uint32_t> readObjectId(const XmlElement &e) {
-        if (!e.has("id")) return std::nullopt;
-        return e.unsignedInteger("id", 0);
+    // Records an explicit id for the object at `loc`; assignObjectIds() fills in the rest.
+    void readObjectId(const XmlElement &e, const FileLoc &loc) {
+        if (!e.has("id")) return;
+        uint32_t id = e.unsignedInteger("id", 0);
+        if (id == 0) e.failAt("id", "object ids start at 1; 0 means no object");
+        auto [it, fresh] = explicitIds_.emplace(id, e.attributeLoc("id"));
+        if (!fresh) e.failAt("id", fmt::format("object id {} is already used at {}", id, it->second.toString()));
+        idsByPlace_[{loc.line, loc.column}] = id;
+    }
+
+    // Objects without an id get the smallest unused numbers from 1 up, in file order, so
+    // ids stay stable when objects are appended.
+    void assignObjectIds() {
+        std::map<std::pair<int, int>, uint32_t *> byPlace;
+        for (GeometryDesc &g : scene_.geometry) byPlace[{g.loc.line, g.loc.column}] = &g.objectId;
+        for (InstanceDesc &i : scene_.instances) byPlace[{i.loc.line, i.loc.column}] = &i.objectId;
+        uint32_t next = 1;
+        for (auto &[place, id] : byPlace) {
+            auto given = idsByPlace_.find(place);
+            if (given != idsByPlace_.end()) {
+                *id = given->second;
+                continue;
+            }
+            while (explicitIds_.count(next)) ++next;
+            *id = next++;
+        }
     }
 
     const XmlDocument &doc_;
     std::filesystem::path baseDirectory_;
     SceneDescription scene_;
+    std::map<uint32_t, FileLoc> explicitIds_;
+    std::map<std::pair<int, int>, uint32_t> idsByPlace_;
 };
 
 }  // namespace

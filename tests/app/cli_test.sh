@@ -28,6 +28,10 @@ check "version" out_has "veduta 0."
 
 run render --bogus-option
 check "bad option exits 2" rc_is 2
+run render --res 640by480
+check "bad resolution exits 2" rc_is 2
+run render -o picture.png
+check "non-exr output exits 2" rc_is 2
 
 # The default scene renders to a valid EXR and PNG.
 run render --res 40x24 --spp 2 -q -o "$work/d.exr" --png "$work/d.png"

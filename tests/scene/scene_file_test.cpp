@@ -74,7 +74,9 @@ TEST(SceneFile, UnknownAttributeIsAnError) {
 TEST(SceneFile, OutOfRangeValuesAreErrors) {
     EXPECT_EQ(errorOf("<scene><render spp=\"0\"/></scene>"), "s.xml:1:21: attribute 'spp' is 0, outside [1, 16777216]");
     EXPECT_EQ(errorOf("<scene><material name=\"m\" diffuse=\"1.5\"/></scene>"),
-              "s.xml:1:36: diffuse albedo must lie in [0, 1]");
+              "s.xml:1:36: attribute 'diffuse' has 1.5, outside [0, 1]");
+    EXPECT_EQ(errorOf("<scene><sun irradiance=\"1 -1 1\"/></scene>"),
+              "s.xml:1:25: attribute 'irradiance' has -1, outside [0, 1000000000]");
 }
 
 TEST(SceneFile, MalformedXmlNamesThePlace) {
@@ -111,6 +113,43 @@ TEST(SceneFile, LoadsObjAndPlyMeshes) {
     EXPECT_EQ(scene.meshes[0].mesh.triangleCount(), 4u);
     EXPECT_EQ(scene.meshes[1].mesh.triangleCount(), 2u);
     EXPECT_FLOAT_EQ(scene.meshes[1].mesh.positions[0].x, 5);
+}
+
+TEST(SceneFile, LeafElementsHoldNoChildren) {
+    EXPECT_EQ(errorOf("<scene>\n<box>\n  <sphere/>\n</box>\n</scene>"), "s.xml:3:3: <sphere> cannot stand inside <box>");
+}
+
+TEST(SceneFile, RepeatedAttributeIsAnError) {
+    EXPECT_EQ(errorOf("<scene><render spp=\"4\" spp=\"8\"/></scene>"), "s.xml:1:24: attribute 'spp' is given twice");
+}
+
+TEST(SceneFile, SunNeedsBothAzimuthAndElevation) {
+    EXPECT_EQ(errorOf("<scene>\n<sun elevation=\"30\"/></scene>"), "s.xml:2:1: give the sun both 'azimuth' and 'elevation'");
+}
+
+TEST(SceneFile, ObjectIdsFollowFileOrderAroundExplicitOnes) {
+    SceneDescription d = parse(R"(<scene>
+  <prototype name="p"><box/></prototype>
+  <instance prototype="p"/>
+  <box id="2"/>
+  <box/>
+  <instance prototype="p"/>
+</scene>)");
+    EXPECT_EQ(d.instances[0].objectId, 1u);
+    EXPECT_EQ(d.geometry[0].objectId, 2u);
+    EXPECT_EQ(d.geometry[1].objectId, 3u);
+    EXPECT_EQ(d.instances[1].objectId, 4u);
+}
+
+TEST(SceneFile, ObjectIdsAreUniqueAndBelongToWholeObjects) {
+    EXPECT_EQ(errorOf("<scene><box id=\"5\"/>\n<box id=\"5\"/></scene>"), "s.xml:2:10: object id 5 is already used at s.xml:1:17");
+    EXPECT_EQ(errorOf("<scene><prototype name=\"p\">\n<box id=\"3\"/></prototype></scene>"),
+              "s.xml:2:10: parts of a prototype have no id of their own; give it to the <instance>");
+}
+
+TEST(SceneFile, AMaterialNamedDefaultReplacesTheBuiltInOne) {
+    RenderScene scene = test::sceneFromXml(R"(<scene><material name="default" diffuse="0.1"/><box/></scene>)");
+    EXPECT_EQ(scene.materials[scene.meshes[0].mesh.triangleMaterials[0]].diffuse, Vec3f(0.1f));
 }
 
 TEST(SceneFile, RootMustBeScene) {
