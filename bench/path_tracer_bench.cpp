@@ -45,9 +45,10 @@ struct BenchScene {
         std::mt19937 rng(1);
         std::uniform_real_distribution<float> u(0, 1);
         SurfaceLookup surfaces(scene);
+        CameraRays cameraRays(scene.camera);
         std::vector<Ray> rays;
         while (rays.size() < 1u << 20) {
-            Ray primary = scene.camera.generateRay(u(rng) * float(scene.camera.width), u(rng) * float(scene.camera.height));
+            Ray primary = cameraRays.generate(u(rng) * float(scene.camera.width), u(rng) * float(scene.camera.height));
             std::optional<Hit> hit = bvh.intersect(primary, false);
             if (!hit) continue;
             SurfaceInteraction si = surfaces.at(*hit, primary.direction);

@@ -36,6 +36,7 @@ bool isFinite(const Vec3f &v) { return std::isfinite(v.x) && std::isfinite(v.y) 
 Film render(const RenderScene &scene, const Bvh &bvh, const RenderOptions &options, RenderStats *stats) {
     auto start = std::chrono::steady_clock::now();
     const Camera &camera = scene.camera;
+    const CameraRays cameraRays(camera);
     const RenderSettings &settings = scene.settings;
     Film film(camera.width, camera.height);
     PathTracer tracer(scene, bvh);
@@ -57,7 +58,7 @@ Film render(const RenderScene &scene, const Bvh &bvh, const RenderOptions &optio
                     for (uint32_t s = 0; s < settings.samplesPerPixel; ++s) {
                         PixelSampler sampler(settings.seed, uint32_t(x), uint32_t(y), s);
                         Vec2f jitter = sampler.next2D();
-                        Ray ray = camera.generateRay(float(x) + jitter.x, float(y) + jitter.y);
+                        Ray ray = cameraRays.generate(float(x) + jitter.x, float(y) + jitter.y);
                         Vec3f L = tracer.radiance(ray, sampler, local.rays);
                         if (!isFinite(L)) {
                             ++local.nonFiniteSamples;

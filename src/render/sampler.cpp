@@ -6,29 +6,39 @@ namespace veduta {
 
 namespace {
 
-// Generator matrices of the first two Sobol dimensions: the identity (van der Corput) and
-// the Pascal matrix mod 2 (primitive polynomial x + 1).
-constexpr std::array<std::array<uint32_t, 32>, 2> makeSobolDirections() {
-    std::array<std::array<uint32_t, 32>, 2> d{};
+// Dimension 1's generator matrix (dimension 0 is the identity, see sobolSample) as XOR tables
+// for each byte of the index: four lookups instead of a loop over 32 bits.
+using ByteTables = std::array<std::array<uint32_t, 256>, 4>;
+
+constexpr ByteTables makeDimensionOneTables() {
+    // Columns of the Pascal matrix mod 2, for the primitive polynomial x + 1.
+    std::array<uint32_t, 32> directions{};
     uint32_t v = 1u << 31;
     for (int bit = 0; bit < 32; ++bit) {
-        d[0][bit] = 1u << (31 - bit);
-        d[1][bit] = v;
+        directions[size_t(bit)] = v;
         v ^= v >> 1;
     }
-    return d;
+    ByteTables tables{};
+    for (size_t byte = 0; byte < 4; ++byte) {
+        for (uint32_t value = 0; value < 256; ++value) {
+            uint32_t x = 0;
+            for (uint32_t bit = 0; bit < 8; ++bit) {
+                if (value & (1u << bit)) x ^= directions[byte * 8 + bit];
+            }
+            tables[byte][value] = x;
+        }
+    }
+    return tables;
 }
 
-constexpr auto kSobolDirections = makeSobolDirections();
+constexpr ByteTables kDimensionOne = makeDimensionOneTables();
 
 }  // namespace
 
 uint32_t sobolSample(uint32_t index, int dimension) {
-    uint32_t x = 0;
-    for (int bit = 0; index != 0; index >>= 1, ++bit) {
-        if (index & 1u) x ^= kSobolDirections[dimension][bit];
-    }
-    return x;
+    if (dimension == 0) return reverseBits(index);  // van der Corput
+    return kDimensionOne[0][index & 0xffu] ^ kDimensionOne[1][(index >> 8) & 0xffu] ^
+           kDimensionOne[2][(index >> 16) & 0xffu] ^ kDimensionOne[3][index >> 24];
 }
 
 }  // namespace veduta

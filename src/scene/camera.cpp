@@ -4,15 +4,15 @@
 
 namespace veduta {
 
-Ray Camera::generateRay(float x, float y) const {
-    Vec3f forward = normalize(lookAt - position);
-    Vec3f right = normalize(cross(forward, up));
-    Vec3f trueUp = cross(right, forward);
-    float tanHalf = std::tan(radians(verticalFovDegrees) * 0.5f);
-    float aspect = float(width) / float(height);
-    float sx = (2.0f * x / float(width) - 1.0f) * tanHalf * aspect;
-    float sy = (1.0f - 2.0f * y / float(height)) * tanHalf;
-    return {position, normalize(forward + right * sx + trueUp * sy)};
+CameraRays::CameraRays(const Camera &camera) : origin_(camera.position) {
+    Vec3f forward = normalize(camera.lookAt - camera.position);
+    Vec3f right = normalize(cross(forward, camera.up));
+    Vec3f up = cross(right, forward);
+    float halfHeight = std::tan(radians(camera.verticalFovDegrees) * 0.5f);
+    float halfWidth = halfHeight * float(camera.width) / float(camera.height);
+    topLeft_ = forward - right * halfWidth + up * halfHeight;
+    pixelRight_ = right * (2 * halfWidth / float(camera.width));
+    pixelDown_ = up * (-2 * halfHeight / float(camera.height));
 }
 
 }  // namespace veduta

@@ -18,9 +18,21 @@ struct Camera {
     int width = 640;
     int height = 360;
 
+};
+
+// Rays of a camera, with its frame worked out once rather than per sample.
+class CameraRays {
+  public:
+    explicit CameraRays(const Camera &camera);
+
     // Ray through raster position (x, y): (0, 0) is the top-left corner of the image,
     // (width, height) the bottom-right one.
-    Ray generateRay(float x, float y) const;
+    Ray generate(float x, float y) const {
+        return {origin_, normalize(topLeft_ + pixelRight_ * x + pixelDown_ * y)};
+    }
+
+  private:
+    Vec3f origin_, topLeft_, pixelRight_, pixelDown_;
 };
 
 }  // namespace veduta

@@ -9,6 +9,19 @@
 namespace veduta {
 namespace {
 
+// The unscrambled first two dimensions are the Sobol sequence as published.
+TEST(Sampler, SobolPointsMatchTheSequence) {
+    const float first[8][2] = {{0, 0},         {0.5f, 0.5f},   {0.25f, 0.75f},  {0.75f, 0.25f},
+                               {0.125f, 0.375f}, {0.625f, 0.875f}, {0.375f, 0.625f}, {0.875f, 0.125f}};
+    for (uint32_t i = 0; i < 8; ++i) {
+        EXPECT_EQ(float(sobolSample(i, 0)) * 0x1p-32f, first[i][0]) << i;
+        EXPECT_EQ(float(sobolSample(i, 1)) * 0x1p-32f, first[i][1]) << i;
+    }
+    // High index bits matter too: bit 31 alone selects the last direction number.
+    EXPECT_EQ(sobolSample(1u << 31, 0), 1u);
+    EXPECT_EQ(sobolSample(1u << 31, 1), 0xffffffffu);  // row 31 of Pascal's triangle is all odd
+}
+
 TEST(Sampler, IsAPureFunctionOfSeedPixelSampleAndDimension) {
     PixelSampler a(3, 10, 20, 5), b(3, 10, 20, 5);
     for (int d = 0; d < 8; ++d) {
