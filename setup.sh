@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# veduta set-up on Debian 12: installs the Debian packages that are missing, builds, and then
+#   ./setup.sh         renders the built-in default scene to renders/default.exr and .png
+#   ./setup.sh test    builds with the tests and runs the whole suite through ctest
+# Run it as root or as a user who may use sudo (only apt-get needs it).
+set -euo pipefail
+cd "$(dirname "$0")"
+
+mode=${1:-render}
+case "$mode" in
+    render | test) ;;
+    *) echo "usage: $0 [render|test]" >&2; exit 2 ;;
+esac
+
+packages=(
+    cmake g++ make pkg-config ccache
+    libembree-dev libopenimageio-dev openimageio-tools libopenexr-dev libopencolorio-dev
+    libgeographiclib-dev libcgal-dev libgdal-dev libtbb-dev libpugixml-dev libcli11-dev
+    libgtest-dev libbenchmark-dev libspdlog-dev libfmt-dev libassimp-dev libboost-dev
+)
+missing=()
+for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+    echo "setup: installing ${missing[*]}"
+    as_root=()
+    [ "$(id -u)" -eq 0 ] || as_root=(sudo)
+    "${as_root[@]}" apt-get update -qq
+    "${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${missing[@]}"
+fi
+
+jobs=$(nproc)
+if [ "$mode" = render ]; then
+    cmake --preset release
+    cmake --build --preset release -j "$jobs"
+    build/release/src/veduta render -o renders/default.exr --png renders/default.png
+    echo "setup: wrote renders/default.exr and renders/default.png"
+else
+    cmake --preset test
+    cmake --build --preset test -j "$jobs"
+    ctest --preset test -j "$jobs"
+fi
