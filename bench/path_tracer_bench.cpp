@@ -16,6 +16,7 @@
 #include <xmmintrin.h>
 
 #include "app/scene_loading.h"
+#include "render/embree_util.h"
 #include "render/renderer.h"
 #include "render/sampling.h"
 #include "render/surface_interaction.h"
@@ -88,16 +89,7 @@ void BM_EmbreeIncoherentIntersect1(benchmark::State &state) {
             RTCIntersectContext context;
             rtcInitIntersectContext(&context);
             context.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
-            RTCRayHit rh{};
-            rh.ray.org_x = ray.origin.x;
-            rh.ray.org_y = ray.origin.y;
-            rh.ray.org_z = ray.origin.z;
-            rh.ray.dir_x = ray.direction.x;
-            rh.ray.dir_y = ray.direction.y;
-            rh.ray.dir_z = ray.direction.z;
-            rh.ray.tfar = std::numeric_limits<float>::infinity();
-            rh.ray.mask = ~0u;
-            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+            RTCRayHit rh = toRayHit(ray, std::numeric_limits<float>::infinity());
             rtcIntersect1(scene, &context, &rh);
             hits += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
         }

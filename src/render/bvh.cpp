@@ -1,5 +1,7 @@
 #include "render/bvh.h"
 
+#include "render/embree_util.h"
+
 #include <chrono>
 #include <limits>
 #include <stdexcept>
@@ -47,22 +49,6 @@ RTCGeometry makeTriangles(RTCDevice device, const Mesh &mesh) {
     std::copy(mesh.indices.begin(), mesh.indices.end(), indices);
     rtcCommitGeometry(geometry);
     return geometry;
-}
-
-RTCRayHit toRayHit(const Ray &ray, float tMax) {
-    RTCRayHit rh{};
-    rh.ray.org_x = ray.origin.x;
-    rh.ray.org_y = ray.origin.y;
-    rh.ray.org_z = ray.origin.z;
-    rh.ray.dir_x = ray.direction.x;
-    rh.ray.dir_y = ray.direction.y;
-    rh.ray.dir_z = ray.direction.z;
-    rh.ray.tnear = 0;
-    rh.ray.tfar = tMax;
-    rh.ray.mask = ~0u;
-    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    return rh;
 }
 
 }  // namespace
