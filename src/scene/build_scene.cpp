@@ -1,6 +1,7 @@
 #include "scene/build_scene.h"
 
 #include <map>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -24,8 +25,12 @@ class SceneAssembler {
         for (const MaterialDesc &m : d_.materials) builder_.addMaterial(m.material);
         defaultMaterial_ = builder_.findMaterial("default");
 
+        // Geometry repeated at the top level (the same mesh file or shape with the same
+        // material) is shared like a prototype; the builder bakes what appears once.
         for (const GeometryDesc &g : d_.geometry) {
-            builder_.addMesh(part(g), g.transform, g.objectId);
+            auto [it, fresh] = repeatedGeometry_.try_emplace(sharingKey(g), 0);
+            if (fresh) it->second = builder_.addPrototype(part(g));
+            builder_.addInstance({g.transform, it->second, kNoMaterial, g.objectId});
         }
         for (const PrototypeDesc &p : d_.prototypes) {
             Mesh merged;
@@ -51,6 +56,15 @@ class SceneAssembler {
         return mesh;
     }
 
+    // Equal keys mean equal meshes: the same file or shape parameters, and the same material.
+    std::string sharingKey(const GeometryDesc &g) const {
+        const std::string &material = g.material.name;
+        if (!g.shape) return fmt::format("mesh {} {}", g.meshFile.string(), material);
+        const ShapeSpec &s = *g.shape;
+        return fmt::format("shape {} {} {} {} {} {} {} {} {} {}", int(s.kind), s.size.x, s.size.y, s.size.z, s.radius,
+                           s.height, s.segments, s.rings, s.smooth, material);
+    }
+
     const Mesh &meshFile(const GeometryDesc &g) {
         auto it = meshFiles_.find(g.meshFile);
         if (it != meshFiles_.end()) return it->second;
@@ -71,6 +85,7 @@ class SceneAssembler {
     RenderSceneBuilder builder_;
     std::map<std::string, PrototypeId> prototypeIds_;
     std::map<std::filesystem::path, Mesh> meshFiles_;
+    std::map<std::string, PrototypeId> repeatedGeometry_;
     MaterialId defaultMaterial_ = 0;
 };
 

@@ -89,6 +89,11 @@ for key in meshes: prototypes: instances: effective_triangles: bvh_build_seconds
     check "info $key" out_has "$key"
 done
 
+# The 10k-instance benchmark scene: 10,000 instances of a 10,000-triangle prototype.
+run info "$source/scenes/bench/instances-10k.xml"
+check "10k instances" out_has "instances: 10000"
+check "10k effective triangles" out_has "effective_triangles: 100000002"
+
 # A scene with a mesh file renders.
 cat >"$work/meshes.xml" <<XML
 <scene>

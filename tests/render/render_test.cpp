@@ -56,7 +56,8 @@ TEST(Render, SeedChangesTheNoiseOnly) {
     EXPECT_NE(a.pixels(), b.pixels());
 }
 
-// The same two objects, once as two instances of one prototype and once as plain shapes.
+// The same two objects, once as two instances of one prototype and once as plain shapes
+// that differ in their parameters, so that each is baked.
 struct InstancedAndBaked {
     RenderScene instanced, baked;
 };
@@ -77,8 +78,8 @@ InstancedAndBaked instancedAndBaked(int maxDepth) {
             test::sceneFromXml(head + R"(
   <box size="1 1 2" material="red" translate="-2 0 0" rotate="0 0 30"/>
   <sphere radius="0.6" matrix="0.8660254 -0.5 0 -2  0.5 0.8660254 0 0  0 0 1 2.5"/>
-  <box size="1 1 2" material="red" translate="2 1 0" scale="1.5"/>
-  <sphere radius="0.6" translate="2 1 3.75" scale="1.5"/>
+  <box size="1.5 1.5 3" material="red" translate="2 1 0"/>
+  <sphere radius="0.9" translate="2 1 3.75"/>
 </scene>)")};
 }
 

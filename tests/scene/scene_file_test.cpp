@@ -152,6 +152,25 @@ TEST(SceneFile, AMaterialNamedDefaultReplacesTheBuiltInOne) {
     EXPECT_EQ(scene.materials[scene.meshes[0].mesh.triangleMaterials[0]].diffuse, Vec3f(0.1f));
 }
 
+TEST(SceneFile, RepeatedTopLevelGeometryIsSharedAndSingleGeometryBaked) {
+    RenderScene scene = test::sceneFromXml(R"(<scene>
+  <material name="m"/>
+  <mesh file="tetra.obj" translate="0 0 0"/>
+  <mesh file="tetra.obj" translate="2 0 0"/>
+  <mesh file="tetra.obj" translate="4 0 0" material="m"/>
+  <box size="1 2 3"/>
+  <box size="1 2 3" translate="5 0 0" id="40"/>
+  <box size="1 2 4"/>
+</scene>)");
+    // Two plain tetrahedra and two equal boxes are shared; the red tetrahedron and the
+    // taller box appear once and are baked.
+    EXPECT_EQ(scene.prototypes.size(), 2u);
+    EXPECT_EQ(scene.instances.size(), 4u);
+    EXPECT_EQ(scene.meshes.size(), 2u);
+    EXPECT_EQ(scene.instances[3].objectId, 40u);
+    EXPECT_EQ(scene.effectiveTriangleCount(), 3u * 4u + 3u * 12u);
+}
+
 TEST(SceneFile, RootMustBeScene) {
     EXPECT_EQ(errorOf("<world/>"), "s.xml:1:1: the root element is <world>, expected <scene>");
 }
