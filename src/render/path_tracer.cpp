@@ -7,6 +7,12 @@
 
 namespace veduta {
 
+PathTracer::PathTracer(const RenderScene &scene, const Bvh &bvh)
+    : scene_(scene), bvh_(bvh), surfaces_(scene), sunIsDisc_(scene.sun.angularDiameterDegrees > 0),
+      sunCosHalfAngle_(scene.sun.cosHalfAngle()), sunFrame_(Frame::fromNormal(scene.sun.direction)),
+      sunDiscRadiance_(sunIsDisc_ ? scene.sun.discRadiance() : Vec3f(0.0f)),
+      sunIncidentPerSample_(sunIsDisc_ ? sunDiscRadiance_ / uniformConePdf(sunCosHalfAngle_) : scene.sun.irradiance) {}
+
 Vec3f PathTracer::radiance(const Ray &cameraRay, PixelSampler &sampler, RayCounts &counts) const {
     const RenderSettings &settings = scene_.settings;
     Vec3f L(0.0f), beta(1.0f);
@@ -43,29 +49,21 @@ Vec3f PathTracer::radiance(const Ray &cameraRay, PixelSampler &sampler, RayCount
 }
 
 Vec3f PathTracer::sunLight(const SurfaceInteraction &si, const Vec3f &albedo, Vec2f u, RayCounts &counts) const {
-    const Sun &sun = scene_.sun;
-    bool disc = sun.angularDiameterDegrees > 0;
-    float cosMax = sun.cosHalfAngle();
-    Vec3f wi = disc ? Frame::fromNormal(sun.direction).toWorld(sampleUniformCone(u, cosMax)) : sun.direction;
+    Vec3f wi = sunIsDisc_ ? sunFrame_.toWorld(sampleUniformCone(u, sunCosHalfAngle_)) : scene_.sun.direction;
     float cosTheta = dot(si.shadingNormal, wi);
     if (cosTheta <= 0 || dot(si.geometricNormal, wi) <= 0) return Vec3f(0.0f);
 
     ++counts.shadow;
     Ray shadow{offsetRayOrigin(si.position, si.geometricNormal), wi};
     if (bvh_.occluded(shadow, std::numeric_limits<float>::infinity())) return Vec3f(0.0f);
-    // A disc: radiance over the cone's pdf; a direction: the irradiance itself.
-    Vec3f incident = disc ? sun.discRadiance() / uniformConePdf(cosMax) : sun.irradiance;
-    return albedo * kInvPi * cosTheta * incident;
+    return albedo * kInvPi * cosTheta * sunIncidentPerSample_;
 }
 
 // Light from outside the scene. The sun disc counts only for camera rays: for every later
 // vertex next-event estimation has already counted it.
 Vec3f PathTracer::escapedRadiance(const Ray &ray, bool cameraRay) const {
     Vec3f L = scene_.environment.radianceTowards(ray.direction);
-    const Sun &sun = scene_.sun;
-    if (cameraRay && sun.enabled() && sun.angularDiameterDegrees > 0 && dot(ray.direction, sun.direction) >= sun.cosHalfAngle()) {
-        L += sun.discRadiance();
-    }
+    if (cameraRay && sunIsDisc_ && dot(ray.direction, scene_.sun.direction) >= sunCosHalfAngle_) L += sunDiscRadiance_;
     return L;
 }
 

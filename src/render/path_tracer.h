@@ -26,7 +26,7 @@ struct RayCounts {
 
 class PathTracer {
   public:
-    PathTracer(const RenderScene &scene, const Bvh &bvh) : scene_(scene), bvh_(bvh), surfaces_(scene) {}
+    PathTracer(const RenderScene &scene, const Bvh &bvh);
 
     // Radiance arriving along the camera ray. Sample dimensions are consumed in a fixed order
     // per bounce (light, BSDF, roulette), so the result is a pure function of the sampler.
@@ -39,6 +39,12 @@ class PathTracer {
     const RenderScene &scene_;
     const Bvh &bvh_;
     SurfaceLookup surfaces_;
+    // The sun as next-event estimation samples it, worked out once.
+    bool sunIsDisc_;
+    float sunCosHalfAngle_;
+    Frame sunFrame_;
+    Vec3f sunDiscRadiance_;
+    Vec3f sunIncidentPerSample_;  // radiance over the cone's pdf, or the irradiance of a point sun
 };
 
 }  // namespace veduta
