@@ -53,6 +53,10 @@ std::string checkExrName(const std::string &text) {
     return std::filesystem::path(text).extension() == ".exr" ? std::string() : "the output must be an .exr file";
 }
 
+std::string checkPngName(const std::string &text) {
+    return std::filesystem::path(text).extension() == ".png" ? std::string() : "the display image must be a .png file";
+}
+
 std::string defaultOutput(const std::string &scene) {
     std::string stem = scene.empty() ? "default" : std::filesystem::path(scene).stem().string();
     return "renders/" + stem + ".exr";
@@ -63,6 +67,9 @@ void runRender(const RenderArgs &args) {
     if (args.threads > 0) {
         threadLimit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, args.threads);
     }
+    std::string exr = args.exr.empty() ? defaultOutput(args.scene) : args.exr;
+    prepareOutputFile(exr);
+    if (!args.png.empty()) prepareOutputFile(args.png);
     SceneDescription description = loadSceneDescription(args.scene);
     applyOverrides(args, description);
     RenderScene scene = buildRenderScene(description);
@@ -70,7 +77,6 @@ void runRender(const RenderArgs &args) {
     RenderStats stats;
     Film film = render(scene, bvh, RenderOptions{!args.quiet}, &stats);
 
-    std::string exr = args.exr.empty() ? defaultOutput(args.scene) : args.exr;
     writeExr(film, exr);
     if (!args.png.empty()) writePng(film, args.png);
     if (stats.nonFiniteSamples) {
@@ -93,7 +99,7 @@ void addRenderCommand(CLI::App &app, int &exitCode) {
         ->check(CLI::ExistingFile);
     cmd->add_option("-o,--output", args->exr, "EXR file to write [renders/<scene name>.exr]")
         ->check(CLI::Validator(checkExrName, "FILE.exr"));
-    cmd->add_option("--png", args->png, "Also write an 8-bit sRGB PNG here");
+    cmd->add_option("--png", args->png, "Also write an 8-bit sRGB PNG here")->check(CLI::Validator(checkPngName, "FILE.png"));
     cmd->add_option("--spp", args->spp, "Samples per pixel (overrides the scene)")->check(CLI::Range(1u, 1u << 24));
     cmd->add_option("--seed", args->seed, "Seed of every random choice (overrides the scene)");
     cmd->add_option("--max-depth", args->maxDepth, "Longest path, in bounces (overrides the scene)")

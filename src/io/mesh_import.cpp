@@ -3,6 +3,7 @@
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <fmt/format.h>
 
 #include "core/error.h"
 
@@ -14,7 +15,7 @@ Transform toTransform(const aiMatrix4x4 &m) {
     return {{m.a1, m.a2, m.a3, m.a4, m.b1, m.b2, m.b3, m.b4, m.c1, m.c2, m.c3, m.c4}};
 }
 
-Mesh convert(const aiMesh &in) {
+Mesh convert(const aiMesh &in, const std::filesystem::path &file) {
     Mesh m;
     m.positions.reserve(in.mNumVertices);
     for (unsigned i = 0; i < in.mNumVertices; ++i) m.positions.push_back({in.mVertices[i].x, in.mVertices[i].y, in.mVertices[i].z});
@@ -27,16 +28,23 @@ Mesh convert(const aiMesh &in) {
     for (unsigned f = 0; f < in.mNumFaces; ++f) {
         const aiFace &face = in.mFaces[f];
         if (face.mNumIndices != 3) continue;  // points and lines left after triangulation
+        for (unsigned k = 0; k < 3; ++k) {
+            if (face.mIndices[k] >= in.mNumVertices) {
+                throw InputError({file.string()}, fmt::format("face {} refers to vertex {}, beyond the {} vertices", f,
+                                                              face.mIndices[k], in.mNumVertices));
+            }
+        }
         m.indices.insert(m.indices.end(), {face.mIndices[0], face.mIndices[1], face.mIndices[2]});
     }
     m.setMaterial(0);
     return m;
 }
 
-void collect(const aiScene &scene, const aiNode &node, const Transform &parent, Mesh &out) {
+void collect(const aiScene &scene, const aiNode &node, const Transform &parent, const std::filesystem::path &file,
+             Mesh &out) {
     Transform toWorld = parent * toTransform(node.mTransformation);
-    for (unsigned i = 0; i < node.mNumMeshes; ++i) out.append(convert(*scene.mMeshes[node.mMeshes[i]]), toWorld);
-    for (unsigned i = 0; i < node.mNumChildren; ++i) collect(scene, *node.mChildren[i], toWorld, out);
+    for (unsigned i = 0; i < node.mNumMeshes; ++i) out.append(convert(*scene.mMeshes[node.mMeshes[i]], file), toWorld);
+    for (unsigned i = 0; i < node.mNumChildren; ++i) collect(scene, *node.mChildren[i], toWorld, file, out);
 }
 
 }  // namespace
@@ -51,7 +59,7 @@ Mesh importMesh(const std::filesystem::path &file) {
         throw InputError({file.string()}, std::string("cannot read mesh: ") + importer.GetErrorString());
     }
     Mesh mesh;
-    collect(*scene, *scene->mRootNode, Transform{}, mesh);
+    collect(*scene, *scene->mRootNode, Transform{}, file, mesh);
     if (mesh.triangleCount() == 0) throw InputError({file.string()}, "mesh file holds no triangles");
     return mesh;
 }

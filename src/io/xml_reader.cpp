@@ -98,9 +98,19 @@ float XmlElement::number(const char *attribute, float fallback, float lo, float 
     return value;
 }
 
+namespace {
+
+std::string trimmed(const std::string &text) {
+    size_t begin = text.find_first_not_of(" \t\r\n");
+    if (begin == std::string::npos) return {};
+    return text.substr(begin, text.find_last_not_of(" \t\r\n") - begin + 1);
+}
+
+}  // namespace
+
 int XmlElement::integer(const char *attribute, int fallback, int lo, int hi) const {
     if (!has(attribute)) return fallback;
-    std::string text = string(attribute);
+    std::string text = trimmed(string(attribute));
     long long value = 0;
     auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (error != std::errc() || end != text.data() + text.size()) {
@@ -114,7 +124,7 @@ int XmlElement::integer(const char *attribute, int fallback, int lo, int hi) con
 
 bool XmlElement::boolean(const char *attribute, bool fallback) const {
     if (!has(attribute)) return fallback;
-    std::string text = string(attribute);
+    std::string text = trimmed(string(attribute));
     if (text == "true" || text == "1") return true;
     if (text == "false" || text == "0") return false;
     failAt(attribute, fmt::format("'{}' is not true or false (attribute '{}')", text, attribute));
@@ -122,7 +132,7 @@ bool XmlElement::boolean(const char *attribute, bool fallback) const {
 
 uint32_t XmlElement::unsignedInteger(const char *attribute, uint32_t fallback) const {
     if (!has(attribute)) return fallback;
-    std::string text = string(attribute);
+    std::string text = trimmed(string(attribute));
     uint32_t value = 0;
     auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (error != std::errc() || end != text.data() + text.size()) {

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <limits>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -29,23 +30,36 @@ bool countMemory(void *user, ssize_t bytes, bool /*post*/) {
     return true;
 }
 
-// Embree calls this from its own threads, through C frames: record, never throw.
+// The first error Embree reports. Embree calls in from its own threads, through C frames:
+// record under a lock, never throw.
+struct ErrorRecord {
+    std::mutex mutex;
+    std::string message;
+};
+
 void recordError(void *user, RTCError code, const char *message) {
-    auto *error = static_cast<std::string *>(user);
-    if (error->empty()) *error = fmt::format("Embree error {}: {}", int(code), message ? message : "");
+    auto *record = static_cast<ErrorRecord *>(user);
+    std::lock_guard lock(record->mutex);
+    if (record->message.empty()) record->message = fmt::format("Embree error {}: {}", int(code), message ? message : "");
+}
+
+void *newBuffer(RTCGeometry geometry, RTCBufferType type, RTCFormat format, size_t stride, size_t count) {
+    void *buffer = rtcSetNewGeometryBuffer(geometry, type, 0, format, stride, count);
+    if (!buffer) throw std::runtime_error("Embree could not allocate a geometry buffer (out of memory?)");
+    return buffer;
 }
 
 RTCGeometry makeTriangles(RTCDevice device, const Mesh &mesh) {
     RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto *vertices = static_cast<float *>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                                  RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.vertexCount()));
+    auto *vertices = static_cast<float *>(
+        newBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.vertexCount()));
     for (size_t i = 0; i < mesh.vertexCount(); ++i) {
         vertices[3 * i] = mesh.positions[i].x;
         vertices[3 * i + 1] = mesh.positions[i].y;
         vertices[3 * i + 2] = mesh.positions[i].z;
     }
-    auto *indices = static_cast<uint32_t *>(rtcSetNewGeometryBuffer(
-        geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), mesh.triangleCount()));
+    auto *indices = static_cast<uint32_t *>(
+        newBuffer(geometry, RTC_BUFFER_TYPE_INDEX, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), mesh.triangleCount()));
     std::copy(mesh.indices.begin(), mesh.indices.end(), indices);
     rtcCommitGeometry(geometry);
     return geometry;
@@ -55,7 +69,7 @@ RTCGeometry makeTriangles(RTCDevice device, const Mesh &mesh) {
 
 struct Bvh::Impl {
     MemoryCounter memory;
-    std::string error;
+    ErrorRecord error;
     RTCDevice device = nullptr;
     std::vector<RTCScene> prototypes;
     RTCScene top = nullptr;
@@ -102,7 +116,7 @@ Bvh::Bvh(const RenderScene &scene) : impl_(std::make_unique<Impl>()) {
         rtcReleaseGeometry(g);
     }
     rtcCommitScene(impl_->top);
-    if (!impl_->error.empty()) throw std::runtime_error(impl_->error);
+    if (!impl_->error.message.empty()) throw std::runtime_error(impl_->error.message);
 
     stats_.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     stats_.bytes = impl_->memory.current.load();

@@ -29,10 +29,27 @@ void writeImage(const std::filesystem::path &file, const OIIO::ImageSpec &spec, 
         std::filesystem::remove(tmp, ignored);
         throw std::runtime_error(fmt::format("{}: {}", file.string(), message));
     }
-    std::filesystem::rename(tmp, file);
+    std::error_code renameError;
+    std::filesystem::rename(tmp, file, renameError);
+    if (renameError) {
+        std::error_code ignored;
+        std::filesystem::remove(tmp, ignored);
+        throw std::runtime_error(fmt::format("{}: cannot replace it: {}", file.string(), renameError.message()));
+    }
 }
 
 }  // namespace
+
+void prepareOutputFile(const std::filesystem::path &file) {
+    std::filesystem::path folder = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
+    std::error_code error;
+    std::filesystem::create_directories(folder, error);
+    if (error) throw std::runtime_error(fmt::format("{}: cannot create its folder: {}", file.string(), error.message()));
+    if (std::filesystem::is_directory(file)) throw std::runtime_error(fmt::format("{}: is a folder", file.string()));
+    if (access(folder.c_str(), W_OK) != 0) {
+        throw std::runtime_error(fmt::format("{}: its folder is not writable", file.string()));
+    }
+}
 
 float linearToSrgb(float v) {
     v = std::clamp(v, 0.0f, 1.0f);

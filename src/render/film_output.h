@@ -16,4 +16,9 @@ void writePng(const Film &film, const std::filesystem::path &file);
 
 float linearToSrgb(float linear);
 
+// Creates the folders of `file` and checks that a file can be written there, so that a long
+// render does not end in an error it could have reported at the start. Throws
+// std::runtime_error naming the file.
+void prepareOutputFile(const std::filesystem::path &file);
+
 }  // namespace veduta

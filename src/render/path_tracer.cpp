@@ -9,9 +9,9 @@ namespace veduta {
 
 PathTracer::PathTracer(const RenderScene &scene, const Bvh &bvh)
     : scene_(scene), bvh_(bvh), surfaces_(scene), sunIsDisc_(scene.sun.angularDiameterDegrees > 0),
-      sunCosHalfAngle_(scene.sun.cosHalfAngle()), sunFrame_(Frame::fromNormal(scene.sun.direction)),
+      sunOneMinusCosRadius_(scene.sun.oneMinusCosRadius()), sunFrame_(Frame::fromNormal(scene.sun.direction)),
       sunDiscRadiance_(sunIsDisc_ ? scene.sun.discRadiance() : Vec3f(0.0f)),
-      sunIncidentPerSample_(sunIsDisc_ ? sunDiscRadiance_ / uniformConePdf(sunCosHalfAngle_) : scene.sun.irradiance) {}
+      sunIncidentPerSample_(sunIsDisc_ ? sunDiscRadiance_ / uniformConePdf(sunOneMinusCosRadius_) : scene.sun.irradiance) {}
 
 Vec3f PathTracer::radiance(const Ray &cameraRay, PixelSampler &sampler, RayCounts &counts) const {
     const RenderSettings &settings = scene_.settings;
@@ -49,7 +49,7 @@ Vec3f PathTracer::radiance(const Ray &cameraRay, PixelSampler &sampler, RayCount
 }
 
 Vec3f PathTracer::sunLight(const SurfaceInteraction &si, const Vec3f &albedo, Vec2f u, RayCounts &counts) const {
-    Vec3f wi = sunIsDisc_ ? sunFrame_.toWorld(sampleUniformCone(u, sunCosHalfAngle_)) : scene_.sun.direction;
+    Vec3f wi = sunIsDisc_ ? sunFrame_.toWorld(sampleUniformCone(u, sunOneMinusCosRadius_)) : scene_.sun.direction;
     float cosTheta = dot(si.shadingNormal, wi);
     if (cosTheta <= 0 || dot(si.geometricNormal, wi) <= 0) return Vec3f(0.0f);
 
@@ -63,7 +63,7 @@ Vec3f PathTracer::sunLight(const SurfaceInteraction &si, const Vec3f &albedo, Ve
 // vertex next-event estimation has already counted it.
 Vec3f PathTracer::escapedRadiance(const Ray &ray, bool cameraRay) const {
     Vec3f L = scene_.environment.radianceTowards(ray.direction);
-    if (cameraRay && sunIsDisc_ && dot(ray.direction, scene_.sun.direction) >= sunCosHalfAngle_) L += sunDiscRadiance_;
+    if (cameraRay && sunIsDisc_ && scene_.sun.discContains(ray.direction)) L += sunDiscRadiance_;
     return L;
 }
 

@@ -41,7 +41,7 @@ class PathTracer {
     SurfaceLookup surfaces_;
     // The sun as next-event estimation samples it, worked out once.
     bool sunIsDisc_;
-    float sunCosHalfAngle_;
+    float sunOneMinusCosRadius_;
     Frame sunFrame_;
     Vec3f sunDiscRadiance_;
     Vec3f sunIncidentPerSample_;  // radiance over the cone's pdf, or the irradiance of a point sun

@@ -29,6 +29,20 @@ std::vector<Tile> makeTiles(int width, int height, int size) {
     return tiles;
 }
 
+class FlushDenormals {
+  public:
+    FlushDenormals() : saved_(_mm_getcsr()) {
+        _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
+        _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
+    }
+    ~FlushDenormals() { _mm_setcsr(saved_); }
+    FlushDenormals(const FlushDenormals &) = delete;
+    FlushDenormals &operator=(const FlushDenormals &) = delete;
+
+  private:
+    unsigned saved_;
+};
+
 bool isFinite(const Vec3f &v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 }  // namespace
@@ -46,9 +60,9 @@ Film render(const RenderScene &scene, const Bvh &bvh, const RenderOptions &optio
     std::mutex statsMutex;
     RenderStats total;
     tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles.size(), 1), [&](const tbb::blocked_range<size_t> &range) {
-        // Denormals only slow traversal down; Embree recommends flushing them.
-        _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
-        _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
+        // Denormals only slow traversal down; Embree recommends flushing them. The thread's
+        // own mode comes back when the task ends.
+        FlushDenormals flushDenormals;
         RenderStats local;
         for (size_t t = range.begin(); t != range.end(); ++t) {
             const Tile &tile = tiles[t];

@@ -24,9 +24,11 @@ Vec3f sampleCosineHemisphere(Vec2f u) {
     return {d.x, d.y, z};
 }
 
-Vec3f sampleUniformCone(Vec2f u, float cosThetaMax) {
-    float cosTheta = 1 - u.x * (1 - cosThetaMax);
-    float sinTheta = std::sqrt(std::max(0.0f, 1 - cosTheta * cosTheta));
+Vec3f sampleUniformCone(Vec2f u, float oneMinusCosMax) {
+    float oneMinusCos = u.x * oneMinusCosMax;
+    float cosTheta = 1 - oneMinusCos;
+    // sin² = 1 − cos² = (1 − cos)(1 + cos), without the cancellation near cos = 1.
+    float sinTheta = std::sqrt(std::max(0.0f, oneMinusCos * (2 - oneMinusCos)));
     float phi = 2 * kPi * u.y;
     return {sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta};
 }

@@ -32,6 +32,7 @@ bool hasNormals(const Mesh &m) { return !m.positions.empty() && m.normals.size()
 }  // namespace
 
 void Mesh::append(const Mesh &other, const Transform &transform) {
+    if (other.triangleCount() == 0) return;
     if (positions.empty()) {
         normals.clear();
         uvs.clear();

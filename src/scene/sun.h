@@ -22,7 +22,18 @@ struct Sun {
         return {std::sin(az) * std::cos(el), std::cos(az) * std::cos(el), std::sin(el)};
     }
 
-    float cosHalfAngle() const { return std::cos(radians(angularDiameterDegrees * 0.5f)); }
+    // 1 − cos of the disc's angular radius, as 2·sin²(radius/2): exact for small discs.
+    float oneMinusCosRadius() const {
+        float s = std::sin(radians(angularDiameterDegrees * 0.25f));
+        return 2 * s * s;
+    }
+    // Whether a unit direction points into the disc. Compares sines via the cross product,
+    // which stays exact for small angles where the cosine does not.
+    bool discContains(const Vec3f &d) const {
+        float omc = oneMinusCosRadius();
+        Vec3f c = cross(d, direction);
+        return dot(d, direction) > 0 && dot(c, c) <= omc * (2 - omc);
+    }
     // Radiance of the disc that gives `irradiance` at normal incidence: E = L·π·sin²(θ/2).
     Vec3f discRadiance() const {
         float s = std::sin(radians(angularDiameterDegrees * 0.5f));

@@ -32,6 +32,14 @@ run render --res 640by480
 check "bad resolution exits 2" rc_is 2
 run render -o picture.png
 check "non-exr output exits 2" rc_is 2
+run render --png picture.jpg
+check "non-png display image exits 2" rc_is 2
+
+# An output that cannot be written is reported before rendering: exit 3.
+touch "$work/afile"
+run render --res 8x8 --spp 1 -q -o "$work/afile/x.exr"
+check "unwritable output exits 3" rc_is 3
+check "unwritable output named" err_has "$work/afile/x.exr"
 
 # The default scene renders to a valid EXR and PNG.
 run render --res 40x24 --spp 2 -q -o "$work/d.exr" --png "$work/d.png"

@@ -18,8 +18,8 @@ TEST(Sampling, CosineHemisphereMatchesItsDensity) {
 
 TEST(Sampling, NarrowAndWideConesMatchTheirDensity) {
     for (float cosMax : {0.2f, 0.95f}) {
-        test::Chi2Result r = test::chi2Test([&](Vec2f u) { return sampleUniformCone(u, cosMax); },
-                                            [&](const Vec3f &d) { return d.z >= cosMax ? uniformConePdf(cosMax) : 0.0f; },
+        test::Chi2Result r = test::chi2Test([&](Vec2f u) { return sampleUniformCone(u, 1 - cosMax); },
+                                            [&](const Vec3f &d) { return d.z >= cosMax ? uniformConePdf(1 - cosMax) : 0.0f; },
                                             1000000, 200, 40);
         EXPECT_GT(r.pValue, kAlpha) << "cosMax " << cosMax << " chi2 " << r.statistic << " dof " << r.degreesOfFreedom;
         EXPECT_LT(r.outsideSupport, 1e-5);

@@ -42,6 +42,16 @@ TEST(Mesh, AppendingFacetedToSmoothKeepsBothLooks) {
     EXPECT_NEAR(dot(n, merged.normals[idx[0]]), 1.0f, 1e-6f);
 }
 
+TEST(Mesh, AppendingAMeshWithoutTrianglesChangesNothing) {
+    Mesh smooth = makeShape({ShapeKind::Sphere});
+    Mesh merged = smooth;
+    Mesh pointsOnly;
+    pointsOnly.positions = {{0, 0, 0}, {1, 0, 0}};
+    merged.append(pointsOnly, Transform{});
+    EXPECT_EQ(merged.positions.size(), smooth.positions.size());
+    EXPECT_EQ(merged.normals.size(), smooth.normals.size());
+}
+
 TEST(Mesh, MirroringTransformKeepsTrianglesFacingOut) {
     Mesh box = makeShape({});
     Mesh mirrored;

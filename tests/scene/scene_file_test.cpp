@@ -171,6 +171,12 @@ TEST(SceneFile, RepeatedTopLevelGeometryIsSharedAndSingleGeometryBaked) {
     EXPECT_EQ(scene.effectiveTriangleCount(), 3u * 4u + 3u * 12u);
 }
 
+TEST(SceneFile, MeshFileWithLinesAfterFacesKeepsTheFaces) {
+    RenderScene scene = test::sceneFromXml(R"(<scene><mesh file="faces_then_lines.obj"/></scene>)");
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    EXPECT_EQ(scene.meshes[0].mesh.triangleCount(), 1u);
+}
+
 TEST(SceneFile, RootMustBeScene) {
     EXPECT_EQ(errorOf("<world/>"), "s.xml:1:1: the root element is <world>, expected <scene>");
 }
