@@ -1,11 +1,15 @@
-// Path-tracer throughput against Embree's own: rays per second of a whole render of the
-// default scene, and raw rtcIntersect1 throughput for incoherent rays in the same BVH, in the
-// same run, on one thread each. Prints the medians and their ratio.
+// Path-tracer throughput against Embree's own: rays per second of a whole render, and raw
+// rtcIntersect1 throughput for incoherent rays in the same BVH, in the same run, on one
+// thread each. Two scenes: /0 the built-in default scene (a few thousand triangles, where
+// traversal is cheap and shading weighs most), /1 scenes/bench/instances-10k.xml (10^8
+// effective triangles). Prints the medians and their ratio per scene.
 //
 //   build/release/bench/bench_path_tracer [--benchmark_repetitions=5]
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <memory>
+#include <string>
 #include <random>
 #include <vector>
 
@@ -30,10 +34,10 @@ struct BenchScene {
     Bvh bvh;
     std::vector<Ray> incoherentRays;
 
-    BenchScene() : scene(makeScene()), bvh(scene), incoherentRays(makeIncoherentRays()) {}
+    explicit BenchScene(const std::string &path) : scene(makeScene(path)), bvh(scene), incoherentRays(makeIncoherentRays()) {}
 
-    static RenderScene makeScene() {
-        SceneDescription d = loadSceneDescription("");
+    static RenderScene makeScene(const std::string &path) {
+        SceneDescription d = loadSceneDescription(path);
         d.camera.width = 160;
         d.camera.height = 90;
         d.settings.samplesPerPixel = 16;
@@ -61,13 +65,17 @@ struct BenchScene {
     }
 };
 
-BenchScene &benchScene() {
-    static BenchScene s;
-    return s;
+const std::string kScenes[] = {"", VEDUTA_SOURCE_DIR "/scenes/bench/instances-10k.xml"};
+
+BenchScene &benchScene(int64_t index) {
+    static std::map<int64_t, std::unique_ptr<BenchScene>> scenes;
+    std::unique_ptr<BenchScene> &s = scenes[index];
+    if (!s) s = std::make_unique<BenchScene>(kScenes[index]);
+    return *s;
 }
 
 void BM_PathTracerRays(benchmark::State &state) {
-    BenchScene &b = benchScene();
+    BenchScene &b = benchScene(state.range(0));
     tbb::task_arena one(1);
     RayCounts rays;
     for (auto _ : state) {
@@ -84,7 +92,7 @@ void BM_PathTracerRays(benchmark::State &state) {
 }
 
 void BM_EmbreeIncoherentIntersect1(benchmark::State &state) {
-    BenchScene &b = benchScene();
+    BenchScene &b = benchScene(state.range(0));
     auto *scene = static_cast<RTCScene>(b.bvh.embreeScene());
     _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
     _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
@@ -104,8 +112,8 @@ void BM_EmbreeIncoherentIntersect1(benchmark::State &state) {
     state.counters["rays_per_second"] = benchmark::Counter(double(rays), benchmark::Counter::kIsRate);
 }
 
-BENCHMARK(BM_PathTracerRays)->Unit(benchmark::kMillisecond)->MinTime(1.0);
-BENCHMARK(BM_EmbreeIncoherentIntersect1)->Unit(benchmark::kMillisecond)->MinTime(1.0);
+BENCHMARK(BM_PathTracerRays)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->MinTime(1.0);
+BENCHMARK(BM_EmbreeIncoherentIntersect1)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->MinTime(1.0);
 
 // Keeps the console output and remembers each benchmark's median rays/s.
 class RatioReporter : public benchmark::ConsoleReporter {
@@ -117,10 +125,10 @@ class RatioReporter : public benchmark::ConsoleReporter {
             bool single = run.run_type == Run::RT_Iteration && run.repetitions <= 1;
             if (!median && !single) continue;
             auto it = run.counters.find("rays_per_second");
-            if (it != run.counters.end()) rates[run.run_name.function_name] = it->second.value;
+            if (it != run.counters.end()) rates[{run.run_name.function_name, run.run_name.args}] = it->second.value;
         }
     }
-    std::map<std::string, double> rates;
+    std::map<std::pair<std::string, std::string>, double> rates;  // (benchmark, scene argument)
 };
 
 }  // namespace
@@ -132,11 +140,13 @@ int main(int argc, char **argv) {
     veduta::RatioReporter reporter;
     benchmark::RunSpecifiedBenchmarks(&reporter);
     auto &r = reporter.rates;
-    if (r.count("BM_PathTracerRays") && r.count("BM_EmbreeIncoherentIntersect1")) {
-        double pt = r["BM_PathTracerRays"], raw = r["BM_EmbreeIncoherentIntersect1"];
-        std::printf("\npath tracer: %.3f Mrays/s, raw Embree incoherent rtcIntersect1: %.3f Mrays/s, ratio: %.1f %%\n",
-                    pt * 1e-6, raw * 1e-6, 100.0 * pt / raw);
+    for (const char *scene : {"0", "1"}) {
+        auto pt = r.find({"BM_PathTracerRays", scene}), raw = r.find({"BM_EmbreeIncoherentIntersect1", scene});
+        if (pt == r.end() || raw == r.end()) continue;
+        std::printf("\nscene %s: path tracer %.3f Mrays/s, raw Embree incoherent rtcIntersect1 %.3f Mrays/s, ratio %.1f %%",
+                    scene, pt->second * 1e-6, raw->second * 1e-6, 100.0 * pt->second / raw->second);
     }
+    std::printf("\n");
     benchmark::Shutdown();
     return 0;
 }
