@@ -109,16 +109,20 @@ TEST(Render, InstancedAndBakedAgreeWithIndirectLight) {
     EXPECT_NEAR(mean(a), mean(b), 1e-3 * mean(b));
 }
 
-// White furnace: an albedo-1 object in a constant environment of radiance 1 is invisible.
-TEST(Render, WhiteFurnace) {
-    Film film = renderXml(R"(<scene>
-  <camera position="0 -4 0" look_at="0 0 0" fov="40" resolution="48 48"/>
+// A white furnace: no sun, a uniform sky of radiance 1 and white (albedo 1) geometry, which
+// must then be invisible.
+Film renderFurnace(const std::string &camera, const std::string &settings, const std::string &geometry) {
+    return renderXml("<scene>\n" + camera + R"(
   <sun irradiance="0"/>
   <environment radiance="1"/>
-  <render spp="16" max_depth="64"/>
   <material name="white" diffuse="1"/>
-  <sphere radius="1" segments="128" rings="64" material="white"/>
-</scene>)");
+  )" + settings + "\n" + geometry + "\n</scene>");
+}
+
+TEST(Render, WhiteFurnace) {
+    Film film = renderFurnace(R"(<camera position="0 -4 0" look_at="0 0 0" fov="40" resolution="48 48"/>)",
+                              R"(<render spp="16" max_depth="64"/>)",
+                              R"(<sphere radius="1" segments="128" rings="64" material="white"/>)");
     for (size_t i = 0; i < film.pixels().size(); ++i) ASSERT_NEAR(film.pixels()[i], 1.0f, 0.01f) << "value " << i;
 }
 
@@ -126,16 +130,11 @@ TEST(Render, WhiteFurnace) {
 // decides: still radiance 1 in expectation. Per-sample values are 0 or 1/0.95^k, so pixels
 // carry Monte Carlo noise (σ ≈ 0.01 at 1024 spp); the image mean is far tighter.
 TEST(Render, WhiteFurnaceWithRussianRoulette) {
-    Film film = renderXml(R"(<scene>
-  <camera position="3 -5 4" look_at="0 0 0.5" fov="50" resolution="16 16"/>
-  <sun irradiance="0"/>
-  <environment radiance="1"/>
-  <render spp="1024" max_depth="1024"/>
-  <material name="white" diffuse="1"/>
+    Film film = renderFurnace(R"(<camera position="3 -5 4" look_at="0 0 0.5" fov="50" resolution="16 16"/>)",
+                              R"(<render spp="1024" max_depth="1024"/>)", R"(
   <plane size="6 6" material="white"/>
   <box size="1 1 1" material="white"/>
-  <box size="0.4 3 2" translate="-0.8 0 0" material="white"/>
-</scene>)");
+  <box size="0.4 3 2" translate="-0.8 0 0" material="white"/>)");
     double sum = 0;
     for (size_t i = 0; i < film.pixels().size(); ++i) {
         if (i % 4 == 3) continue;
