@@ -10,7 +10,6 @@
 #include "app/commands.h"
 #include "app/run_guarded.h"
 #include "app/scene_loading.h"
-#include "core/error.h"
 #include "render/bvh.h"
 #include "render/film_output.h"
 #include "render/renderer.h"
