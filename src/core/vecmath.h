@@ -49,12 +49,6 @@ inline Vec3f cross(const Vec3f &a, const Vec3f &b) {
 inline float length(const Vec3f &a) { return std::sqrt(dot(a, a)); }
 inline Vec3f normalize(const Vec3f &a) { return a / length(a); }
 inline float maxComponent(const Vec3f &a) { return std::max(a.x, std::max(a.y, a.z)); }
-inline Vec3f min(const Vec3f &a, const Vec3f &b) {
-    return {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)};
-}
-inline Vec3f max(const Vec3f &a, const Vec3f &b) {
-    return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)};
-}
 inline Vec3f faceForward(const Vec3f &n, const Vec3f &towards) {
     return dot(n, towards) < 0 ? -n : n;
 }
@@ -98,7 +92,6 @@ struct Transform {
     Transform normalTransform() const;
     Transform inverse() const;
     float determinant() const;
-    bool isIdentity() const { return *this == Transform{}; }
     bool operator==(const Transform &) const = default;
 };
 
