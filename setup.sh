@@ -16,7 +16,7 @@ packages=(
     cmake g++ make pkg-config ccache time
     libembree-dev libopenimageio-dev openimageio-tools libopenexr-dev libopencolorio-dev
     libgeographiclib-dev libcgal-dev libgdal-dev libtbb-dev libpugixml-dev libcli11-dev
-    libgtest-dev libbenchmark-dev libspdlog-dev libfmt-dev libassimp-dev libboost-dev
+    libgtest-dev libbenchmark-dev libspdlog-dev libfmt-dev libassimp-dev libboost-dev libpng-dev
 )
 missing=()
 for p in "${packages[@]}"; do

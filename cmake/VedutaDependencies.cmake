@@ -22,6 +22,8 @@ veduta_require(OCIO_FOUND libopencolorio-dev)
 
 find_package(OpenEXR QUIET CONFIG)
 veduta_require(OpenEXR_FOUND libopenexr-dev)
+find_package(PNG QUIET)
+veduta_require(PNG_FOUND libpng-dev)
 find_package(GeographicLib QUIET)
 veduta_require(GeographicLib_FOUND libgeographiclib-dev)
 set(CGAL_DATA_DIR "unused")  # silences CGAL's note about its data directory

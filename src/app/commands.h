@@ -14,6 +14,10 @@ enum ExitCode : int {
 };
 
 void addRenderCommand(CLI::App &app, int &exitCode);
+void addPreviewCommand(CLI::App &app, int &exitCode);
+void addDiffCommand(CLI::App &app, int &exitCode);  // in the veduta-diff program
+// Replaces this process with veduta-diff, passing argv on; returns only if that fails.
+int runDiffProgram(int argc, char **argv);
 void addInfoCommand(CLI::App &app, int &exitCode);
 
 }  // namespace veduta

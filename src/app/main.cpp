@@ -1,4 +1,4 @@
-#include <cstdio>
+#include <cstring>
 
 #include <CLI/CLI.hpp>
 
@@ -6,11 +6,15 @@
 #include "app/version.h"
 
 int main(int argc, char **argv) {
+    if (argc > 1 && std::strcmp(argv[1], "diff") == 0) return veduta::runDiffProgram(argc, argv);
     CLI::App app{"veduta: an offline renderer for landscape and city stills"};
     app.set_version_flag("--version", std::string("veduta ") + veduta::kVersion);
     app.require_subcommand(1);
     int exitCode = veduta::kExitOk;
     veduta::addRenderCommand(app, exitCode);
+    veduta::addPreviewCommand(app, exitCode);
+    // Listed here for --help; it runs as its own program (runDiffProgram above).
+    app.add_subcommand("diff", "Compare two images and say whether they agree (see veduta diff --help)");
     veduta::addInfoCommand(app, exitCode);
     try {
         app.parse(argc, argv);

@@ -4,9 +4,7 @@
 #include <optional>
 #include <string>
 
-#include <fmt/format.h>
-#include <tbb/global_control.h>
-
+#include "app/command_options.h"
 #include "app/commands.h"
 #include "app/run_guarded.h"
 #include "app/scene_loading.h"
@@ -34,39 +32,12 @@ void applyOverrides(const RenderArgs &args, SceneDescription &d) {
     if (args.seed) d.settings.seed = *args.seed;
     if (args.maxDepth) d.settings.maxDepth = *args.maxDepth;
     if (args.tileSize) d.settings.tileSize = *args.tileSize;
-    if (!args.resolution.empty()) std::sscanf(args.resolution.c_str(), "%dx%d", &d.camera.width, &d.camera.height);
-}
-
-// Checks a WxH resolution for CLI11: an empty string means the text is fine.
-std::string checkResolution(const std::string &text) {
-    int w = 0, h = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' || w < 1 || h < 1 || w > 65536 ||
-        h > 65536) {
-        return fmt::format("'{}' is not a resolution like 1920x1080", text);
-    }
-    return {};
-}
-
-std::string checkExrName(const std::string &text) {
-    return std::filesystem::path(text).extension() == ".exr" ? std::string() : "the output must be an .exr file";
-}
-
-std::string checkPngName(const std::string &text) {
-    return std::filesystem::path(text).extension() == ".png" ? std::string() : "the display image must be a .png file";
-}
-
-std::string defaultOutput(const std::string &scene) {
-    std::string stem = scene.empty() ? "default" : std::filesystem::path(scene).stem().string();
-    return "renders/" + stem + ".exr";
+    applyResolution(args.resolution, d.camera);
 }
 
 void runRender(const RenderArgs &args) {
-    std::unique_ptr<tbb::global_control> threadLimit;
-    if (args.threads > 0) {
-        threadLimit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, args.threads);
-    }
-    std::string exr = args.exr.empty() ? defaultOutput(args.scene) : args.exr;
+    auto threadLimit = limitThreads(args.threads);
+    std::string exr = args.exr.empty() ? defaultOutput(args.scene, ".exr") : args.exr;
     prepareOutputFile(exr);
     if (!args.png.empty()) prepareOutputFile(args.png);
     SceneDescription description = loadSceneDescription(args.scene);
@@ -97,8 +68,8 @@ void addRenderCommand(CLI::App &app, int &exitCode) {
     cmd->add_option("scene", args->scene, "Scene file (XML); the built-in default scene when omitted")
         ->check(CLI::ExistingFile);
     cmd->add_option("-o,--output", args->exr, "EXR file to write [renders/<scene name>.exr]")
-        ->check(CLI::Validator(checkExrName, "FILE.exr"));
-    cmd->add_option("--png", args->png, "Also write an 8-bit sRGB PNG here")->check(CLI::Validator(checkPngName, "FILE.png"));
+        ->check(fileWithExtension(".exr"));
+    cmd->add_option("--png", args->png, "Also write an 8-bit sRGB PNG here")->check(fileWithExtension(".png"));
     cmd->add_option("--spp", args->spp, "Samples per pixel (overrides the scene)")->check(CLI::Range(1u, 1u << 24));
     cmd->add_option("--seed", args->seed, "Seed of every random choice (overrides the scene)");
     cmd->add_option("--max-depth", args->maxDepth, "Longest path, in bounces (overrides the scene)")

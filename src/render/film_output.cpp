@@ -4,41 +4,24 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <OpenImageIO/imageio.h>
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStandardAttributes.h>
+#include <OpenEXR/ImfStringAttribute.h>
 #include <fmt/format.h>
+#include <png.h>
 #include <unistd.h>
 
+#include "io/atomic_file.h"
+
+// Written with OpenEXR and libpng directly rather than through OpenImageIO: Debian's
+// OpenImageIO loads some 260 shared libraries, which costs about 0.6 s at every start of a
+// program linked to it, too much for `veduta preview`. OpenImageIO stays for reading images
+// of any format (`veduta diff`), in a separate program.
+
 namespace veduta {
-
-namespace {
-
-// The temporary keeps the target's extension: OpenImageIO picks the format by it.
-std::filesystem::path temporaryName(const std::filesystem::path &file) {
-    return file.parent_path() / fmt::format(".{}.tmp{}{}", file.stem().string(), getpid(), file.extension().string());
-}
-
-void writeImage(const std::filesystem::path &file, const OIIO::ImageSpec &spec, const void *pixels) {
-    if (!file.parent_path().empty()) std::filesystem::create_directories(file.parent_path());
-    std::filesystem::path tmp = temporaryName(file);
-    auto out = OIIO::ImageOutput::create(file.string());
-    if (!out) throw std::runtime_error(fmt::format("{}: cannot write this image format: {}", file.string(), OIIO::geterror()));
-    bool ok = out->open(tmp.string(), spec) && out->write_image(spec.format, pixels) && out->close();
-    if (!ok) {
-        std::string message = out->geterror();
-        std::error_code ignored;
-        std::filesystem::remove(tmp, ignored);
-        throw std::runtime_error(fmt::format("{}: {}", file.string(), message));
-    }
-    std::error_code renameError;
-    std::filesystem::rename(tmp, file, renameError);
-    if (renameError) {
-        std::error_code ignored;
-        std::filesystem::remove(tmp, ignored);
-        throw std::runtime_error(fmt::format("{}: cannot replace it: {}", file.string(), renameError.message()));
-    }
-}
-
-}  // namespace
 
 void prepareOutputFile(const std::filesystem::path &file) {
     std::filesystem::path folder = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
@@ -57,25 +40,44 @@ float linearToSrgb(float v) {
 }
 
 void writeExr(const Film &film, const std::filesystem::path &file) {
-    OIIO::ImageSpec spec(film.width(), film.height(), 4, OIIO::TypeDesc::FLOAT);
-    spec.channelnames = {"R", "G", "B", "A"};
-    spec.alpha_channel = 3;
-    spec.attribute("compression", "zip");
-    spec.attribute("oiio:ColorSpace", "Linear");
-    spec.attribute("Software", "veduta");
-    writeImage(file, spec, film.rgba());
+    writeFileAtomically(file, [&](const std::filesystem::path &temporary) {
+        try {
+            Imf::Header header(film.width(), film.height());
+            header.compression() = Imf::ZIP_COMPRESSION;
+            header.insert("Software", Imf::StringAttribute("veduta"));
+            Imf::FrameBuffer frame;
+            const char *names[4] = {"R", "G", "B", "A"};
+            auto *base = reinterpret_cast<char *>(const_cast<float *>(film.rgba()));
+            for (int c = 0; c < 4; ++c) {
+                header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
+                frame.insert(names[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), 4 * sizeof(float),
+                                                  4 * sizeof(float) * size_t(film.width())));
+            }
+            Imf::OutputFile out(temporary.c_str(), header);
+            out.setFrameBuffer(frame);
+            out.writePixels(film.height());
+        } catch (const std::exception &e) {
+            throw std::runtime_error(fmt::format("{}: {}", file.string(), e.what()));
+        }
+    });
 }
 
 void writePng(const Film &film, const std::filesystem::path &file) {
-    OIIO::ImageSpec spec(film.width(), film.height(), 4, OIIO::TypeDesc::UINT8);
-    spec.alpha_channel = 3;
-    spec.attribute("oiio:ColorSpace", "sRGB");
     std::vector<uint8_t> pixels(film.pixels().size());
     for (size_t i = 0; i < pixels.size(); ++i) {
         float v = (i % 4 == 3) ? std::clamp(film.pixels()[i], 0.0f, 1.0f) : linearToSrgb(film.pixels()[i]);
         pixels[i] = uint8_t(std::lround(v * 255.0f));
     }
-    writeImage(file, spec, pixels.data());
+    writeFileAtomically(file, [&](const std::filesystem::path &temporary) {
+        png_image image{};
+        image.version = PNG_IMAGE_VERSION;
+        image.width = png_uint_32(film.width());
+        image.height = png_uint_32(film.height());
+        image.format = PNG_FORMAT_RGBA;  // 8-bit sRGB, as libpng's simplified API assumes
+        if (!png_image_write_to_file(&image, temporary.c_str(), 0, pixels.data(), 0, nullptr)) {
+            throw std::runtime_error(fmt::format("{}: {}", file.string(), image.message));
+        }
+    });
 }
 
 }  // namespace veduta

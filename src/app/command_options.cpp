@@ -1,0 +1,43 @@
+#include "app/command_options.h"
+
+#include <cstdio>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+namespace veduta {
+
+std::string checkResolution(const std::string &text) {
+    int w = 0, h = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' || w < 1 || h < 1 || w > 65536 ||
+        h > 65536) {
+        return fmt::format("'{}' is not a resolution like 1920x1080", text);
+    }
+    return {};
+}
+
+CLI::Validator fileWithExtension(const std::string &extension) {
+    return CLI::Validator(
+        [extension](const std::string &text) {
+            return std::filesystem::path(text).extension() == extension ? std::string()
+                                                                        : fmt::format("'{}' is not a {} file", text, extension);
+        },
+        "FILE" + extension);
+}
+
+void applyResolution(const std::string &text, Camera &camera) {
+    if (!text.empty()) std::sscanf(text.c_str(), "%dx%d", &camera.width, &camera.height);
+}
+
+std::unique_ptr<tbb::global_control> limitThreads(unsigned threads) {
+    if (threads == 0) return nullptr;
+    return std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
+}
+
+std::string defaultOutput(const std::string &scene, const std::string &suffix) {
+    std::string stem = scene.empty() ? "default" : std::filesystem::path(scene).stem().string();
+    return fmt::format("renders/{}{}", stem, suffix);
+}
+
+}  // namespace veduta

@@ -1,0 +1,408 @@
+#include "preview/preview.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <mutex>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "core/hash.h"
+
+namespace veduta {
+
+namespace {
+
+constexpr float kNear = 0.05f;  // metres in front of the eye; nearer geometry is clipped
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+constexpr uint32_t kNoItem = ~0u;
+// Items whose screen box spans more tiles than this share one transformed copy of their
+// vertices; smaller ones are transformed per tile, which costs less than the shared copy's memory.
+constexpr int kSharedVerticesTileCount = 4;
+
+struct Box3 {
+    Vec3f lo{kInfinity}, hi{-kInfinity};
+    void extend(const Vec3f &p) {
+        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+        hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+    }
+};
+
+Box3 boundsOf(const Mesh &mesh) {
+    Box3 box;
+    for (const Vec3f &p : mesh.positions) box.extend(p);
+    return box;
+}
+
+// The camera as the rasterizer sees it: world → camera space (x right, y up, z forward) and
+// camera space → raster, with the pixel centres CameraRays uses.
+struct Projection {
+    Transform cameraFromWorld;
+    Vec3f eye;
+    float scaleX, scaleY, offsetX, offsetY;
+
+    explicit Projection(const Camera &c) : eye(c.position) {
+        Vec3f forward = normalize(c.lookAt - c.position);
+        Vec3f right = normalize(cross(forward, c.up));
+        Vec3f up = cross(right, forward);
+        cameraFromWorld = {{right.x, right.y, right.z, -dot(right, eye), up.x, up.y, up.z, -dot(up, eye), forward.x,
+                            forward.y, forward.z, -dot(forward, eye)}};
+        float halfHeight = std::tan(radians(c.verticalFovDegrees) * 0.5f);
+        float halfWidth = halfHeight * float(c.width) / float(c.height);
+        scaleX = float(c.width) / (2 * halfWidth);
+        scaleY = float(c.height) / (2 * halfHeight);
+        offsetX = float(c.width) * 0.5f;
+        offsetY = float(c.height) * 0.5f;
+    }
+    float rasterX(const Vec3f &p) const { return p.x / p.z * scaleX + offsetX; }
+    float rasterY(const Vec3f &p) const { return offsetY - p.y / p.z * scaleY; }
+};
+
+// A mesh as drawn: a baked mesh or one instance of a prototype.
+struct DrawItem {
+    const Mesh *mesh;
+    Transform objectToWorld;
+    Transform cameraFromObject;
+    Transform normalToWorld;
+    MaterialId materialOverride;
+    ObjectId objectId;
+    int x0, y0, x1, y1;  // tiles it may touch, inclusive
+};
+
+// What a pixel shows after rasterization: which triangle, where on it, how far.
+struct Fragments {
+    std::vector<float> depth;
+    std::vector<uint32_t> item, triangle;
+    std::vector<float> b1, b2;      // barycentrics of the triangle's vertices 1 and 2
+    std::vector<float> edgePixels;  // distance to the nearest edge of that triangle, for wireframes
+
+    explicit Fragments(size_t n) : depth(n, kInfinity), item(n, kNoItem), triangle(n, 0), b1(n, 0), b2(n, 0), edgePixels(n, kInfinity) {}
+};
+
+// A vertex in camera space and, when it lies beyond the near plane, on the raster.
+struct CameraVertex {
+    Vec3f p;
+    float x = 0, y = 0, invZ = 0;
+};
+
+// A corner of a triangle during near-plane clipping: camera-space position and its
+// barycentric coordinates on the original triangle.
+struct ClipVertex {
+    Vec3f p;
+    Vec3f bary;
+};
+
+// A triangle corner as the rasterizer takes it.
+struct RasterVertex {
+    float x, y, invZ;
+    Vec3f bary;  // on the original triangle, which clipping may have cut
+};
+
+struct Tile {
+    int x0, y0, x1, y1;  // pixels, exclusive upper bounds
+};
+
+class Rasterizer {
+  public:
+    Rasterizer(const RenderScene &scene, const PreviewOptions &options)
+        : scene_(scene), options_(options), projection_(scene.camera), width_(scene.camera.width),
+          height_(scene.camera.height), tilesX_((width_ + options.tileSize - 1) / options.tileSize),
+          tilesY_((height_ + options.tileSize - 1) / options.tileSize), fragments_(size_t(width_) * size_t(height_)) {
+        collectItems();
+        binItems();
+    }
+
+    PreviewImage run() {
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, bins_.size(), 1), [&](const tbb::blocked_range<size_t> &r) {
+            std::vector<CameraVertex> scratch;
+            for (size_t t = r.begin(); t != r.end(); ++t) rasterizeTile(t, scratch);
+        }, tbb::simple_partitioner());
+        return shade();
+    }
+
+  private:
+    void collectItems() {
+        std::vector<Box3> prototypeBounds;
+        for (const Mesh &p : scene_.prototypes) prototypeBounds.push_back(boundsOf(p));
+        for (const BakedMesh &m : scene_.meshes) addItem(m.mesh, Transform{}, boundsOf(m.mesh), kNoMaterial, m.objectId);
+        for (const Instance &inst : scene_.instances) {
+            addItem(scene_.prototypes[inst.prototype], inst.objectToWorld, prototypeBounds[inst.prototype],
+                    inst.materialOverride, inst.objectId);
+        }
+        sharedVertices_.resize(items_.size());
+        sharedOnce_ = std::make_unique<std::once_flag[]>(items_.size());
+    }
+
+    // Keeps an item if its bounding box may be visible, with the tiles it may touch.
+    void addItem(const Mesh &mesh, const Transform &objectToWorld, const Box3 &box, MaterialId override, ObjectId id) {
+        if (mesh.triangleCount() == 0) return;
+        Transform cameraFromObject = projection_.cameraFromWorld * objectToWorld;
+        float minX = kInfinity, minY = kInfinity, maxX = -kInfinity, maxY = -kInfinity;
+        bool anyInFront = false, anyBehind = false;
+        for (int c = 0; c < 8; ++c) {
+            Vec3f corner{c & 1 ? box.hi.x : box.lo.x, c & 2 ? box.hi.y : box.lo.y, c & 4 ? box.hi.z : box.lo.z};
+            Vec3f p = cameraFromObject.applyPoint(corner);
+            if (p.z < kNear) {
+                anyBehind = true;
+                continue;
+            }
+            anyInFront = true;
+            float x = projection_.rasterX(p), y = projection_.rasterY(p);
+            minX = std::min(minX, x), maxX = std::max(maxX, x), minY = std::min(minY, y), maxY = std::max(maxY, y);
+        }
+        if (!anyInFront) return;
+        if (anyBehind) {  // the box crosses the near plane: its projection is unbounded
+            minX = minY = -kInfinity;
+            maxX = maxY = kInfinity;
+        }
+        if (maxX < 0 || maxY < 0 || minX > float(width_) || minY > float(height_)) return;
+        int ts = options_.tileSize;
+        DrawItem item{&mesh, objectToWorld, cameraFromObject, objectToWorld.normalTransform(), override, id,
+                      std::clamp(int(std::floor(std::max(minX, 0.0f))) / ts, 0, tilesX_ - 1),
+                      std::clamp(int(std::floor(std::max(minY, 0.0f))) / ts, 0, tilesY_ - 1),
+                      std::clamp(int(std::min(maxX, float(width_))) / ts, 0, tilesX_ - 1),
+                      std::clamp(int(std::min(maxY, float(height_))) / ts, 0, tilesY_ - 1)};
+        items_.push_back(item);
+    }
+
+    void binItems() {
+        bins_.resize(size_t(tilesX_) * size_t(tilesY_));
+        for (uint32_t i = 0; i < items_.size(); ++i) {
+            const DrawItem &item = items_[i];
+            for (int ty = item.y0; ty <= item.y1; ++ty) {
+                for (int tx = item.x0; tx <= item.x1; ++tx) bins_[size_t(ty) * size_t(tilesX_) + size_t(tx)].push_back(i);
+            }
+        }
+    }
+
+    Tile tileRect(size_t t) const {
+        int ts = options_.tileSize;
+        int tx = int(t % size_t(tilesX_)), ty = int(t / size_t(tilesX_));
+        return {tx * ts, ty * ts, std::min((tx + 1) * ts, width_), std::min((ty + 1) * ts, height_)};
+    }
+
+    RasterVertex project(const Vec3f &p, const Vec3f &bary) const {
+        return {projection_.rasterX(p), projection_.rasterY(p), 1.0f / p.z, bary};
+    }
+
+    void transformVertices(const DrawItem &item, std::vector<CameraVertex> &out) const {
+        out.resize(item.mesh->vertexCount());
+        for (size_t v = 0; v < out.size(); ++v) {
+            CameraVertex &c = out[v];
+            c.p = item.cameraFromObject.applyPoint(item.mesh->positions[v]);
+            if (c.p.z < kNear) continue;
+            RasterVertex r = project(c.p, {});
+            c.x = r.x, c.y = r.y, c.invZ = r.invZ;
+        }
+    }
+
+    const std::vector<CameraVertex> &cameraVertices(uint32_t i, std::vector<CameraVertex> &scratch) {
+        const DrawItem &item = items_[i];
+        if ((item.x1 - item.x0 + 1) * (item.y1 - item.y0 + 1) <= kSharedVerticesTileCount) {
+            transformVertices(item, scratch);
+            return scratch;
+        }
+        std::call_once(sharedOnce_[i], [&] { transformVertices(item, sharedVertices_[i]); });
+        return sharedVertices_[i];
+    }
+
+    void rasterizeTile(size_t t, std::vector<CameraVertex> &scratch) {
+        Tile tile = tileRect(t);
+        // Pixel centres lie at +0.5: a triangle reaches into the tile only past these bounds.
+        float left = float(tile.x0) + 0.5f, right = float(tile.x1) - 0.5f;
+        float top = float(tile.y0) + 0.5f, bottom = float(tile.y1) - 0.5f;
+        for (uint32_t i : bins_[t]) {
+            const std::vector<CameraVertex> &v = cameraVertices(i, scratch);
+            const Mesh &mesh = *items_[i].mesh;
+            for (uint32_t tri = 0; tri < mesh.triangleCount(); ++tri) {
+                const uint32_t *idx = &mesh.indices[3 * size_t(tri)];
+                const CameraVertex &a = v[idx[0]], &b = v[idx[1]], &c = v[idx[2]];
+                if (a.p.z < kNear || b.p.z < kNear || c.p.z < kNear) {
+                    ClipVertex clip[3] = {{a.p, {1, 0, 0}}, {b.p, {0, 1, 0}}, {c.p, {0, 0, 1}}};
+                    drawClipped(clip, tile, i, tri);
+                    continue;
+                }
+                // Most triangles of a detailed mesh miss a given tile: reject them before setup.
+                if (std::max({a.x, b.x, c.x}) < left || std::min({a.x, b.x, c.x}) > right ||
+                    std::max({a.y, b.y, c.y}) < top || std::min({a.y, b.y, c.y}) > bottom) {
+                    continue;
+                }
+                RasterVertex r[3] = {{a.x, a.y, a.invZ, {1, 0, 0}}, {b.x, b.y, b.invZ, {0, 1, 0}},
+                                     {c.x, c.y, c.invZ, {0, 0, 1}}};
+                rasterize(r, tile, i, tri);
+            }
+        }
+    }
+
+    // Clips a triangle against the near plane (into at most two) and rasterizes the rest.
+    void drawClipped(const ClipVertex (&c)[3], const Tile &tile, uint32_t item, uint32_t tri) {
+        int behind = (c[0].p.z < kNear) + (c[1].p.z < kNear) + (c[2].p.z < kNear);
+        if (behind == 3) return;
+        ClipVertex poly[4];
+        int n = 0;
+        for (int k = 0; k < 3; ++k) {
+            const ClipVertex &a = c[k], &b = c[(k + 1) % 3];
+            if (a.p.z >= kNear) poly[n++] = a;
+            if ((a.p.z < kNear) != (b.p.z < kNear)) {
+                float s = (kNear - a.p.z) / (b.p.z - a.p.z);
+                poly[n++] = {a.p + (b.p - a.p) * s, a.bary + (b.bary - a.bary) * s};
+                poly[n - 1].p.z = kNear;
+            }
+        }
+        for (int k = 1; k + 1 < n; ++k) {
+            RasterVertex fan[3] = {project(poly[0].p, poly[0].bary), project(poly[k].p, poly[k].bary),
+                                   project(poly[k + 1].p, poly[k + 1].bary)};
+            rasterize(fan, tile, item, tri);
+        }
+    }
+
+    // Edge functions at pixel centres over the triangle's box within the tile. Depth and
+    // barycentrics are interpolated perspective-correctly through 1/z.
+    void rasterize(const RasterVertex (&c)[3], const Tile &tile, uint32_t item, uint32_t tri) {
+        const float x[3] = {c[0].x, c[1].x, c[2].x}, y[3] = {c[0].y, c[1].y, c[2].y};
+        const float invZ[3] = {c[0].invZ, c[1].invZ, c[2].invZ};
+        // Pixels whose centres the triangle's box holds; clamped in float first, because a
+        // vertex just beyond the near plane can project far outside int's range.
+        auto firstCentre = [](float lo, int limit) { return int(std::ceil(std::max(lo - 0.5f, float(limit)))); };
+        auto lastCentre = [](float hi, int limit) { return int(std::floor(std::min(hi - 0.5f, float(limit)))); };
+        int px0 = firstCentre(std::min({x[0], x[1], x[2]}), tile.x0);
+        int px1 = lastCentre(std::max({x[0], x[1], x[2]}), tile.x1 - 1);
+        int py0 = firstCentre(std::min({y[0], y[1], y[2]}), tile.y0);
+        int py1 = lastCentre(std::max({y[0], y[1], y[2]}), tile.y1 - 1);
+        if (px0 > px1 || py0 > py1) return;
+        float area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
+        if (area == 0 || !std::isfinite(area)) return;
+        // Raster y points down, so counter-clockwise seen from the front has negative area.
+        if (options_.backfaceCulling && area > 0) return;
+
+        float sign = area > 0 ? 1.0f : -1.0f, invArea = 1.0f / std::abs(area);
+        // Edge k is opposite vertex k: e_k(p) = (b - a) × (p - a) with a, b the other two. It is
+        // evaluated from absolute pixel coordinates, never stepped from the tile's corner, so
+        // that the result does not depend on where tiles begin.
+        float dxEdge[3], dyEdge[3], invLength[3];
+        for (int k = 0; k < 3; ++k) {
+            int a = (k + 1) % 3, b = (k + 2) % 3;
+            dxEdge[k] = (x[b] - x[a]) * sign;
+            dyEdge[k] = (y[b] - y[a]) * sign;
+            invLength[k] = options_.wireframe ? 1.0f / std::sqrt(dxEdge[k] * dxEdge[k] + dyEdge[k] * dyEdge[k]) : 0.0f;
+        }
+        const int a0 = 1, a1 = 2, a2 = 0;  // the first vertex of each edge
+        for (int py = py0; py <= py1; ++py) {
+            float cy = float(py) + 0.5f;
+            float row[3] = {dxEdge[0] * (cy - y[a0]), dxEdge[1] * (cy - y[a1]), dxEdge[2] * (cy - y[a2])};
+            for (int px = px0; px <= px1; ++px) {
+                float cx = float(px) + 0.5f;
+                float e[3] = {row[0] - dyEdge[0] * (cx - x[a0]), row[1] - dyEdge[1] * (cx - x[a1]),
+                              row[2] - dyEdge[2] * (cx - x[a2])};
+                if (e[0] < 0 || e[1] < 0 || e[2] < 0) continue;
+                // Screen-space weights, then perspective-correct ones.
+                float w0 = e[0] * invArea * invZ[0], w1 = e[1] * invArea * invZ[1], w2 = e[2] * invArea * invZ[2];
+                float sum = w0 + w1 + w2;
+                float depth = 1.0f / sum;
+                size_t p = size_t(py) * size_t(width_) + size_t(px);
+                if (!(depth < fragments_.depth[p])) continue;
+                float s0 = w0 * depth, s1 = w1 * depth, s2 = w2 * depth;
+                fragments_.depth[p] = depth;
+                fragments_.item[p] = item;
+                fragments_.triangle[p] = tri;
+                fragments_.b1[p] = s0 * c[0].bary.y + s1 * c[1].bary.y + s2 * c[2].bary.y;
+                fragments_.b2[p] = s0 * c[0].bary.z + s1 * c[1].bary.z + s2 * c[2].bary.z;
+                if (options_.wireframe) {
+                    fragments_.edgePixels[p] = std::min({e[0] * invLength[0], e[1] * invLength[1], e[2] * invLength[2]});
+                }
+            }
+        }
+    }
+
+    PreviewImage shade();
+
+    const RenderScene &scene_;
+    const PreviewOptions &options_;
+    Projection projection_;
+    int width_, height_, tilesX_, tilesY_;
+    std::vector<DrawItem> items_;
+    std::vector<std::vector<uint32_t>> bins_;
+    std::vector<std::vector<CameraVertex>> sharedVertices_;
+    std::unique_ptr<std::once_flag[]> sharedOnce_;
+    Fragments fragments_;
+};
+
+// Where the visible geometry is, for the depth mode's grey ramp.
+std::pair<float, float> depthRange(const std::vector<float> &depth) {
+    float nearest = kInfinity, farthest = 0;
+    for (float d : depth) {
+        if (d == kInfinity) continue;
+        nearest = std::min(nearest, d);
+        farthest = std::max(farthest, d);
+    }
+    return {nearest, farthest};
+}
+
+PreviewImage Rasterizer::shade() {
+    PreviewImage image{Film(width_, height_), {}, std::vector<uint32_t>(fragments_.depth.size(), 0)};
+    auto [nearest, farthest] = depthRange(fragments_.depth);
+    const Sun &sun = scene_.sun;
+    Vec3f sky = scene_.environment.radiance;
+    tbb::parallel_for(tbb::blocked_range<int>(0, height_, 8), [&](const tbb::blocked_range<int> &rows) {
+        for (int y = rows.begin(); y != rows.end(); ++y) {
+            for (int x = 0; x < width_; ++x) {
+                size_t p = size_t(y) * size_t(width_) + size_t(x);
+                uint32_t i = fragments_.item[p];
+                if (i == kNoItem) {
+                    image.film.set(x, y, options_.mode == PreviewMode::Shaded ? sky : Vec3f(0.0f));
+                    continue;
+                }
+                const DrawItem &item = items_[i];
+                const Mesh &mesh = *item.mesh;
+                uint32_t tri = fragments_.triangle[p];
+                const uint32_t *idx = &mesh.indices[3 * size_t(tri)];
+                float b1 = fragments_.b1[p], b2 = fragments_.b2[p], b0 = 1 - b1 - b2;
+                Vec3f world = item.objectToWorld.applyPoint(mesh.positions[idx[0]] * b0 + mesh.positions[idx[1]] * b1 +
+                                                            mesh.positions[idx[2]] * b2);
+                Vec3f n = mesh.normals.empty()
+                              ? cross(mesh.positions[idx[1]] - mesh.positions[idx[0]], mesh.positions[idx[2]] - mesh.positions[idx[0]])
+                              : mesh.normals[idx[0]] * b0 + mesh.normals[idx[1]] * b1 + mesh.normals[idx[2]] * b2;
+                n = normalize(item.normalToWorld.applyVector(n));
+                n = faceForward(n, projection_.eye - world);  // surfaces are two-sided
+                MaterialId m = item.materialOverride != kNoMaterial ? item.materialOverride : mesh.triangleMaterials[tri];
+                Vec3f albedo = scene_.materials[m].diffuse;
+
+                Vec3f color;
+                switch (options_.mode) {
+                case PreviewMode::Shaded:
+                    color = albedo * kInvPi * sun.irradiance * std::max(0.0f, dot(n, sun.direction)) + albedo * sky;
+                    break;
+                case PreviewMode::Albedo: color = albedo; break;
+                case PreviewMode::Normal: color = n * 0.5f + Vec3f(0.5f); break;
+                case PreviewMode::Depth:
+                    color = Vec3f(farthest > nearest ? (farthest - fragments_.depth[p]) / (farthest - nearest) : 1.0f);
+                    break;
+                case PreviewMode::Id: color = objectIdColor(item.objectId); break;
+                }
+                if (options_.wireframe && fragments_.edgePixels[p] < 0.75f) color = Vec3f(0.02f);
+                image.film.set(x, y, color);
+                image.objectId[p] = item.objectId;
+            }
+        }
+    });
+    image.depth = std::move(fragments_.depth);
+    return image;
+}
+
+}  // namespace
+
+Vec3f objectIdColor(uint32_t id) {
+    if (id == 0) return Vec3f(0.0f);
+    uint32_t h = mix32(id * 0x9e3779b9u + 1);
+    // Each channel in [0.1, 1]: distinct from the black background and from each other.
+    return {0.1f + 0.9f * float(h & 0xffu) / 255.0f, 0.1f + 0.9f * float((h >> 8) & 0xffu) / 255.0f,
+            0.1f + 0.9f * float((h >> 16) & 0xffu) / 255.0f};
+}
+
+PreviewImage renderPreview(const RenderScene &scene, const PreviewOptions &options) {
+    return Rasterizer(scene, options).run();
+}
+
+}  // namespace veduta

@@ -1,0 +1,43 @@
+// The preview: a software rasterizer over the same RenderScene the path tracer reads
+// (instances are drawn as instances, never flattened), for quick checks before a long render.
+// It uses the scene's camera exactly like the renderer, with the same pixel centres.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "render/film.h"
+#include "scene/render_scene.h"
+
+namespace veduta {
+
+enum class PreviewMode {
+    Shaded,  // base colour lit by the sun (Lambert, optional shadow map) and the sky's irradiance
+    Albedo,  // base colour
+    Normal,  // shading normal, world space, mapped from [-1, 1] to [0, 1]
+    Depth,   // distance along the view axis, near = white, far = black
+    Id,      // object ids as distinct colours
+};
+
+struct PreviewOptions {
+    PreviewMode mode = PreviewMode::Shaded;
+    bool wireframe = false;        // draw triangle edges over the image
+    bool backfaceCulling = false;  // skip triangles facing away (scenes are two-sided by default)
+    bool shadows = false;          // shadow map for the sun
+    int shadowMapSize = 2048;
+    int tileSize = 64;  // pixels; changes speed only
+};
+
+// What the preview computed per pixel, top row first.
+struct PreviewImage {
+    Film film;                       // the chosen mode's colours, linear (PNG output applies sRGB)
+    std::vector<float> depth;        // view-axis distance; +infinity where no geometry
+    std::vector<uint32_t> objectId;  // 0 where no geometry
+};
+
+PreviewImage renderPreview(const RenderScene &scene, const PreviewOptions &options);
+
+// The colour the `id` mode gives an object id: well spread, stable, 0 black.
+Vec3f objectIdColor(uint32_t id);
+
+}  // namespace veduta
