@@ -2,21 +2,22 @@
 # veduta set-up on Debian 12: installs the Debian packages that are missing, builds, and then
 #   ./setup.sh         renders the built-in default scene to renders/default.exr and .png
 #   ./setup.sh test    builds with the tests and runs the whole suite through ctest
+#   ./setup.sh stills  renders the publication stills of every example scene to renders/stills/
 # Run it as root or as a user who may use sudo (only apt-get needs it).
 set -euo pipefail
 cd "$(dirname "$0")"
 
 mode=${1:-render}
 case "$mode" in
-    render | test) ;;
-    *) echo "usage: $0 [render|test]" >&2; exit 2 ;;
+    render | test | stills) ;;
+    *) echo "usage: $0 [render|test|stills]" >&2; exit 2 ;;
 esac
 
 packages=(
     cmake g++ make pkg-config ccache time
     libembree-dev libopenimageio-dev openimageio-tools libopenexr-dev libopencolorio-dev
     libgeographiclib-dev libcgal-dev libgdal-dev libtbb-dev libpugixml-dev libcli11-dev
-    libgtest-dev libbenchmark-dev libspdlog-dev libfmt-dev libassimp-dev libboost-dev libpng-dev
+    libgtest-dev libbenchmark-dev libspdlog-dev libfmt-dev libassimp-dev libboost-dev libpng-dev libosmesa6-dev
 )
 missing=()
 for p in "${packages[@]}"; do
@@ -36,6 +37,14 @@ if [ "$mode" = render ]; then
     cmake --build --preset release -j "$jobs"
     build/release/src/veduta render -o renders/default.exr --png renders/default.png
     echo "setup: wrote renders/default.exr and renders/default.png"
+elif [ "$mode" = stills ]; then
+    cmake --preset release
+    cmake --build --preset release -j "$jobs"
+    find scenes -name '*.xml' | sort | while read -r scene; do
+        name=$(echo "${scene#scenes/}" | sed 's/\.xml$//; s|/|_|g')
+        build/release/src/veduta render "$scene" --res 960x540 --spp 256 --max-depth 8 \
+            -o "build/stills/$name.exr" --png "renders/stills/$name.png"
+    done
 else
     cmake --preset test
     cmake --build --preset test -j "$jobs"

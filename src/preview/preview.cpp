@@ -18,6 +18,7 @@ namespace {
 constexpr float kNear = 0.05f;  // metres in front of the eye; nearer geometry is clipped
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 constexpr uint32_t kNoItem = ~0u;
+constexpr uint32_t kBackFacing = 1u << 31;
 // Items whose screen box spans more tiles than this share one transformed copy of their
 // vertices; smaller ones are transformed per tile, which costs less than the shared copy's memory.
 constexpr int kSharedVerticesTileCount = 4;
@@ -69,22 +70,38 @@ struct DrawItem {
     MaterialId materialOverride;
     ObjectId objectId;
     int x0, y0, x1, y1;  // tiles it may touch, inclusive
-};
-
-// What a pixel shows after rasterization: which triangle, where on it, how far.
-struct Fragments {
-    std::vector<float> depth;
-    std::vector<uint32_t> item, triangle;
-    std::vector<float> b1, b2;      // barycentrics of the triangle's vertices 1 and 2
-    std::vector<float> edgePixels;  // distance to the nearest edge of that triangle, for wireframes
-
-    explicit Fragments(size_t n) : depth(n, kInfinity), item(n, kNoItem), triangle(n, 0), b1(n, 0), b2(n, 0), edgePixels(n, kInfinity) {}
+    bool mirrored;       // the transform turns windings around
 };
 
 // A vertex in camera space and, when it lies beyond the near plane, on the raster.
 struct CameraVertex {
     Vec3f p;
     float x = 0, y = 0, invZ = 0;
+};
+
+// What each pixel of one tile shows after rasterization: which triangle, where on it, how
+// near. Kept per tile, so that it stays in cache and costs no full-image memory.
+struct TileFragments {
+    std::vector<float> invDepth;  // 1 / view-axis distance; 0 where nothing was drawn
+    std::vector<uint32_t> item;
+    std::vector<uint32_t> triangle;  // with kBackFacing set when its back is towards the camera
+    std::vector<float> b1, b2;       // barycentrics of the triangle's vertices 1 and 2
+    std::vector<float> edgePixels;  // distance to the nearest edge of that triangle, for wireframes
+
+    void reset(size_t n) {
+        invDepth.assign(n, 0.0f);
+        item.resize(n);
+        triangle.resize(n);
+        b1.resize(n);
+        b2.resize(n);
+        edgePixels.resize(n);
+    }
+};
+
+// Per-thread working memory of the tile loop.
+struct TileScratch {
+    std::vector<CameraVertex> vertices;
+    TileFragments fragments;
 };
 
 // A corner of a triangle during near-plane clipping: camera-space position and its
@@ -109,17 +126,21 @@ class Rasterizer {
     Rasterizer(const RenderScene &scene, const PreviewOptions &options)
         : scene_(scene), options_(options), projection_(scene.camera), width_(scene.camera.width),
           height_(scene.camera.height), tilesX_((width_ + options.tileSize - 1) / options.tileSize),
-          tilesY_((height_ + options.tileSize - 1) / options.tileSize), fragments_(size_t(width_) * size_t(height_)) {
+          tilesY_((height_ + options.tileSize - 1) / options.tileSize) {
         collectItems();
         binItems();
     }
 
-    PreviewImage run() {
+    void run(PreviewImage &image) {
         tbb::parallel_for(tbb::blocked_range<size_t>(0, bins_.size(), 1), [&](const tbb::blocked_range<size_t> &r) {
-            std::vector<CameraVertex> scratch;
-            for (size_t t = r.begin(); t != r.end(); ++t) rasterizeTile(t, scratch);
+            TileScratch scratch;
+            for (size_t t = r.begin(); t != r.end(); ++t) {
+                Tile tile = tileRect(t);
+                scratch.fragments.reset(size_t(tile.x1 - tile.x0) * size_t(tile.y1 - tile.y0));
+                rasterizeTile(t, tile, scratch);
+                shadeTile(tile, scratch.fragments, image);
+            }
         }, tbb::simple_partitioner());
-        return shade();
     }
 
   private:
@@ -149,6 +170,8 @@ class Rasterizer {
                 continue;
             }
             anyInFront = true;
+            depthNear_ = std::min(depthNear_, p.z);
+            depthFar_ = std::max(depthFar_, p.z);
             float x = projection_.rasterX(p), y = projection_.rasterY(p);
             minX = std::min(minX, x), maxX = std::max(maxX, x), minY = std::min(minY, y), maxY = std::max(maxY, y);
         }
@@ -163,7 +186,8 @@ class Rasterizer {
                       std::clamp(int(std::floor(std::max(minX, 0.0f))) / ts, 0, tilesX_ - 1),
                       std::clamp(int(std::floor(std::max(minY, 0.0f))) / ts, 0, tilesY_ - 1),
                       std::clamp(int(std::min(maxX, float(width_))) / ts, 0, tilesX_ - 1),
-                      std::clamp(int(std::min(maxY, float(height_))) / ts, 0, tilesY_ - 1)};
+                      std::clamp(int(std::min(maxY, float(height_))) / ts, 0, tilesY_ - 1),
+                      objectToWorld.determinant() < 0};
         items_.push_back(item);
     }
 
@@ -208,20 +232,19 @@ class Rasterizer {
         return sharedVertices_[i];
     }
 
-    void rasterizeTile(size_t t, std::vector<CameraVertex> &scratch) {
-        Tile tile = tileRect(t);
+    void rasterizeTile(size_t t, const Tile &tile, TileScratch &scratch) {
         // Pixel centres lie at +0.5: a triangle reaches into the tile only past these bounds.
         float left = float(tile.x0) + 0.5f, right = float(tile.x1) - 0.5f;
         float top = float(tile.y0) + 0.5f, bottom = float(tile.y1) - 0.5f;
         for (uint32_t i : bins_[t]) {
-            const std::vector<CameraVertex> &v = cameraVertices(i, scratch);
+            const std::vector<CameraVertex> &v = cameraVertices(i, scratch.vertices);
             const Mesh &mesh = *items_[i].mesh;
             for (uint32_t tri = 0; tri < mesh.triangleCount(); ++tri) {
                 const uint32_t *idx = &mesh.indices[3 * size_t(tri)];
                 const CameraVertex &a = v[idx[0]], &b = v[idx[1]], &c = v[idx[2]];
                 if (a.p.z < kNear || b.p.z < kNear || c.p.z < kNear) {
                     ClipVertex clip[3] = {{a.p, {1, 0, 0}}, {b.p, {0, 1, 0}}, {c.p, {0, 0, 1}}};
-                    drawClipped(clip, tile, i, tri);
+                    drawClipped(clip, tile, scratch.fragments, i, tri);
                     continue;
                 }
                 // Most triangles of a detailed mesh miss a given tile: reject them before setup.
@@ -231,13 +254,13 @@ class Rasterizer {
                 }
                 RasterVertex r[3] = {{a.x, a.y, a.invZ, {1, 0, 0}}, {b.x, b.y, b.invZ, {0, 1, 0}},
                                      {c.x, c.y, c.invZ, {0, 0, 1}}};
-                rasterize(r, tile, i, tri);
+                rasterize(r, tile, scratch.fragments, i, tri);
             }
         }
     }
 
     // Clips a triangle against the near plane (into at most two) and rasterizes the rest.
-    void drawClipped(const ClipVertex (&c)[3], const Tile &tile, uint32_t item, uint32_t tri) {
+    void drawClipped(const ClipVertex (&c)[3], const Tile &tile, TileFragments &f, uint32_t item, uint32_t tri) {
         int behind = (c[0].p.z < kNear) + (c[1].p.z < kNear) + (c[2].p.z < kNear);
         if (behind == 3) return;
         ClipVertex poly[4];
@@ -254,13 +277,13 @@ class Rasterizer {
         for (int k = 1; k + 1 < n; ++k) {
             RasterVertex fan[3] = {project(poly[0].p, poly[0].bary), project(poly[k].p, poly[k].bary),
                                    project(poly[k + 1].p, poly[k + 1].bary)};
-            rasterize(fan, tile, item, tri);
+            rasterize(fan, tile, f, item, tri);
         }
     }
 
     // Edge functions at pixel centres over the triangle's box within the tile. Depth and
     // barycentrics are interpolated perspective-correctly through 1/z.
-    void rasterize(const RasterVertex (&c)[3], const Tile &tile, uint32_t item, uint32_t tri) {
+    void rasterize(const RasterVertex (&c)[3], const Tile &tile, TileFragments &f, uint32_t item, uint32_t tri) {
         const float x[3] = {c[0].x, c[1].x, c[2].x}, y[3] = {c[0].y, c[1].y, c[2].y};
         const float invZ[3] = {c[0].invZ, c[1].invZ, c[2].invZ};
         // Pixels whose centres the triangle's box holds; clamped in float first, because a
@@ -275,7 +298,9 @@ class Rasterizer {
         float area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
         if (area == 0 || !std::isfinite(area)) return;
         // Raster y points down, so counter-clockwise seen from the front has negative area.
-        if (options_.backfaceCulling && area > 0) return;
+        bool backFacing = area > 0;
+        if (options_.backfaceCulling && backFacing) return;
+        uint32_t triangleWord = tri | (backFacing ? kBackFacing : 0u);
 
         float sign = area > 0 ? 1.0f : -1.0f, invArea = 1.0f / std::abs(area);
         // Edge k is opposite vertex k: e_k(p) = (b - a) × (p - a) with a, b the other two. It is
@@ -297,26 +322,27 @@ class Rasterizer {
                 float e[3] = {row[0] - dyEdge[0] * (cx - x[a0]), row[1] - dyEdge[1] * (cx - x[a1]),
                               row[2] - dyEdge[2] * (cx - x[a2])};
                 if (e[0] < 0 || e[1] < 0 || e[2] < 0) continue;
-                // Screen-space weights, then perspective-correct ones.
-                float w0 = e[0] * invArea * invZ[0], w1 = e[1] * invArea * invZ[1], w2 = e[2] * invArea * invZ[2];
-                float sum = w0 + w1 + w2;
-                float depth = 1.0f / sum;
-                size_t p = size_t(py) * size_t(width_) + size_t(px);
-                if (!(depth < fragments_.depth[p])) continue;
-                float s0 = w0 * depth, s1 = w1 * depth, s2 = w2 * depth;
-                fragments_.depth[p] = depth;
-                fragments_.item[p] = item;
-                fragments_.triangle[p] = tri;
-                fragments_.b1[p] = s0 * c[0].bary.y + s1 * c[1].bary.y + s2 * c[2].bary.y;
-                fragments_.b2[p] = s0 * c[0].bary.z + s1 * c[1].bary.z + s2 * c[2].bary.z;
+                // 1/z is affine on the raster: test it before paying for a division.
+                float w0 = e[0] * invZ[0], w1 = e[1] * invZ[1], w2 = e[2] * invZ[2];
+                float invDepth = (w0 + w1 + w2) * invArea;
+                size_t p = size_t(py - tile.y0) * size_t(tile.x1 - tile.x0) + size_t(px - tile.x0);
+                if (!(invDepth > f.invDepth[p])) continue;
+                // Perspective-correct weights of the three corners.
+                float norm = 1.0f / (w0 + w1 + w2);
+                float s0 = w0 * norm, s1 = w1 * norm, s2 = w2 * norm;
+                f.invDepth[p] = invDepth;
+                f.item[p] = item;
+                f.triangle[p] = triangleWord;
+                f.b1[p] = s0 * c[0].bary.y + s1 * c[1].bary.y + s2 * c[2].bary.y;
+                f.b2[p] = s0 * c[0].bary.z + s1 * c[1].bary.z + s2 * c[2].bary.z;
                 if (options_.wireframe) {
-                    fragments_.edgePixels[p] = std::min({e[0] * invLength[0], e[1] * invLength[1], e[2] * invLength[2]});
+                    f.edgePixels[p] = std::min({e[0] * invLength[0], e[1] * invLength[1], e[2] * invLength[2]});
                 }
             }
         }
     }
 
-    PreviewImage shade();
+    void shadeTile(const Tile &tile, const TileFragments &f, PreviewImage &image) const;
 
     const RenderScene &scene_;
     const PreviewOptions &options_;
@@ -326,69 +352,59 @@ class Rasterizer {
     std::vector<std::vector<uint32_t>> bins_;
     std::vector<std::vector<CameraVertex>> sharedVertices_;
     std::unique_ptr<std::once_flag[]> sharedOnce_;
-    Fragments fragments_;
+    // The depth mode's grey ramp spans the depths of the drawn objects' boxes.
+    float depthNear_ = kInfinity, depthFar_ = kNear;
 };
 
-// Where the visible geometry is, for the depth mode's grey ramp.
-std::pair<float, float> depthRange(const std::vector<float> &depth) {
-    float nearest = kInfinity, farthest = 0;
-    for (float d : depth) {
-        if (d == kInfinity) continue;
-        nearest = std::min(nearest, d);
-        farthest = std::max(farthest, d);
-    }
-    return {nearest, farthest};
-}
-
-PreviewImage Rasterizer::shade() {
-    PreviewImage image{Film(width_, height_), {}, std::vector<uint32_t>(fragments_.depth.size(), 0)};
-    auto [nearest, farthest] = depthRange(fragments_.depth);
+void Rasterizer::shadeTile(const Tile &tile, const TileFragments &f, PreviewImage &image) const {
     const Sun &sun = scene_.sun;
     Vec3f sky = scene_.environment.radiance;
-    tbb::parallel_for(tbb::blocked_range<int>(0, height_, 8), [&](const tbb::blocked_range<int> &rows) {
-        for (int y = rows.begin(); y != rows.end(); ++y) {
-            for (int x = 0; x < width_; ++x) {
-                size_t p = size_t(y) * size_t(width_) + size_t(x);
-                uint32_t i = fragments_.item[p];
-                if (i == kNoItem) {
-                    image.film.set(x, y, options_.mode == PreviewMode::Shaded ? sky : Vec3f(0.0f));
-                    continue;
-                }
-                const DrawItem &item = items_[i];
-                const Mesh &mesh = *item.mesh;
-                uint32_t tri = fragments_.triangle[p];
-                const uint32_t *idx = &mesh.indices[3 * size_t(tri)];
-                float b1 = fragments_.b1[p], b2 = fragments_.b2[p], b0 = 1 - b1 - b2;
-                Vec3f world = item.objectToWorld.applyPoint(mesh.positions[idx[0]] * b0 + mesh.positions[idx[1]] * b1 +
-                                                            mesh.positions[idx[2]] * b2);
-                Vec3f n = mesh.normals.empty()
-                              ? cross(mesh.positions[idx[1]] - mesh.positions[idx[0]], mesh.positions[idx[2]] - mesh.positions[idx[0]])
-                              : mesh.normals[idx[0]] * b0 + mesh.normals[idx[1]] * b1 + mesh.normals[idx[2]] * b2;
-                n = normalize(item.normalToWorld.applyVector(n));
-                n = faceForward(n, projection_.eye - world);  // surfaces are two-sided
-                MaterialId m = item.materialOverride != kNoMaterial ? item.materialOverride : mesh.triangleMaterials[tri];
-                Vec3f albedo = scene_.materials[m].diffuse;
-
-                Vec3f color;
-                switch (options_.mode) {
-                case PreviewMode::Shaded:
-                    color = albedo * kInvPi * sun.irradiance * std::max(0.0f, dot(n, sun.direction)) + albedo * sky;
-                    break;
-                case PreviewMode::Albedo: color = albedo; break;
-                case PreviewMode::Normal: color = n * 0.5f + Vec3f(0.5f); break;
-                case PreviewMode::Depth:
-                    color = Vec3f(farthest > nearest ? (farthest - fragments_.depth[p]) / (farthest - nearest) : 1.0f);
-                    break;
-                case PreviewMode::Id: color = objectIdColor(item.objectId); break;
-                }
-                if (options_.wireframe && fragments_.edgePixels[p] < 0.75f) color = Vec3f(0.02f);
-                image.film.set(x, y, color);
-                image.objectId[p] = item.objectId;
+    Vec3f background = options_.mode == PreviewMode::Shaded ? sky : Vec3f(0.0f);
+    size_t p = 0;
+    for (int y = tile.y0; y < tile.y1; ++y) {
+        for (int x = tile.x0; x < tile.x1; ++x, ++p) {
+            size_t out = size_t(y) * size_t(width_) + size_t(x);
+            if (f.invDepth[p] == 0) {
+                image.film.set(x, y, background);
+                image.depth[out] = kInfinity;
+                image.objectId[out] = 0;
+                continue;
             }
+            const DrawItem &item = items_[f.item[p]];
+            const Mesh &mesh = *item.mesh;
+            uint32_t tri = f.triangle[p] & ~kBackFacing;
+            const uint32_t *idx = &mesh.indices[3 * size_t(tri)];
+            float b1 = f.b1[p], b2 = f.b2[p], b0 = 1 - b1 - b2;
+            Vec3f n = mesh.normals.empty()
+                          ? cross(mesh.positions[idx[1]] - mesh.positions[idx[0]], mesh.positions[idx[2]] - mesh.positions[idx[0]])
+                          : mesh.normals[idx[0]] * b0 + mesh.normals[idx[1]] * b1 + mesh.normals[idx[2]] * b2;
+            n = normalize(item.normalToWorld.applyVector(n));
+            // Surfaces are two-sided. As in the path tracer, the side seen is decided by the
+            // triangle's winding, and a smooth normal follows it.
+            if (((f.triangle[p] & kBackFacing) != 0) != item.mirrored) n = -n;
+            MaterialId m = item.materialOverride != kNoMaterial ? item.materialOverride : mesh.triangleMaterials[tri];
+            Vec3f albedo = scene_.materials[m].diffuse;
+
+            Vec3f color;
+            switch (options_.mode) {
+            case PreviewMode::Shaded:
+                color = albedo * kInvPi * sun.irradiance * std::max(0.0f, dot(n, sun.direction)) + albedo * sky;
+                break;
+            case PreviewMode::Albedo: color = albedo; break;
+            case PreviewMode::Normal: color = n * 0.5f + Vec3f(0.5f); break;
+            case PreviewMode::Depth: {
+                float d = 1.0f / f.invDepth[p];
+                color = Vec3f(std::clamp((depthFar_ - d) / (depthFar_ - depthNear_), 0.0f, 1.0f));
+                break;
+            }
+            case PreviewMode::Id: color = objectIdColor(item.objectId); break;
+            }
+            if (options_.wireframe && f.edgePixels[p] < 0.75f) color = Vec3f(0.02f);
+            image.film.set(x, y, color);
+            image.depth[out] = 1.0f / f.invDepth[p];
+            image.objectId[out] = item.objectId;
         }
-    });
-    image.depth = std::move(fragments_.depth);
-    return image;
+    }
 }
 
 }  // namespace
@@ -401,8 +417,18 @@ Vec3f objectIdColor(uint32_t id) {
             0.1f + 0.9f * float((h >> 16) & 0xffu) / 255.0f};
 }
 
+void renderPreview(const RenderScene &scene, const PreviewOptions &options, PreviewImage &image) {
+    int w = scene.camera.width, h = scene.camera.height;
+    if (image.film.width() != w || image.film.height() != h) image.film = Film(w, h);
+    image.depth.resize(size_t(w) * size_t(h));
+    image.objectId.resize(size_t(w) * size_t(h));
+    Rasterizer(scene, options).run(image);
+}
+
 PreviewImage renderPreview(const RenderScene &scene, const PreviewOptions &options) {
-    return Rasterizer(scene, options).run();
+    PreviewImage image{Film(0, 0), {}, {}};
+    renderPreview(scene, options, image);
+    return image;
 }
 
 }  // namespace veduta

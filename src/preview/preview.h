@@ -36,6 +36,9 @@ struct PreviewImage {
 };
 
 PreviewImage renderPreview(const RenderScene &scene, const PreviewOptions &options);
+// The same into an image from an earlier call, reusing its memory (for interactive use and
+// benchmarks that draw many frames).
+void renderPreview(const RenderScene &scene, const PreviewOptions &options, PreviewImage &image);
 
 // The colour the `id` mode gives an object id: well spread, stable, 0 black.
 Vec3f objectIdColor(uint32_t id);

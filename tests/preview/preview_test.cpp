@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -44,7 +45,9 @@ TEST(Preview, ObjectIdsAgreeWithThePathTracerInEveryExampleScene) {
         ASSERT_EQ(traced.size(), drawn.size());
         size_t same = 0;
         for (size_t i = 0; i < traced.size(); ++i) same += traced[i] == drawn[i];
-        EXPECT_GE(double(same) / double(traced.size()), 0.995) << same << " of " << traced.size();
+        double agreement = double(same) / double(traced.size());
+        std::printf("%s: object ids agree on %.3f %% of %zu pixels\n", file.filename().c_str(), 100 * agreement, traced.size());
+        EXPECT_GE(agreement, 0.995) << same << " of " << traced.size();
     }
 }
 
