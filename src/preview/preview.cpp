@@ -321,7 +321,7 @@ class Rasterizer {
                 float cx = float(px) + 0.5f;
                 float e[3] = {row[0] - dyEdge[0] * (cx - x[a0]), row[1] - dyEdge[1] * (cx - x[a1]),
                               row[2] - dyEdge[2] * (cx - x[a2])};
-                if (e[0] < 0 || e[1] < 0 || e[2] < 0) continue;
+                if (std::min(std::min(e[0], e[1]), e[2]) < 0) continue;  // one branch, not three
                 // 1/z is affine on the raster: test it before paying for a division.
                 float w0 = e[0] * invZ[0], w1 = e[1] * invZ[1], w2 = e[2] * invZ[2];
                 float invDepth = (w0 + w1 + w2) * invArea;
@@ -343,6 +343,7 @@ class Rasterizer {
     }
 
     void shadeTile(const Tile &tile, const TileFragments &f, PreviewImage &image) const;
+    Vec3f surfaceColor(const DrawItem &item, uint32_t triangleWord, float b1, float b2, float invDepth) const;
 
     const RenderScene &scene_;
     const PreviewOptions &options_;
@@ -356,10 +357,42 @@ class Rasterizer {
     float depthNear_ = kInfinity, depthFar_ = kNear;
 };
 
+Vec3f Rasterizer::surfaceColor(const DrawItem &item, uint32_t triangleWord, float b1, float b2, float invDepth) const {
+    const Mesh &mesh = *item.mesh;
+    uint32_t tri = triangleWord & ~kBackFacing;
+    const uint32_t *idx = &mesh.indices[3 * size_t(tri)];
+    float b0 = 1 - b1 - b2;
+    Vec3f n = mesh.normals.empty()
+                  ? cross(mesh.positions[idx[1]] - mesh.positions[idx[0]], mesh.positions[idx[2]] - mesh.positions[idx[0]])
+                  : mesh.normals[idx[0]] * b0 + mesh.normals[idx[1]] * b1 + mesh.normals[idx[2]] * b2;
+    n = normalize(item.normalToWorld.applyVector(n));
+    // Surfaces are two-sided. As in the path tracer, the side seen is decided by the
+    // triangle's winding, and a smooth normal follows it.
+    if (((triangleWord & kBackFacing) != 0) != item.mirrored) n = -n;
+    MaterialId m = item.materialOverride != kNoMaterial ? item.materialOverride : mesh.triangleMaterials[tri];
+    Vec3f albedo = scene_.materials[m].diffuse;
+
+    switch (options_.mode) {
+    case PreviewMode::Shaded: {
+        const Sun &sun = scene_.sun;
+        return albedo * kInvPi * sun.irradiance * std::max(0.0f, dot(n, sun.direction)) + albedo * scene_.environment.radiance;
+    }
+    case PreviewMode::Albedo: return albedo;
+    case PreviewMode::Normal: return n * 0.5f + Vec3f(0.5f);
+    case PreviewMode::Depth:
+        return Vec3f(std::clamp((depthFar_ - 1.0f / invDepth) / (depthFar_ - depthNear_), 0.0f, 1.0f));
+    case PreviewMode::Id: return objectIdColor(item.objectId);
+    }
+    return {};
+}
+
 void Rasterizer::shadeTile(const Tile &tile, const TileFragments &f, PreviewImage &image) const {
-    const Sun &sun = scene_.sun;
-    Vec3f sky = scene_.environment.radiance;
-    Vec3f background = options_.mode == PreviewMode::Shaded ? sky : Vec3f(0.0f);
+    Vec3f background = options_.mode == PreviewMode::Shaded ? scene_.environment.radiance : Vec3f(0.0f);
+    // A flat triangle has one colour all over (except in depth mode): neighbouring pixels of
+    // the same one reuse it.
+    bool reuseFlat = options_.mode != PreviewMode::Depth;
+    uint32_t lastItem = kNoItem, lastTriangle = 0;
+    Vec3f lastColor;
     size_t p = 0;
     for (int y = tile.y0; y < tile.y1; ++y) {
         for (int x = tile.x0; x < tile.x1; ++x, ++p) {
@@ -371,33 +404,15 @@ void Rasterizer::shadeTile(const Tile &tile, const TileFragments &f, PreviewImag
                 continue;
             }
             const DrawItem &item = items_[f.item[p]];
-            const Mesh &mesh = *item.mesh;
-            uint32_t tri = f.triangle[p] & ~kBackFacing;
-            const uint32_t *idx = &mesh.indices[3 * size_t(tri)];
-            float b1 = f.b1[p], b2 = f.b2[p], b0 = 1 - b1 - b2;
-            Vec3f n = mesh.normals.empty()
-                          ? cross(mesh.positions[idx[1]] - mesh.positions[idx[0]], mesh.positions[idx[2]] - mesh.positions[idx[0]])
-                          : mesh.normals[idx[0]] * b0 + mesh.normals[idx[1]] * b1 + mesh.normals[idx[2]] * b2;
-            n = normalize(item.normalToWorld.applyVector(n));
-            // Surfaces are two-sided. As in the path tracer, the side seen is decided by the
-            // triangle's winding, and a smooth normal follows it.
-            if (((f.triangle[p] & kBackFacing) != 0) != item.mirrored) n = -n;
-            MaterialId m = item.materialOverride != kNoMaterial ? item.materialOverride : mesh.triangleMaterials[tri];
-            Vec3f albedo = scene_.materials[m].diffuse;
-
             Vec3f color;
-            switch (options_.mode) {
-            case PreviewMode::Shaded:
-                color = albedo * kInvPi * sun.irradiance * std::max(0.0f, dot(n, sun.direction)) + albedo * sky;
-                break;
-            case PreviewMode::Albedo: color = albedo; break;
-            case PreviewMode::Normal: color = n * 0.5f + Vec3f(0.5f); break;
-            case PreviewMode::Depth: {
-                float d = 1.0f / f.invDepth[p];
-                color = Vec3f(std::clamp((depthFar_ - d) / (depthFar_ - depthNear_), 0.0f, 1.0f));
-                break;
-            }
-            case PreviewMode::Id: color = objectIdColor(item.objectId); break;
+            if (reuseFlat && f.item[p] == lastItem && f.triangle[p] == lastTriangle) {
+                color = lastColor;
+            } else {
+                color = surfaceColor(item, f.triangle[p], f.b1[p], f.b2[p], f.invDepth[p]);
+                bool flat = item.mesh->normals.empty();
+                lastItem = flat ? f.item[p] : kNoItem;
+                lastTriangle = f.triangle[p];
+                lastColor = color;
             }
             if (options_.wireframe && f.edgePixels[p] < 0.75f) color = Vec3f(0.02f);
             image.film.set(x, y, color);
