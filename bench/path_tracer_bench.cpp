@@ -20,6 +20,7 @@
 #include <xmmintrin.h>
 
 #include "app/scene_loading.h"
+#include "median_reporter.h"
 #include "render/embree_util.h"
 #include "render/renderer.h"
 #include "render/sampling.h"
@@ -115,36 +116,21 @@ void BM_EmbreeIncoherentIntersect1(benchmark::State &state) {
 BENCHMARK(BM_PathTracerRays)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->MinTime(1.0);
 BENCHMARK(BM_EmbreeIncoherentIntersect1)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->MinTime(1.0);
 
-// Keeps the console output and remembers each benchmark's median rays/s.
-class RatioReporter : public benchmark::ConsoleReporter {
-  public:
-    void ReportRuns(const std::vector<Run> &runs) override {
-        ConsoleReporter::ReportRuns(runs);
-        for (const Run &run : runs) {
-            bool median = run.run_type == Run::RT_Aggregate && run.aggregate_name == "median";
-            bool single = run.run_type == Run::RT_Iteration && run.repetitions <= 1;
-            if (!median && !single) continue;
-            auto it = run.counters.find("rays_per_second");
-            if (it != run.counters.end()) rates[{run.run_name.function_name, run.run_name.args}] = it->second.value;
-        }
-    }
-    std::map<std::pair<std::string, std::string>, double> rates;  // (benchmark, scene argument)
-};
-
 }  // namespace
 }  // namespace veduta
 
 int main(int argc, char **argv) {
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-    veduta::RatioReporter reporter;
+    veduta::MedianReporter reporter;
     benchmark::RunSpecifiedBenchmarks(&reporter);
-    auto &r = reporter.rates;
-    for (const char *scene : {"0", "1"}) {
-        auto pt = r.find({"BM_PathTracerRays", scene}), raw = r.find({"BM_EmbreeIncoherentIntersect1", scene});
-        if (pt == r.end() || raw == r.end()) continue;
+    for (const std::string scene : {"0", "1"}) {
+        const auto *traced = reporter.find("BM_PathTracerRays/" + scene);
+        const auto *raw = reporter.find("BM_EmbreeIncoherentIntersect1/" + scene);
+        if (!traced || !raw) continue;
+        double pt = traced->counters.at("rays_per_second"), embree = raw->counters.at("rays_per_second");
         std::printf("\nscene %s: path tracer %.3f Mrays/s, raw Embree incoherent rtcIntersect1 %.3f Mrays/s, ratio %.1f %%",
-                    scene, pt->second * 1e-6, raw->second * 1e-6, 100.0 * pt->second / raw->second);
+                    scene.c_str(), pt * 1e-6, embree * 1e-6, 100.0 * pt / embree);
     }
     std::printf("\n");
     benchmark::Shutdown();

@@ -24,6 +24,7 @@
 #include <tbb/task_arena.h>
 
 #include "app/scene_loading.h"
+#include "median_reporter.h"
 #include "osmesa_renderer.h"
 #include "preview/preview.h"
 #include "render/film_output.h"
@@ -136,20 +137,6 @@ void BM_OsMesa(benchmark::State &state, BenchScene *b) {
     state.counters["triangles"] = double(b->get().effectiveTriangleCount());
 }
 
-// Keeps the console output and remembers each benchmark's median (or only) frame time in ms.
-class RatioReporter : public benchmark::ConsoleReporter {
-  public:
-    void ReportRuns(const std::vector<Run> &runs) override {
-        ConsoleReporter::ReportRuns(runs);
-        for (const Run &run : runs) {
-            bool median = run.run_type == Run::RT_Aggregate && run.aggregate_name == "median";
-            bool single = run.run_type == Run::RT_Iteration && run.repetitions <= 1;
-            if (median || single) milliseconds[run.run_name.function_name] = run.GetAdjustedRealTime();
-        }
-    }
-    std::map<std::string, double> milliseconds;  // by benchmark name, e.g. "BM_OsMesa/default"
-};
-
 int srgb8(float linear) { return int(std::lround(linearToSrgb(linear) * 255.0f)); }
 
 // The share of pixels where some channel differs by more than 8 in 8-bit sRGB, as the PNGs
@@ -224,14 +211,15 @@ int main(int argc, char **argv) {
             ->Unit(benchmark::kMillisecond)
             ->UseRealTime();
     }
-    RatioReporter reporter;
+    MedianReporter reporter;
     benchmark::RunSpecifiedBenchmarks(&reporter);
 
     bool describedGl = false;
     for (BenchScene &b : gScenes) {
-        auto &ms = reporter.milliseconds;
-        auto preview = ms.find(std::string("BM_Preview/") + b.name), gl = ms.find(std::string("BM_OsMesa/") + b.name);
-        if (preview == ms.end() || gl == ms.end()) continue;
+        const auto *previewRun = reporter.find(std::string("BM_Preview/") + b.name);
+        const auto *glRun = reporter.find(std::string("BM_OsMesa/") + b.name);
+        if (!previewRun || !glRun) continue;
+        double previewMs = previewRun->GetAdjustedRealTime(), glMs = glRun->GetAdjustedRealTime();
         if (!describedGl) {
             std::printf("\nllvmpipe: %s, LP_NUM_THREADS=%d; preview: TBB arena of %d\n",
                         b.renderer().description().c_str(), kThreads, kThreads);
@@ -240,7 +228,7 @@ int main(int argc, char **argv) {
         std::printf("scene %s (%llu triangles, %dx%d): preview %.2f ms, llvmpipe %.2f ms, "
                     "ratio preview/llvmpipe %.2f\n",
                     b.name, static_cast<unsigned long long>(b.get().effectiveTriangleCount()), b.get().camera.width,
-                    b.get().camera.height, preview->second, gl->second, preview->second / gl->second);
+                    b.get().camera.height, previewMs, glMs, previewMs / glMs);
         compareImages(b, imageFolder);
     }
     // Contexts go before exit, while llvmpipe's threads are still there to be joined.

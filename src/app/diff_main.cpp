@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.h"
+#include "app/run_guarded.h"
 #include "app/version.h"
 
 int main(int argc, char **argv) {
@@ -12,13 +13,5 @@ int main(int argc, char **argv) {
     app.require_subcommand(1);
     int exitCode = veduta::kExitOk;
     veduta::addDiffCommand(app, exitCode);
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::Success &e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError &e) {
-        app.exit(e);
-        return veduta::kExitBadUsage;
-    }
-    return exitCode;
+    return veduta::runApp(app, argc, argv, exitCode);
 }

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.h"
+#include "app/run_guarded.h"
 #include "app/version.h"
 
 int main(int argc, char **argv) {
@@ -16,13 +17,5 @@ int main(int argc, char **argv) {
     // Listed here for --help; it runs as its own program (runDiffProgram above).
     app.add_subcommand("diff", "Compare two images and say whether they agree (see veduta diff --help)");
     veduta::addInfoCommand(app, exitCode);
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::Success &e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError &e) {
-        app.exit(e);
-        return veduta::kExitBadUsage;
-    }
-    return exitCode;
+    return veduta::runApp(app, argc, argv, exitCode);
 }

@@ -21,4 +21,16 @@ int runGuarded(const std::function<void()> &body) {
     }
 }
 
+int runApp(CLI::App &app, int argc, char **argv, const int &exitCode) {
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::Success &e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError &e) {
+        app.exit(e);
+        return kExitBadUsage;
+    }
+    return exitCode;
+}
+
 }  // namespace veduta

@@ -5,18 +5,7 @@ set -u
 veduta=$1 data=$2 source=$3
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-passed=0 failed=0
-
-check() {  # check NAME COMMAND...: passes when COMMAND succeeds
-    local name=$1; shift
-    if "$@"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAILED: $name"; fi
-}
-
-# Runs veduta, keeping stdout, stderr and the exit code.
-run() { "$veduta" "$@" >"$work/out" 2>"$work/err"; echo $? >"$work/rc"; }
-rc_is() { [ "$(cat "$work/rc")" = "$1" ] || { echo "exit code $(cat "$work/rc"), expected $1"; cat "$work/err"; false; }; }
-err_has() { grep -qF -- "$1" "$work/err" || { echo "stderr lacks '$1':"; cat "$work/err"; false; }; }
-out_has() { grep -qF -- "$1" "$work/out" || { echo "stdout lacks '$1':"; cat "$work/out"; false; }; }
+. "$(dirname "$0")/test_lib.sh"
 
 for sub in "" render info; do
     run $sub --help
@@ -114,5 +103,4 @@ XML
 run render "$work/meshes.xml" -q -o "$work/meshes.exr"
 check "mesh scene renders" rc_is 0
 
-echo "cli: $passed passed, $failed failed"
-[ "$failed" = 0 ]
+summary cli

@@ -6,18 +6,7 @@ set -u
 veduta=$1
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-passed=0 failed=0
-
-check() {  # check NAME COMMAND...: passes when COMMAND succeeds
-    local name=$1; shift
-    if "$@"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAILED: $name"; fi
-}
-
-# Runs veduta, keeping stdout, stderr and the exit code.
-run() { "$veduta" "$@" >"$work/out" 2>"$work/err"; echo $? >"$work/rc"; }
-rc_is() { [ "$(cat "$work/rc")" = "$1" ] || { echo "exit code $(cat "$work/rc"), expected $1"; cat "$work/err"; false; }; }
-err_has() { grep -qF -- "$1" "$work/err" || { echo "stderr lacks '$1':"; cat "$work/err"; false; }; }
-out_has() { grep -qxF -- "$1" "$work/out" || { echo "stdout lacks the line '$1':"; cat "$work/out"; false; }; }
+. "$(dirname "$0")/test_lib.sh"
 
 fail_early() { echo "$1"; echo "diff_cli: 0 passed, 1 failed"; exit 1; }
 command -v oiiotool >/dev/null || fail_early "oiiotool is missing (Debian package openimageio-tools)"
@@ -42,7 +31,7 @@ run diff "$work/ref.exr" "$work/ref.exr"
 check "identical exits 0" rc_is 0
 for line in "pixels: 4096" "failed_pixels: 0" "mean_error: 0" "max_error: 0" "rmse: 0" "relmse: 0" "psnr_db: inf" \
     "verdict: pass"; do
-    check "identical: $line" out_has "$line"
+    check "identical: $line" out_line "$line"
 done
 
 run diff "$work/checker.png" "$work/checker.png"
@@ -50,27 +39,27 @@ check "identical PNGs exit 0" rc_is 0
 
 run diff "$work/one.exr" "$work/ref.exr"
 check "one pixel off exits 0" rc_is 0
-check "one pixel off counted" out_has "failed_pixels: 1"
-check "one pixel off: max error" out_has "max_error: 0.5"
-check "one pixel off: where" out_has "max_error_at: 10,12"
-check "one pixel off: verdict" out_has "verdict: pass"
+check "one pixel off counted" out_line "failed_pixels: 1"
+check "one pixel off: max error" out_line "max_error: 0.5"
+check "one pixel off: where" out_line "max_error_at: 10,12"
+check "one pixel off: verdict" out_line "verdict: pass"
 
 run diff "$work/block.exr" "$work/ref.exr"
 check "2% off exits 1" rc_is 1
-check "2% off counted" out_has "failed_pixels: 81"
-check "2% off: verdict" out_has "verdict: fail"
+check "2% off counted" out_line "failed_pixels: 81"
+check "2% off: verdict" out_line "verdict: fail"
 run diff "$work/block.exr" "$work/ref.exr" --failpercent 2
 check "2% off within --failpercent 2" rc_is 0
 run diff "$work/block.exr" "$work/ref.exr" --fail 0.2
 check "2% off within --fail 0.2" rc_is 0
 run diff "$work/block.exr" "$work/ref.exr" --warn 0.05 --failpercent 5
 check "warning still passes" rc_is 0
-check "warning counted" out_has "warned_pixels: 81"
+check "warning counted" out_line "warned_pixels: 81"
 check "warning on stderr" err_has "veduta: warning:"
 
 run diff "$work/block.exr" "$work/ref.exr" --metric relmse --max-relmse 0.01
 check "relmse within threshold" rc_is 0
-check "relmse metric named" out_has "metric: relmse"
+check "relmse metric named" out_line "metric: relmse"
 run diff "$work/block.exr" "$work/ref.exr" --metric relmse --max-relmse 0.0001
 check "relmse over threshold" rc_is 1
 
@@ -115,5 +104,4 @@ check "no temporary left" bash -c "! ls -a '$work/diffs' | grep -q tmp"
 run diff "$work/block.exr" "$work/ref.exr" -o "$work/diffs/diff2.png"
 check "diff image written when the images differ" test -s "$work/diffs/diff2.png"
 
-echo "diff_cli: $passed passed, $failed failed"
-[ "$failed" = 0 ]
+summary diff_cli
