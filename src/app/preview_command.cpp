@@ -25,6 +25,7 @@ struct PreviewArgs {
     unsigned threads = 0;
     bool wireframe = false;
     bool cull = false;
+    bool shadows = false;
     bool quiet = false;
 };
 
@@ -41,6 +42,7 @@ void runPreview(const PreviewArgs &args) {
     options.mode = args.mode;
     options.wireframe = args.wireframe;
     options.backfaceCulling = args.cull;
+    options.shadows = args.shadows;
     PreviewImage image = renderPreview(scene, options);
     if (std::filesystem::path(output).extension() == ".exr") {
         writeExr(image.film, output);
@@ -72,6 +74,7 @@ void addPreviewCommand(CLI::App &app, int &exitCode) {
     cmd->add_option("--threads", args->threads, "Worker threads [all cores]")->check(CLI::Range(1u, 4096u));
     cmd->add_flag("--wireframe", args->wireframe, "Draw triangle edges over the image");
     cmd->add_flag("--cull", args->cull, "Skip triangles facing away from the camera");
+    cmd->add_flag("--shadows", args->shadows, "Sun shadows from a 2048x2048 shadow map (shaded mode)");
     cmd->add_flag("-q,--quiet", args->quiet, "No summary line");
     cmd->callback([args, &exitCode] { exitCode = runGuarded([&] { runPreview(*args); }); });
 }

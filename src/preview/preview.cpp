@@ -5,11 +5,13 @@
 #include <limits>
 #include <memory>
 #include <mutex>
+#include <optional>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include "core/hash.h"
+#include "preview/shadow_map.h"
 
 namespace veduta {
 
@@ -129,6 +131,9 @@ class Rasterizer {
           tilesY_((height_ + options.tileSize - 1) / options.tileSize) {
         collectItems();
         binItems();
+        if (options.shadows && options.mode == PreviewMode::Shaded && scene.sun.enabled()) {
+            shadowMap_.emplace(scene, options.shadowMapSize);
+        }
     }
 
     void run(PreviewImage &image) {
@@ -355,6 +360,7 @@ class Rasterizer {
     std::unique_ptr<std::once_flag[]> sharedOnce_;
     // The depth mode's grey ramp spans the depths of the drawn objects' boxes.
     float depthNear_ = kInfinity, depthFar_ = kNear;
+    std::optional<ShadowMap> shadowMap_;
 };
 
 Vec3f Rasterizer::surfaceColor(const DrawItem &item, uint32_t triangleWord, float b1, float b2, float invDepth) const {
@@ -375,7 +381,15 @@ Vec3f Rasterizer::surfaceColor(const DrawItem &item, uint32_t triangleWord, floa
     switch (options_.mode) {
     case PreviewMode::Shaded: {
         const Sun &sun = scene_.sun;
-        return albedo * kInvPi * sun.irradiance * std::max(0.0f, dot(n, sun.direction)) + albedo * scene_.environment.radiance;
+        float cosine = std::max(0.0f, dot(n, sun.direction));
+        if (cosine > 0 && shadowMap_) {
+            Vec3f world = item.objectToWorld.applyPoint(mesh.positions[idx[0]] * b0 + mesh.positions[idx[1]] * b1 +
+                                                        mesh.positions[idx[2]] * b2);
+            Vec3f ng = item.normalToWorld.applyVector(
+                cross(mesh.positions[idx[1]] - mesh.positions[idx[0]], mesh.positions[idx[2]] - mesh.positions[idx[0]]));
+            if (shadowMap_->shadowed(world, normalize(ng))) cosine = 0;
+        }
+        return albedo * kInvPi * sun.irradiance * cosine + albedo * scene_.environment.radiance;
     }
     case PreviewMode::Albedo: return albedo;
     case PreviewMode::Normal: return n * 0.5f + Vec3f(0.5f);
@@ -388,9 +402,9 @@ Vec3f Rasterizer::surfaceColor(const DrawItem &item, uint32_t triangleWord, floa
 
 void Rasterizer::shadeTile(const Tile &tile, const TileFragments &f, PreviewImage &image) const {
     Vec3f background = options_.mode == PreviewMode::Shaded ? scene_.environment.radiance : Vec3f(0.0f);
-    // A flat triangle has one colour all over (except in depth mode): neighbouring pixels of
-    // the same one reuse it.
-    bool reuseFlat = options_.mode != PreviewMode::Depth;
+    // A flat triangle has one colour all over (except in depth mode and with shadows):
+    // neighbouring pixels of the same one reuse it.
+    bool reuseFlat = options_.mode != PreviewMode::Depth && !shadowMap_;
     uint32_t lastItem = kNoItem, lastTriangle = 0;
     Vec3f lastColor;
     size_t p = 0;

@@ -12,7 +12,7 @@
 namespace veduta {
 
 enum class PreviewMode {
-    Shaded,  // base colour lit by the sun (Lambert, optional shadow map) and the sky's irradiance
+    Shaded,  // base colour lit by the sun (Lambert, optionally shadowed) and the sky's irradiance
     Albedo,  // base colour
     Normal,  // shading normal, world space, mapped from [-1, 1] to [0, 1]
     Depth,   // distance along the view axis, near = white, far = black
@@ -23,8 +23,8 @@ struct PreviewOptions {
     PreviewMode mode = PreviewMode::Shaded;
     bool wireframe = false;        // draw triangle edges over the image
     bool backfaceCulling = false;  // skip triangles facing away (scenes are two-sided by default)
-    bool shadows = false;          // shadow map for the sun
-    int shadowMapSize = 2048;
+    bool shadows = false;          // sun shadows from a shadow map (shaded mode)
+    int shadowMapSize = 2048;      // texels on a side
     int tileSize = 64;  // pixels; changes speed only
 };
 

@@ -9,6 +9,7 @@
 
 #include "preview/preview.h"
 #include "render/object_ids.h"
+#include "render/renderer.h"
 #include "test_scenes.h"
 
 namespace veduta {
@@ -113,6 +114,38 @@ TEST(Preview, BackFaceCullingHidesTheInsideOfAClosedBox) {
     PreviewOptions options;
     options.backfaceCulling = true;
     for (uint32_t id : renderPreview(scene, options).objectId) ASSERT_EQ(id, 0u);
+}
+
+// The shadow map puts shadows where the path tracer finds the sun blocked: with direct light
+// only, a pixel is dark in one exactly when it is dark in the other, but for pixels along
+// shadow edges (under a tenth of the shadowed ones).
+TEST(Preview, ShadowsAgreeWithThePathTracer) {
+    RenderScene scene = test::sceneFromXml(R"(<scene>
+  <camera position="0 -2 30" look_at="0 0 0" up="0 1 0" fov="45" resolution="96 96"/>
+  <sun azimuth="120" elevation="50" irradiance="3" angular_diameter="0"/>
+  <environment radiance="0"/>
+  <render spp="4" max_depth="1"/>
+  <plane size="30 30"/>
+  <box size="3 2 1" translate="-3 2 4"/>
+  <sphere radius="1.5" translate="4 -3 3"/>
+  <cylinder radius="0.3" height="6" translate="2 5 0"/>
+</scene>)");
+    PreviewOptions options;
+    options.shadows = true;
+    Film drawn = renderPreview(scene, options).film;
+    Film traced = tbb::task_arena(2).execute([&] { return render(scene, Bvh(scene), RenderOptions{}); });
+    // Lit ground shows ρ E cos θ / π; shadowed ground shows 0.
+    float lit = 0.8f * 3.0f * std::sin(radians(50)) * kInvPi;
+    size_t agree = 0, shadowedPixels = 0;
+    for (int i = 0; i < 96 * 96; ++i) {
+        bool dark = drawn.pixels()[size_t(i) * 4 + 1] < 0.5f * lit;
+        agree += dark == (traced.pixels()[size_t(i) * 4 + 1] < 0.5f * lit);
+        shadowedPixels += dark;
+    }
+    size_t disagree = 96 * 96 - agree;
+    std::printf("shadows: %zu shadowed pixels, %zu disagree with the path tracer\n", shadowedPixels, disagree);
+    EXPECT_GT(shadowedPixels, 200u);             // the test sees real shadows
+    EXPECT_LE(disagree, shadowedPixels / 10);    // only along shadow edges
 }
 
 TEST(Preview, IdColoursAreDistinctAndBackgroundIsBlack) {
