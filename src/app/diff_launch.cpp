@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include <unistd.h>
@@ -12,24 +13,26 @@ namespace veduta {
 
 namespace {
 
-// veduta-diff is installed and built beside the veduta program itself.
-std::filesystem::path diffProgram() {
+// veduta-diff is built and installed beside veduta. Where /proc is missing, the folder argv[0]
+// names serves; a bare name means veduta was found on PATH, and so is veduta-diff.
+std::string diffProgram(const char *argv0) {
     std::error_code error;
     std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
-    return (error ? std::filesystem::path("veduta") : self).parent_path() / "veduta-diff";
+    if (!error) return (self.parent_path() / "veduta-diff").string();
+    std::filesystem::path invoked(argv0);
+    return invoked.has_parent_path() ? (invoked.parent_path() / "veduta-diff").string() : "veduta-diff";
 }
 
 }  // namespace
 
 int runDiffProgram(int argc, char **argv) {
-    std::filesystem::path program = diffProgram();
+    std::string program = diffProgram(argv[0]);
     std::vector<char *> args(argv, argv + argc);
-    std::string name = program.string();
-    args[0] = name.data();
+    args[0] = program.data();
     args.push_back(nullptr);
-    execv(name.c_str(), args.data());
-    std::fprintf(stderr, "veduta: error: cannot run %s: %s\n", name.c_str(), std::strerror(errno));
-    return kExitFailure;
+    execvp(program.c_str(), args.data());  // searches PATH only for a bare name
+    std::fprintf(stderr, "veduta: error: cannot run %s: %s\n", program.c_str(), std::strerror(errno));
+    return 2;  // veduta diff's exit code for an error
 }
 
 }  // namespace veduta

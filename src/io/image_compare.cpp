@@ -217,7 +217,15 @@ ImageDiff compareImages(const OIIO::ImageBuf &a, const OIIO::ImageBuf &b, const 
     if (options.referenceVariance) roles.push_back({options.referenceVariance, "the reference variance"});
     for (size_t i = 1; i < roles.size(); ++i) checkSameSize(roles[0], roles[i]);
     requireRgb(roles);
-    std::vector<std::string> channels = sharedChannels(roles);
+    // The images under comparison decide the channels; a variance image must have them all.
+    std::vector<std::string> channels = sharedChannels({roles[0], roles[1]});
+    if (options.referenceVariance) {
+        for (const std::string &name : channels) {
+            if (options.referenceVariance->spec().channelindex(name) < 0) {
+                throw std::runtime_error(fmt::format("the reference variance has no {} channel", name));
+            }
+        }
+    }
     return summarize(sumErrors(roles, channels, options), a.spec(), channels, options);
 }
 

@@ -166,6 +166,7 @@ class Rasterizer {
         if (mesh.triangleCount() == 0) return;
         Transform cameraFromObject = projection_.cameraFromWorld * objectToWorld;
         float minX = kInfinity, minY = kInfinity, maxX = -kInfinity, maxY = -kInfinity;
+        float nearest = kInfinity, farthest = kNear;
         bool anyInFront = false, anyBehind = false;
         for (int c = 0; c < 8; ++c) {
             Vec3f corner{c & 1 ? box.hi.x : box.lo.x, c & 2 ? box.hi.y : box.lo.y, c & 4 ? box.hi.z : box.lo.z};
@@ -175,8 +176,8 @@ class Rasterizer {
                 continue;
             }
             anyInFront = true;
-            depthNear_ = std::min(depthNear_, p.z);
-            depthFar_ = std::max(depthFar_, p.z);
+            nearest = std::min(nearest, p.z);
+            farthest = std::max(farthest, p.z);
             float x = projection_.rasterX(p), y = projection_.rasterY(p);
             minX = std::min(minX, x), maxX = std::max(maxX, x), minY = std::min(minY, y), maxY = std::max(maxY, y);
         }
@@ -186,6 +187,8 @@ class Rasterizer {
             maxX = maxY = kInfinity;
         }
         if (maxX < 0 || maxY < 0 || minX > float(width_) || minY > float(height_)) return;
+        depthNear_ = std::min(depthNear_, std::max(nearest, kNear));
+        depthFar_ = std::max(depthFar_, farthest);
         int ts = options_.tileSize;
         DrawItem item{&mesh, objectToWorld, cameraFromObject, objectToWorld.normalTransform(), override, id,
                       std::clamp(int(std::floor(std::max(minX, 0.0f))) / ts, 0, tilesX_ - 1),
@@ -291,41 +294,48 @@ class Rasterizer {
     void rasterize(const RasterVertex (&c)[3], const Tile &tile, TileFragments &f, uint32_t item, uint32_t tri) {
         const float x[3] = {c[0].x, c[1].x, c[2].x}, y[3] = {c[0].y, c[1].y, c[2].y};
         const float invZ[3] = {c[0].invZ, c[1].invZ, c[2].invZ};
-        // Pixels whose centres the triangle's box holds; clamped in float first, because a
-        // vertex just beyond the near plane can project far outside int's range.
-        auto firstCentre = [](float lo, int limit) { return int(std::ceil(std::max(lo - 0.5f, float(limit)))); };
-        auto lastCentre = [](float hi, int limit) { return int(std::floor(std::min(hi - 0.5f, float(limit)))); };
-        int px0 = firstCentre(std::min({x[0], x[1], x[2]}), tile.x0);
-        int px1 = lastCentre(std::max({x[0], x[1], x[2]}), tile.x1 - 1);
-        int py0 = firstCentre(std::min({y[0], y[1], y[2]}), tile.y0);
-        int py1 = lastCentre(std::max({y[0], y[1], y[2]}), tile.y1 - 1);
+        if (!std::isfinite(x[0] + x[1] + x[2] + y[0] + y[1] + y[2])) return;
+        // Pixels whose centres the triangle's box holds, clamped to the tile in float first:
+        // a vertex just beyond the near plane can project far outside int's range.
+        int px0 = int(std::ceil(std::clamp(std::min({x[0], x[1], x[2]}) - 0.5f, float(tile.x0), float(tile.x1))));
+        int px1 = int(std::floor(std::clamp(std::max({x[0], x[1], x[2]}) - 0.5f, float(tile.x0 - 1), float(tile.x1 - 1))));
+        int py0 = int(std::ceil(std::clamp(std::min({y[0], y[1], y[2]}) - 0.5f, float(tile.y0), float(tile.y1))));
+        int py1 = int(std::floor(std::clamp(std::max({y[0], y[1], y[2]}) - 0.5f, float(tile.y0 - 1), float(tile.y1 - 1))));
         if (px0 > px1 || py0 > py1) return;
         float area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
         if (area == 0 || !std::isfinite(area)) return;
-        // Raster y points down, so counter-clockwise seen from the front has negative area.
-        bool backFacing = area > 0;
+        // Raster y points down, so counter-clockwise seen from the front has negative area; a
+        // mirroring transform turns that around.
+        bool backFacing = (area > 0) != items_[item].mirrored;
         if (options_.backfaceCulling && backFacing) return;
         uint32_t triangleWord = tri | (backFacing ? kBackFacing : 0u);
 
         float sign = area > 0 ? 1.0f : -1.0f, invArea = 1.0f / std::abs(area);
-        // Edge k is opposite vertex k: e_k(p) = (b - a) × (p - a) with a, b the other two. It is
-        // evaluated from absolute pixel coordinates, never stepped from the tile's corner, so
-        // that the result does not depend on where tiles begin.
-        float dxEdge[3], dyEdge[3], invLength[3];
+        // Edge k joins the two corners other than k. It is measured from the endpoint first in
+        // (y, x) order, whichever triangle it belongs to, so that two triangles sharing an edge
+        // compute exactly opposite values and no pixel centre falls between them. Values come
+        // from absolute pixel coordinates, never stepped from the tile's corner, so that they do
+        // not depend on where tiles begin.
+        float originX[3], originY[3], dxEdge[3], dyEdge[3], edgeSign[3], invLength[3];
         for (int k = 0; k < 3; ++k) {
             int a = (k + 1) % 3, b = (k + 2) % 3;
-            dxEdge[k] = (x[b] - x[a]) * sign;
-            dyEdge[k] = (y[b] - y[a]) * sign;
+            bool swap = y[b] < y[a] || (y[b] == y[a] && x[b] < x[a]);
+            int from = swap ? b : a, to = swap ? a : b;
+            originX[k] = x[from];
+            originY[k] = y[from];
+            dxEdge[k] = x[to] - x[from];
+            dyEdge[k] = y[to] - y[from];
+            edgeSign[k] = swap ? -sign : sign;
             invLength[k] = options_.wireframe ? 1.0f / std::sqrt(dxEdge[k] * dxEdge[k] + dyEdge[k] * dyEdge[k]) : 0.0f;
         }
-        const int a0 = 1, a1 = 2, a2 = 0;  // the first vertex of each edge
         for (int py = py0; py <= py1; ++py) {
             float cy = float(py) + 0.5f;
-            float row[3] = {dxEdge[0] * (cy - y[a0]), dxEdge[1] * (cy - y[a1]), dxEdge[2] * (cy - y[a2])};
+            float row[3] = {dxEdge[0] * (cy - originY[0]), dxEdge[1] * (cy - originY[1]), dxEdge[2] * (cy - originY[2])};
             for (int px = px0; px <= px1; ++px) {
                 float cx = float(px) + 0.5f;
-                float e[3] = {row[0] - dyEdge[0] * (cx - x[a0]), row[1] - dyEdge[1] * (cx - x[a1]),
-                              row[2] - dyEdge[2] * (cx - x[a2])};
+                float e[3] = {edgeSign[0] * (row[0] - dyEdge[0] * (cx - originX[0])),
+                              edgeSign[1] * (row[1] - dyEdge[1] * (cx - originX[1])),
+                              edgeSign[2] * (row[2] - dyEdge[2] * (cx - originX[2]))};
                 if (std::min(std::min(e[0], e[1]), e[2]) < 0) continue;  // one branch, not three
                 // 1/z is affine on the raster: test it before paying for a division.
                 float w0 = e[0] * invZ[0], w1 = e[1] * invZ[1], w2 = e[2] * invZ[2];
@@ -374,7 +384,7 @@ Vec3f Rasterizer::surfaceColor(const DrawItem &item, uint32_t triangleWord, floa
     n = normalize(item.normalToWorld.applyVector(n));
     // Surfaces are two-sided. As in the path tracer, the side seen is decided by the
     // triangle's winding, and a smooth normal follows it.
-    if (((triangleWord & kBackFacing) != 0) != item.mirrored) n = -n;
+    if ((triangleWord & kBackFacing) != 0) n = -n;
     MaterialId m = item.materialOverride != kNoMaterial ? item.materialOverride : mesh.triangleMaterials[tri];
     Vec3f albedo = scene_.materials[m].diffuse;
 
@@ -394,6 +404,7 @@ Vec3f Rasterizer::surfaceColor(const DrawItem &item, uint32_t triangleWord, floa
     case PreviewMode::Albedo: return albedo;
     case PreviewMode::Normal: return n * 0.5f + Vec3f(0.5f);
     case PreviewMode::Depth:
+        if (!(depthFar_ > depthNear_)) return Vec3f(1.0f);  // everything at one depth
         return Vec3f(std::clamp((depthFar_ - 1.0f / invDepth) / (depthFar_ - depthNear_), 0.0f, 1.0f));
     case PreviewMode::Id: return objectIdColor(item.objectId);
     }

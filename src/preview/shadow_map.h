@@ -19,7 +19,7 @@ class ShadowMap {
 
   private:
     Vec3f lightSpace(const Vec3f &p) const;  // (texel x, texel y, height towards the sun)
-    void draw(const std::vector<Vec3f> &lightVertices, const Mesh &mesh, int rowBegin, int rowEnd);
+    void draw(const std::vector<Vec3f> &lightVertices, const Mesh &mesh, std::vector<float> &map) const;
 
     Frame frame_;  // n points to the sun
     float originU_ = 0, originV_ = 0, texelsPerMetre_ = 1;

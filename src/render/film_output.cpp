@@ -65,7 +65,8 @@ void writeExr(const Film &film, const std::filesystem::path &file) {
 void writePng(const Film &film, const std::filesystem::path &file) {
     std::vector<uint8_t> pixels(film.pixels().size());
     for (size_t i = 0; i < pixels.size(); ++i) {
-        float v = (i % 4 == 3) ? std::clamp(film.pixels()[i], 0.0f, 1.0f) : linearToSrgb(film.pixels()[i]);
+        float linear = std::isfinite(film.pixels()[i]) ? film.pixels()[i] : 0.0f;
+        float v = (i % 4 == 3) ? std::clamp(linear, 0.0f, 1.0f) : linearToSrgb(linear);
         pixels[i] = uint8_t(std::lround(v * 255.0f));
     }
     writeFileAtomically(file, [&](const std::filesystem::path &temporary) {

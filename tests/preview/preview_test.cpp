@@ -10,6 +10,7 @@
 #include "preview/preview.h"
 #include "render/object_ids.h"
 #include "render/renderer.h"
+#include "render/surface_interaction.h"
 #include "test_scenes.h"
 
 namespace veduta {
@@ -68,6 +69,73 @@ TEST(Preview, ThreadsAndTilesDoNotChangeTheImage) {
     EXPECT_EQ(a.objectId, c.objectId);
 }
 
+// The same with every option on and a camera inside geometry (clipping) and among instances.
+TEST(Preview, ThreadsAndTilesDoNotChangeTheImageWithEveryOption) {
+    RenderScene scene = test::sceneFromXml(R"(<scene>
+  <camera position="0 0 1" look_at="3 1 1.5" fov="90" resolution="80 60"/>
+  <box size="6 6 4"/>
+  <prototype name="p"><sphere radius="0.4"/><box size="0.3 0.3 1"/></prototype>
+  <instance prototype="p" translate="2 0 1" scale="-1 1 1"/>
+  <instance prototype="p" translate="2 1.5 1" rotate="10 20 30"/>
+</scene>)");
+    for (PreviewMode mode : {PreviewMode::Shaded, PreviewMode::Normal, PreviewMode::Depth, PreviewMode::Id}) {
+        PreviewOptions options;
+        options.mode = mode;
+        options.wireframe = options.shadows = true;
+        auto draw = [&](int threads, int tileSize) {
+            options.tileSize = tileSize;
+            return tbb::task_arena(threads).execute([&] { return renderPreview(scene, options); });
+        };
+        PreviewImage reference = draw(1, 64);
+        for (int tileSize : {1, 7, 4096}) {
+            PreviewImage other = draw(2, tileSize);
+            EXPECT_EQ(reference.film.pixels(), other.film.pixels()) << "mode " << int(mode) << " tile " << tileSize;
+            EXPECT_EQ(reference.depth, other.depth);
+        }
+    }
+}
+
+// Neighbouring triangles leave no pixel centre uncovered: seen from inside a finely divided
+// sphere, every pixel shows the sphere.
+TEST(Preview, SharedEdgesAreWatertight) {
+    RenderScene scene = test::sceneFromXml(R"(<scene>
+  <camera position="0.3 -0.2 0.1" look_at="1 2 0.5" fov="120" resolution="200 150"/>
+  <sphere radius="10" segments="512" rings="256" id="3"/>
+</scene>)");
+    for (uint32_t id : renderPreview(scene, PreviewOptions{}).objectId) ASSERT_EQ(id, 3u);
+}
+
+// Attributes are interpolated perspective-correctly: the preview's normals match the path
+// tracer's interpolated shading normals at each pixel centre, even on large triangles seen
+// at a slant, where screen-space (affine) interpolation would be visibly off.
+TEST(Preview, NormalsArePerspectiveCorrect) {
+    RenderScene scene = test::sceneFromXml(R"(<scene>
+  <camera position="0 -3 0.5" look_at="0 0 0" fov="60" resolution="96 96"/>
+  <sphere radius="1.5" segments="8" rings="6"/>
+</scene>)");
+    PreviewOptions options;
+    options.mode = PreviewMode::Normal;
+    PreviewImage image = renderPreview(scene, options);
+    Bvh bvh(scene);
+    SurfaceLookup surfaces(scene);
+    CameraRays rays(scene.camera);
+    int compared = 0;
+    for (int y = 0; y < 96; ++y) {
+        for (int x = 0; x < 96; ++x) {
+            Ray r = rays.generate(float(x) + 0.5f, float(y) + 0.5f);
+            std::optional<Hit> hit = bvh.intersect(r, true);
+            size_t p = size_t(y) * 96 + size_t(x);
+            if (!hit || image.objectId[p] == 0) continue;
+            Vec3f expected = surfaces.at(*hit, r.direction).shadingNormal;
+            const float *c = &image.film.rgba()[p * 4];
+            Vec3f drawn{c[0] * 2 - 1, c[1] * 2 - 1, c[2] * 2 - 1};
+            ASSERT_GT(dot(normalize(drawn), expected), 0.9999f) << x << "," << y;
+            ++compared;
+        }
+    }
+    EXPECT_GT(compared, 3000);
+}
+
 // Depth is interpolated perspective-correctly: on a tilted plane it matches the exact
 // view-axis distance of the ray through each pixel centre.
 TEST(Preview, DepthIsPerspectiveCorrect) {
@@ -114,6 +182,26 @@ TEST(Preview, BackFaceCullingHidesTheInsideOfAClosedBox) {
     PreviewOptions options;
     options.backfaceCulling = true;
     for (uint32_t id : renderPreview(scene, options).objectId) ASSERT_EQ(id, 0u);
+}
+
+// Culling keeps the faces turned to the camera, also of mirrored instances: the near face
+// of each box is what the centre of its half of the image shows.
+TEST(Preview, BackFaceCullingKeepsFrontFacesOfMirroredInstances) {
+    RenderScene scene = test::sceneFromXml(R"(<scene>
+  <camera position="0 -10 1" look_at="0 0 1" fov="40" resolution="64 32"/>
+  <prototype name="p"><box size="2 2 2"/></prototype>
+  <instance prototype="p" translate="-1.5 0 0" id="1"/>
+  <instance prototype="p" translate="1.5 0 0" scale="-1 1 1" id="2"/>
+</scene>)");
+    ASSERT_EQ(scene.instances.size(), 2u);
+    PreviewOptions options;
+    options.backfaceCulling = true;
+    PreviewImage image = renderPreview(scene, options);
+    for (auto [x, id] : {std::pair{24, 1u}, std::pair{39, 2u}}) {
+        size_t p = 16 * 64 + size_t(x);
+        EXPECT_EQ(image.objectId[p], id);
+        EXPECT_NEAR(image.depth[p], 9.0f, 1e-3f);  // the face at y = -1, not the far one at y = +1
+    }
 }
 
 // The shadow map puts shadows where the path tracer finds the sun blocked: with direct light
