@@ -26,6 +26,20 @@ CLI::Validator fileWithExtension(const std::string &extension) {
         "FILE" + extension);
 }
 
+void addSceneArgument(CLI::App &command, std::string &scene) {
+    command.add_option("scene", scene, "Scene file (XML); the built-in default scene when omitted")
+        ->check(CLI::ExistingFile);
+}
+
+void addResolutionOption(CLI::App &command, std::string &resolution) {
+    command.add_option("--res", resolution, "Resolution WxH (overrides the scene)")
+        ->check(CLI::Validator(checkResolution, "WxH"));
+}
+
+void addThreadsOption(CLI::App &command, unsigned &threads) {
+    command.add_option("--threads", threads, "Worker threads [all cores]")->check(CLI::Range(1u, 4096u));
+}
+
 void applyResolution(const std::string &text, Camera &camera) {
     if (!text.empty()) std::sscanf(text.c_str(), "%dx%d", &camera.width, &camera.height);
 }

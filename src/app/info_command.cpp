@@ -2,6 +2,7 @@
 #include <memory>
 #include <string>
 
+#include "app/command_options.h"
 #include "app/commands.h"
 #include "app/run_guarded.h"
 #include "app/scene_loading.h"
@@ -38,7 +39,7 @@ void runInfo(const std::string &path) {
 void addInfoCommand(CLI::App &app, int &exitCode) {
     auto path = std::make_shared<std::string>();
     CLI::App *cmd = app.add_subcommand("info", "Build a scene's geometry and BVH and print key: value statistics");
-    cmd->add_option("scene", *path, "Scene file (XML); the built-in default scene when omitted")->check(CLI::ExistingFile);
+    addSceneArgument(*cmd, *path);
     cmd->callback([path, &exitCode] { exitCode = runGuarded([&] { runInfo(*path); }); });
 }
 

@@ -60,8 +60,7 @@ void runPreview(const PreviewArgs &args) {
 void addPreviewCommand(CLI::App &app, int &exitCode) {
     auto args = std::make_shared<PreviewArgs>();
     CLI::App *cmd = app.add_subcommand("preview", "Rasterize a scene quickly with the render camera, to PNG (or EXR)");
-    cmd->add_option("scene", args->scene, "Scene file (XML); the built-in default scene when omitted")
-        ->check(CLI::ExistingFile);
+    addSceneArgument(*cmd, args->scene);
     cmd->add_option("-o,--output", args->output, "PNG (sRGB) or EXR (linear) to write [renders/<scene name>-preview.png]")
         ->check(fileWithExtension(".png") | fileWithExtension(".exr"));
     const std::map<std::string, PreviewMode> modes = {{"shaded", PreviewMode::Shaded}, {"albedo", PreviewMode::Albedo},
@@ -69,9 +68,8 @@ void addPreviewCommand(CLI::App &app, int &exitCode) {
                                                       {"id", PreviewMode::Id}};
     cmd->add_option("--mode", args->mode, "What to show: shaded, albedo, normal, depth or id [shaded]")
         ->transform(CLI::CheckedTransformer(modes, CLI::ignore_case));
-    cmd->add_option("--res", args->resolution, "Resolution WxH (overrides the scene)")
-        ->check(CLI::Validator(checkResolution, "WxH"));
-    cmd->add_option("--threads", args->threads, "Worker threads [all cores]")->check(CLI::Range(1u, 4096u));
+    addResolutionOption(*cmd, args->resolution);
+    addThreadsOption(*cmd, args->threads);
     cmd->add_flag("--wireframe", args->wireframe, "Draw triangle edges over the image");
     cmd->add_flag("--cull", args->cull, "Skip triangles facing away from the camera");
     cmd->add_flag("--shadows", args->shadows, "Sun shadows from a 2048x2048 shadow map (shaded mode)");

@@ -65,8 +65,7 @@ void runRender(const RenderArgs &args) {
 void addRenderCommand(CLI::App &app, int &exitCode) {
     auto args = std::make_shared<RenderArgs>();
     CLI::App *cmd = app.add_subcommand("render", "Path-trace a scene to OpenEXR (and optionally PNG)");
-    cmd->add_option("scene", args->scene, "Scene file (XML); the built-in default scene when omitted")
-        ->check(CLI::ExistingFile);
+    addSceneArgument(*cmd, args->scene);
     cmd->add_option("-o,--output", args->exr, "EXR file to write [renders/<scene name>.exr]")
         ->check(fileWithExtension(".exr"));
     cmd->add_option("--png", args->png, "Also write an 8-bit sRGB PNG here")->check(fileWithExtension(".png"));
@@ -76,9 +75,8 @@ void addRenderCommand(CLI::App &app, int &exitCode) {
         ->check(CLI::Range(1u, 1024u));
     cmd->add_option("--tile", args->tileSize, "Tile size in pixels; changes speed, never the image")
         ->check(CLI::Range(1u, 4096u));
-    cmd->add_option("--res", args->resolution, "Resolution WxH (overrides the scene)")
-        ->check(CLI::Validator(checkResolution, "WxH"));
-    cmd->add_option("--threads", args->threads, "Worker threads [all cores]")->check(CLI::Range(1u, 4096u));
+    addResolutionOption(*cmd, args->resolution);
+    addThreadsOption(*cmd, args->threads);
     cmd->add_flag("-q,--quiet", args->quiet, "No progress bar and no summary");
     cmd->callback([args, &exitCode] { exitCode = runGuarded([&] { runRender(*args); }); });
 }
