@@ -15,6 +15,10 @@ struct Mesh {
     std::vector<Vec3f> positions;
     std::vector<Vec3f> normals;  // per vertex; empty means flat shading
     std::vector<Vec2f> uvs;      // per vertex; may be empty
+    // Per vertex, for normal maps (MikkTSpace-style): the tangent follows +u, and the
+    // bitangent is sign · cross(normal, tangent). Empty until computeTangents (tangents.h).
+    std::vector<Vec3f> tangents;
+    std::vector<float> bitangentSigns;
     std::vector<uint32_t> indices;             // three per triangle
     std::vector<MaterialId> triangleMaterials;  // one per triangle
 

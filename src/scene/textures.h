@@ -1,0 +1,35 @@
+// Filtered, mip-mapped texture lookups. Generators register image files here while building
+// a RenderScene; the renderer and the preview only look up. The implementation is OpenImageIO's
+// TextureSystem, behind this interface in the image plugin (src/images/), so that programs
+// that never touch a texture do not load OpenImageIO.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "core/vecmath.h"
+
+namespace veduta {
+
+using TextureId = uint32_t;
+inline constexpr TextureId kNoTexture = ~0u;
+
+class Textures {
+  public:
+    virtual ~Textures() = default;
+
+    // Makes `file` ready for lookups: converts it once to a tiled, mip-mapped texture in
+    // linear values (from `colorSpace`, an OpenColorIO colour space name, or "" for the
+    // file's own), kept in a cache so later runs reuse it. The same file and colour space
+    // give the same id. Throws InputError naming the file if it cannot be read.
+    virtual TextureId add(const std::filesystem::path &file, const std::string &colorSpace) = 0;
+    virtual int channels(TextureId id) const = 0;
+
+    // Filtered value at texture coordinates (u, v), v growing upwards from the image's
+    // bottom row, wrapping periodically; `footprint` is the width in (u, v) units of the
+    // area to average over. Writes min(channels, count) values to `out`. Thread-safe.
+    virtual void lookup(TextureId id, Vec2f uv, float footprint, float *out, int count) const = 0;
+};
+
+}  // namespace veduta
