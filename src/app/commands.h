@@ -19,5 +19,6 @@ void addDiffCommand(CLI::App &app, int &exitCode);  // in the veduta-diff progra
 // Replaces this process with veduta-diff, passing argv on; returns only if that fails.
 int runDiffProgram(int argc, char **argv);
 void addInfoCommand(CLI::App &app, int &exitCode);
+void addCubemapCommand(CLI::App &app, int &exitCode);
 
 }  // namespace veduta

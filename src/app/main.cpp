@@ -17,5 +17,6 @@ int main(int argc, char **argv) {
     // Listed here for --help; it runs as its own program (runDiffProgram above).
     app.add_subcommand("diff", "Compare two images and say whether they agree (see veduta diff --help)");
     veduta::addInfoCommand(app, exitCode);
+    veduta::addCubemapCommand(app, exitCode);
     return veduta::runApp(app, argc, argv, exitCode);
 }

@@ -59,8 +59,9 @@ std::string XmlElement::string(const char *attribute, const std::string &fallbac
     return has(attribute) ? string(attribute) : fallback;
 }
 
-float XmlElement::parseNumber(const char *attribute, std::string_view token) const {
-    float value = 0;
+template <typename T>
+T XmlElement::parseNumber(const char *attribute, std::string_view token) const {
+    T value = 0;
     auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
     if (error != std::errc() || end != token.data() + token.size() || !std::isfinite(value)) {
         failAt(attribute, fmt::format("'{}' is not a number (attribute '{}')", token, attribute));
@@ -68,20 +69,24 @@ float XmlElement::parseNumber(const char *attribute, std::string_view token) con
     return value;
 }
 
-std::vector<float> XmlElement::numbers(const char *attribute) const {
+template <typename T>
+std::vector<T> XmlElement::parseList(const char *attribute) const {
     std::string text = string(attribute);
-    std::vector<float> values;
+    std::vector<T> values;
     size_t pos = 0;
     while (true) {
         pos = text.find_first_not_of(" \t\r\n,", pos);
         if (pos == std::string::npos) break;
         size_t end = text.find_first_of(" \t\r\n,", pos);
         if (end == std::string::npos) end = text.size();
-        values.push_back(parseNumber(attribute, std::string_view(text).substr(pos, end - pos)));
+        values.push_back(parseNumber<T>(attribute, std::string_view(text).substr(pos, end - pos)));
         pos = end;
     }
     return values;
 }
+
+std::vector<float> XmlElement::numbers(const char *attribute) const { return parseList<float>(attribute); }
+std::vector<double> XmlElement::doubles(const char *attribute) const { return parseList<double>(attribute); }
 
 float XmlElement::number(const char *attribute, float fallback) const {
     if (!has(attribute)) return fallback;

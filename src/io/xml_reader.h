@@ -63,6 +63,8 @@ class XmlElement {
     Vec3f color(const char *attribute, Vec3f fallback) const;
     Vec3f color(const char *attribute, Vec3f fallback, float lo, float hi) const;  // each component
     std::vector<float> numbers(const char *attribute) const;
+    // The same in double precision, for map coordinates (float resolves only ~0.5 m there).
+    std::vector<double> doubles(const char *attribute) const;
 
     std::vector<XmlElement> children() const;
     // Reports attributes nobody read, and attributes given twice.
@@ -72,7 +74,10 @@ class XmlElement {
 
   private:
     void markRead(const char *attribute) const { read_.emplace_back(attribute); }
-    float parseNumber(const char *attribute, std::string_view token) const;
+    template <typename T>
+    T parseNumber(const char *attribute, std::string_view token) const;
+    template <typename T>
+    std::vector<T> parseList(const char *attribute) const;
 
     const XmlDocument *doc_;
     pugi::xml_node node_;

@@ -25,6 +25,10 @@ constexpr uint32_t kBackFacing = 1u << 31;
 // vertices; smaller ones are transformed per tile, which costs less than the shared copy's memory.
 constexpr int kSharedVerticesTileCount = 4;
 
+// The preview draws materials by their base colour; maps are not looked up. A glass pane
+// mostly shows the sky's reflection and a dark room: a dim tint stands for it.
+Vec3f previewAlbedo(const Material &m) { return m.glass ? m.glassTint * 0.15f : m.diffuse; }
+
 struct Box3 {
     Vec3f lo{kInfinity}, hi{-kInfinity};
     void extend(const Vec3f &p) {
@@ -128,7 +132,8 @@ class Rasterizer {
     Rasterizer(const RenderScene &scene, const PreviewOptions &options)
         : scene_(scene), options_(options), projection_(scene.camera), width_(scene.camera.width),
           height_(scene.camera.height), tilesX_((width_ + options.tileSize - 1) / options.tileSize),
-          tilesY_((height_ + options.tileSize - 1) / options.tileSize) {
+          tilesY_((height_ + options.tileSize - 1) / options.tileSize),
+          ambient_(scene.environment.averageRadiance()) {
         collectItems();
         binItems();
         if (options.shadows && options.mode == PreviewMode::Shaded && scene.sun.enabled()) {
@@ -371,6 +376,7 @@ class Rasterizer {
     // The depth mode's grey ramp spans the depths of the drawn objects' boxes.
     float depthNear_ = kInfinity, depthFar_ = kNear;
     std::optional<ShadowMap> shadowMap_;
+    Vec3f ambient_;  // the environment's mean radiance: the preview's sky light and background
 };
 
 Vec3f Rasterizer::surfaceColor(const DrawItem &item, uint32_t triangleWord, float b1, float b2, float invDepth) const {
@@ -386,7 +392,7 @@ Vec3f Rasterizer::surfaceColor(const DrawItem &item, uint32_t triangleWord, floa
     // triangle's winding, and a smooth normal follows it.
     if ((triangleWord & kBackFacing) != 0) n = -n;
     MaterialId m = item.materialOverride != kNoMaterial ? item.materialOverride : mesh.triangleMaterials[tri];
-    Vec3f albedo = scene_.materials[m].diffuse;
+    Vec3f albedo = previewAlbedo(scene_.materials[m]);
 
     switch (options_.mode) {
     case PreviewMode::Shaded: {
@@ -399,7 +405,7 @@ Vec3f Rasterizer::surfaceColor(const DrawItem &item, uint32_t triangleWord, floa
                 cross(mesh.positions[idx[1]] - mesh.positions[idx[0]], mesh.positions[idx[2]] - mesh.positions[idx[0]]));
             if (shadowMap_->shadowed(world, normalize(ng))) cosine = 0;
         }
-        return albedo * kInvPi * sun.irradiance * cosine + albedo * scene_.environment.radiance;
+        return albedo * kInvPi * sun.irradiance * cosine + albedo * ambient_;
     }
     case PreviewMode::Albedo: return albedo;
     case PreviewMode::Normal: return n * 0.5f + Vec3f(0.5f);
@@ -412,7 +418,7 @@ Vec3f Rasterizer::surfaceColor(const DrawItem &item, uint32_t triangleWord, floa
 }
 
 void Rasterizer::shadeTile(const Tile &tile, const TileFragments &f, PreviewImage &image) const {
-    Vec3f background = options_.mode == PreviewMode::Shaded ? scene_.environment.radiance : Vec3f(0.0f);
+    Vec3f background = options_.mode == PreviewMode::Shaded ? ambient_ : Vec3f(0.0f);
     // A flat triangle has one colour all over (except in depth mode and with shadows):
     // neighbouring pixels of the same one reuse it.
     bool reuseFlat = options_.mode != PreviewMode::Depth && !shadowMap_;

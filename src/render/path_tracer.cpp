@@ -7,64 +7,137 @@
 
 namespace veduta {
 
+namespace {
+
+// After a diffuse or glossy bounce texture detail no longer shows: look textures up as if
+// through a wide cone (Amanatides' ray cones, with the spread of a rough surface).
+constexpr float kBouncedSpread = 0.05f;
+// Cut-outs and panes a ray may pass before it counts as stuck (foliage piled on foliage).
+constexpr int kMaxPassThrough = 256;
+
+Vec3f offsetTowards(const SurfaceInteraction &si, const Vec3f &direction) {
+    return offsetRayOrigin(si.position, dot(direction, si.geometricNormal) > 0 ? si.geometricNormal : -si.geometricNormal);
+}
+
+bool isBlack(const Vec3f &v) { return v.x == 0 && v.y == 0 && v.z == 0; }
+
+}  // namespace
+
 PathTracer::PathTracer(const RenderScene &scene, const Bvh &bvh)
-    : scene_(scene), bvh_(bvh), surfaces_(scene), sunIsDisc_(scene.sun.angularDiameterDegrees > 0),
-      sunOneMinusCosRadius_(scene.sun.oneMinusCosRadius()), sunFrame_(Frame::fromNormal(scene.sun.direction)),
-      sunDiscRadiance_(sunIsDisc_ ? scene.sun.discRadiance() : Vec3f(0.0f)),
-      sunIncidentPerSample_(sunIsDisc_ ? sunDiscRadiance_ / uniformConePdf(sunOneMinusCosRadius_) : scene.sun.irradiance) {}
+    : scene_(scene), bvh_(bvh), surfaces_(scene), materials_(scene), sun_(scene.sun), environment_(scene.environment),
+      pixelSpread_(radians(scene.camera.verticalFovDegrees) / float(scene.camera.height)) {}
 
 Vec3f PathTracer::radiance(const Ray &cameraRay, PixelSampler &sampler, RayCounts &counts) const {
     const RenderSettings &settings = scene_.settings;
     Vec3f L(0.0f), beta(1.0f);
     Ray ray = cameraRay;
+    float bsdfPdf = 0;  // camera rays see lights directly
+    float spread = pixelSpread_;
     for (uint32_t depth = 0;; ++depth) {
-        bool fromCamera = depth == 0;
-        ++(fromCamera ? counts.camera : counts.bounce);
-        std::optional<Hit> hit = bvh_.intersect(ray, fromCamera);
-        if (!hit) {
-            L += beta * escapedRadiance(ray, fromCamera);
+        Vec2f uSun = sampler.next2D(), uEnvironment = sampler.next2D();
+        Vec2f uLobeRoulette = sampler.next2D(), uDirection = sampler.next2D();
+
+        std::optional<SurfaceInteraction> si = findSurface(ray, depth == 0, spread, counts);
+        if (!si) {
+            L += beta * escapedLight(ray.direction, bsdfPdf);
             break;
         }
-        SurfaceInteraction si = surfaces_.at(*hit, ray.direction);
-        Vec3f albedo = scene_.materials[si.material].diffuse;
-
-        Vec2f uLight = sampler.next2D();
-        if (scene_.sun.enabled()) L += beta * sunLight(si, albedo, uLight, counts);
+        Vec3f wo = -ray.direction;
+        Bsdf bsdf = materials_.bsdf(*si, wo, spread * si->distance);
+        if (bsdf.hasNonDeltaLobe() && settings.lightSampling != LightSampling::Bsdf) {
+            L += beta * directLight(*si, bsdf, wo, uSun, uEnvironment, counts);
+        }
         if (depth + 1 >= settings.maxDepth) break;
 
-        // Lambertian BSDF sampled by cosine: f·cos/pdf is the albedo.
-        Vec3f wi = Frame::fromNormal(si.shadingNormal).toWorld(sampleCosineHemisphere(sampler.next2D()));
-        if (dot(wi, si.geometricNormal) <= 0) break;  // the shading normal points below the surface
-        beta *= albedo;
+        std::optional<BsdfSample> s = bsdf.sample(wo, uLobeRoulette.x, uDirection);
+        if (!s || isBlack(s->weight)) break;
+        beta *= s->weight;
+        bsdfPdf = s->delta ? 0.0f : s->pdf;
+        if (!s->delta) spread = std::max(spread, kBouncedSpread);
 
-        float uRoulette = sampler.next1D();
         if (depth + 1 >= settings.rouletteDepth) {
             float survive = std::min(maxComponent(beta), 0.95f);
-            if (uRoulette >= survive) break;
+            if (uLobeRoulette.y >= survive) break;
             beta = beta / survive;
         }
-        ray = {offsetRayOrigin(si.position, si.geometricNormal), wi};
+        ray = {offsetTowards(*si, s->wi), s->wi};
     }
     return L;
 }
 
-Vec3f PathTracer::sunLight(const SurfaceInteraction &si, const Vec3f &albedo, Vec2f u, RayCounts &counts) const {
-    Vec3f wi = sunIsDisc_ ? sunFrame_.toWorld(sampleUniformCone(u, sunOneMinusCosRadius_)) : scene_.sun.direction;
-    float cosTheta = dot(si.shadingNormal, wi);
-    if (cosTheta <= 0 || dot(si.geometricNormal, wi) <= 0) return Vec3f(0.0f);
-
-    ++counts.shadow;
-    Ray shadow{offsetRayOrigin(si.position, si.geometricNormal), wi};
-    if (bvh_.occluded(shadow, std::numeric_limits<float>::infinity())) return Vec3f(0.0f);
-    return albedo * kInvPi * cosTheta * sunIncidentPerSample_;
+std::optional<SurfaceInteraction> PathTracer::findSurface(Ray ray, bool fromCamera, float footprintSpread,
+                                                          RayCounts &counts) const {
+    float travelled = 0;
+    for (int pass = 0; pass < kMaxPassThrough; ++pass) {
+        ++(fromCamera && pass == 0 ? counts.camera : counts.bounce);
+        std::optional<Hit> hit = bvh_.intersect(ray, fromCamera);
+        if (!hit) return std::nullopt;
+        SurfaceInteraction si = surfaces_.at(*hit, ray.direction);
+        si.distance += travelled;
+        if (!materials_.anyPassThrough() || !materials_.cutAway(si, footprintSpread * si.distance)) return si;
+        travelled = si.distance;
+        ray.origin = offsetTowards(si, ray.direction);
+    }
+    return std::nullopt;
 }
 
-// Light from outside the scene. The sun disc counts only for camera rays: for every later
-// vertex next-event estimation has already counted it.
-Vec3f PathTracer::escapedRadiance(const Ray &ray, bool cameraRay) const {
-    Vec3f L = scene_.environment.radianceTowards(ray.direction);
-    if (cameraRay && sunIsDisc_ && scene_.sun.discContains(ray.direction)) L += sunDiscRadiance_;
+Vec3f PathTracer::directLight(const SurfaceInteraction &si, const Bsdf &bsdf, const Vec3f &wo, Vec2f uSun,
+                              Vec2f uEnvironment, RayCounts &counts) const {
+    Vec3f L(0.0f);
+    if (sun_.enabled()) L += lightSampleContribution(si, bsdf, wo, sun_.sample(uSun), counts);
+    if (environment_.sampled()) L += lightSampleContribution(si, bsdf, wo, environment_.sample(uEnvironment), counts);
     return L;
+}
+
+Vec3f PathTracer::lightSampleContribution(const SurfaceInteraction &si, const Bsdf &bsdf, const Vec3f &wo,
+                                          const LightSample &light, RayCounts &counts) const {
+    Vec3f f = bsdf.eval(wo, light.wi);
+    if (isBlack(f) || isBlack(light.radiance)) return Vec3f(0.0f);
+    Vec3f transmitted = transmittanceTowards(si, light.wi, counts);
+    if (isBlack(transmitted)) return Vec3f(0.0f);
+    if (light.pdf == 0) return f * light.radiance * transmitted;  // a delta light: its irradiance
+    float weight = 1;
+    if (scene_.settings.lightSampling == LightSampling::Mis) weight = powerHeuristic(light.pdf, bsdf.pdf(wo, light.wi));
+    return f * light.radiance * transmitted * (weight / light.pdf);
+}
+
+Vec3f PathTracer::transmittanceTowards(const SurfaceInteraction &si, const Vec3f &wi, RayCounts &counts) const {
+    Ray shadow{offsetTowards(si, wi), wi};
+    constexpr float kInfinity = std::numeric_limits<float>::infinity();
+    if (!materials_.anyPassThrough()) {
+        ++counts.shadow;
+        return bvh_.occluded(shadow, kInfinity) ? Vec3f(0.0f) : Vec3f(1.0f);
+    }
+    // Shadow rays need no filtered texture: a narrow footprint keeps the cut-out's edge sharp.
+    constexpr float kShadowFootprint = 0;
+    Vec3f transmitted(1.0f);
+    for (int pass = 0; pass < kMaxPassThrough; ++pass) {
+        ++counts.shadow;
+        std::optional<Hit> hit = bvh_.intersect(shadow, false);
+        if (!hit) return transmitted;
+        SurfaceInteraction blocker = surfaces_.at(*hit, wi);
+        transmitted *= materials_.transmittance(blocker, wi, kShadowFootprint);
+        if (isBlack(transmitted)) break;
+        shadow.origin = offsetTowards(blocker, wi);
+    }
+    return Vec3f(0.0f);
+}
+
+Vec3f PathTracer::escapedLight(const Vec3f &direction, float bsdfPdf) const {
+    Vec3f environment = environment_.radiance(direction);
+    Vec3f sun = sun_.radiance(direction);
+    if (bsdfPdf == 0) return environment + sun;
+    switch (scene_.settings.lightSampling) {
+    case LightSampling::Bsdf:
+        return environment + sun;
+    case LightSampling::Light:
+        // Only what next-event estimation cannot reach: an environment it does not sample.
+        return environment_.sampled() ? Vec3f(0.0f) : environment;
+    case LightSampling::Mis:
+        break;
+    }
+    return environment * powerHeuristic(bsdfPdf, environment_.pdf(direction)) +
+           sun * powerHeuristic(bsdfPdf, sun_.pdf(direction));
 }
 
 }  // namespace veduta

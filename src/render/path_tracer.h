@@ -1,10 +1,14 @@
-// The unidirectional path tracer: diffuse BSDF sampling, next-event estimation to the sun,
-// a constant environment, Russian roulette.
+// The unidirectional path tracer: at each surface, next-event estimation to the sun and the
+// environment and a BSDF sample to go on, the two combined by multiple importance sampling
+// (power heuristic); thin glass and cut-outs let rays and shadow rays pass; Russian roulette.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include "render/bvh.h"
+#include "render/lights.h"
+#include "render/material_lookup.h"
 #include "render/sampler.h"
 #include "render/surface_interaction.h"
 
@@ -28,23 +32,33 @@ class PathTracer {
   public:
     PathTracer(const RenderScene &scene, const Bvh &bvh);
 
-    // Radiance arriving along the camera ray. Sample dimensions are consumed in a fixed order
-    // per bounce (light, BSDF, roulette), so the result is a pure function of the sampler.
+    // Radiance arriving along the camera ray. Every bounce takes the same four sample pairs
+    // (sun, environment, lobe and roulette, direction) whatever happens, so the result is a
+    // pure function of the sampler.
     Vec3f radiance(const Ray &cameraRay, PixelSampler &sampler, RayCounts &counts) const;
 
   private:
-    Vec3f sunLight(const SurfaceInteraction &si, const Vec3f &albedo, Vec2f u, RayCounts &counts) const;
-    Vec3f escapedRadiance(const Ray &ray, bool cameraRay) const;
+    // The first surface along the ray that is there: cut-outs are passed through.
+    std::optional<SurfaceInteraction> findSurface(Ray ray, bool fromCamera, float footprintSpread,
+                                                  RayCounts &counts) const;
+    Vec3f directLight(const SurfaceInteraction &si, const Bsdf &bsdf, const Vec3f &wo, Vec2f uSun, Vec2f uEnvironment,
+                      RayCounts &counts) const;
+    Vec3f lightSampleContribution(const SurfaceInteraction &si, const Bsdf &bsdf, const Vec3f &wo,
+                                  const LightSample &light, RayCounts &counts) const;
+    // What reaches the surface from infinity along wi through glass and cut-outs.
+    Vec3f transmittanceTowards(const SurfaceInteraction &si, const Vec3f &wi, RayCounts &counts) const;
+    // Light from the sun and the environment along a ray that left the scene. `bsdfPdf` is
+    // the density the last bounce chose it with; 0 after a delta lobe or for camera rays,
+    // which no light sample could have found.
+    Vec3f escapedLight(const Vec3f &direction, float bsdfPdf) const;
 
     const RenderScene &scene_;
     const Bvh &bvh_;
     SurfaceLookup surfaces_;
-    // The sun as next-event estimation samples it, worked out once.
-    bool sunIsDisc_;
-    float sunOneMinusCosRadius_;
-    Frame sunFrame_;
-    Vec3f sunDiscRadiance_;
-    Vec3f sunIncidentPerSample_;  // radiance over the cone's pdf, or the irradiance of a point sun
+    MaterialLookup materials_;
+    SunLight sun_;
+    EnvironmentLight environment_;
+    float pixelSpread_;  // radians a pixel spans, for texture footprints (ray cones)
 };
 
 }  // namespace veduta

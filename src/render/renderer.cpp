@@ -54,6 +54,7 @@ Film render(const RenderScene &scene, const Bvh &bvh, const RenderOptions &optio
     const RenderSettings &settings = scene.settings;
     Film film(camera.width, camera.height);
     PathTracer tracer(scene, bvh);
+    const FilterSampler filter(settings.filter);
     std::vector<Tile> tiles = makeTiles(camera.width, camera.height, int(settings.tileSize));
     Progress progress("render", tiles.size(), "tiles", options.showProgress);
 
@@ -71,8 +72,8 @@ Film render(const RenderScene &scene, const Bvh &bvh, const RenderOptions &optio
                     double sum[3] = {0, 0, 0};
                     for (uint32_t s = 0; s < settings.samplesPerPixel; ++s) {
                         PixelSampler sampler(settings.seed, uint32_t(x), uint32_t(y), s);
-                        Vec2f jitter = sampler.next2D();
-                        Ray ray = cameraRays.generate(float(x) + jitter.x, float(y) + jitter.y);
+                        Vec2f offset = filter.sample(sampler.next2D());
+                        Ray ray = cameraRays.generate(float(x) + 0.5f + offset.x, float(y) + 0.5f + offset.y);
                         Vec3f L = tracer.radiance(ray, sampler, local.rays);
                         if (!isFinite(L)) {
                             ++local.nonFiniteSamples;

@@ -18,27 +18,63 @@ SurfaceInteraction SurfaceLookup::at(const Hit &hit, const Vec3f &rayDirection) 
     const uint32_t *idx = &mesh.indices[3 * size_t(hit.primitive)];
     const Vec3f &p0 = mesh.positions[idx[0]], &p1 = mesh.positions[idx[1]], &p2 = mesh.positions[idx[2]];
     float w = 1 - hit.u - hit.v;
+    auto interpolate = [&](const auto &values) {
+        return values[idx[0]] * w + values[idx[1]] * hit.u + values[idx[2]] * hit.v;
+    };
 
     // Interpolating the triangle is more exact than origin + t·direction far from the origin.
-    Vec3f position = p0 * w + p1 * hit.u + p2 * hit.v;
-    Vec3f ng = cross(p1 - p0, p2 - p0);
-    Vec3f ns = ng;
-    if (!mesh.normals.empty()) ns = mesh.normals[idx[0]] * w + mesh.normals[idx[1]] * hit.u + mesh.normals[idx[2]] * hit.v;
+    Vec3f position = interpolate(mesh.positions);
+    Vec3f e1 = p1 - p0, e2 = p2 - p0;
+    Vec3f ns = mesh.normals.empty() ? cross(e1, e2) : interpolate(mesh.normals);
+    Vec3f tangent = mesh.tangents.empty() ? Vec3f(0.0f) : interpolate(mesh.tangents);
+    float sign = mesh.bitangentSigns.empty() ? 1.0f : mesh.bitangentSigns[idx[0]];
 
     SurfaceInteraction si;
     si.material = mesh.triangleMaterials[hit.primitive];
+    si.distance = hit.t;
     if (hit.instanced) {
         const Instance &instance = scene_.instances[hit.index];
         const Transform &normalTransform = instanceNormalTransforms_[hit.index];
         position = instance.objectToWorld.applyPoint(position);
-        ng = normalTransform.applyVector(ng);
+        e1 = instance.objectToWorld.applyVector(e1);
+        e2 = instance.objectToWorld.applyVector(e2);
         ns = normalTransform.applyVector(ns);
+        tangent = instance.objectToWorld.applyVector(tangent);
+        // A mirroring placement turns the (t, b, n) frame's handedness around.
+        if (instance.objectToWorld.determinant() < 0) sign = -sign;
         if (instance.materialOverride != kNoMaterial) si.material = instance.materialOverride;
     }
+    Vec3f ng = cross(e1, e2);
+    // A mirroring placement turns cross(e1, e2) inwards; back to the side the mesh faces.
+    if (hit.instanced && scene_.instances[hit.index].objectToWorld.determinant() < 0) ng = -ng;
     si.position = position;
+    si.backFacing = dot(ng, rayDirection) > 0;
     si.geometricNormal = faceForward(normalize(ng), -rayDirection);
     float nsLength = length(ns);
     si.shadingNormal = nsLength > 0 ? faceForward(ns / nsLength, si.geometricNormal) : si.geometricNormal;
+
+    if (mesh.uvs.size() == mesh.positions.size()) {
+        const Vec2f &t0 = mesh.uvs[idx[0]], &t1 = mesh.uvs[idx[1]], &t2 = mesh.uvs[idx[2]];
+        si.uv = {t0.x * w + t1.x * hit.u + t2.x * hit.v, t0.y * w + t1.y * hit.u + t2.y * hit.v};
+        float du1 = t1.x - t0.x, dv1 = t1.y - t0.y, du2 = t2.x - t0.x, dv2 = t2.y - t0.y;
+        float uvArea = du1 * dv2 - dv1 * du2;  // twice the triangle's area in (u, v), signed
+        float worldArea = length(ng);
+        if (uvArea != 0 && worldArea > 0) {
+            si.uvPerMetre = std::sqrt(std::abs(uvArea) / worldArea);
+            if (length(tangent) == 0) {
+                // No vertex tangents (a faceted mesh): the triangle's own ∂p/∂u and handedness.
+                Vec3f dpdu = (e1 * dv2 - e2 * dv1) / uvArea;
+                Vec3f dpdv = (e2 * du1 - e1 * du2) / uvArea;
+                tangent = dpdu;
+                sign = dot(cross(ng, dpdu), dpdv) < 0 ? -1.0f : 1.0f;
+            }
+        }
+    }
+    float tangentLength = length(tangent);
+    if (tangentLength > 0) {
+        si.tangent = tangent / tangentLength;
+        si.bitangentSign = sign;
+    }
     return si;
 }
 

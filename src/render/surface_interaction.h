@@ -13,6 +13,16 @@ struct SurfaceInteraction {
     Vec3f geometricNormal;  // unit, facing the side the ray came from
     Vec3f shadingNormal;    // unit, on the same side as geometricNormal
     MaterialId material = 0;
+    float distance = 0;     // along the ray that found it
+
+    // For textures; all zero when the mesh has no texture coordinates.
+    Vec2f uv;
+    float uvPerMetre = 0;   // how fast (u, v) changes over the surface, for texture footprints
+    // For normal maps: the tangent along +u (unit, world space) and the sign that makes the
+    // bitangent sign · cross(n, tangent), n being the side the mesh faces, not the ray.
+    Vec3f tangent;
+    float bitangentSign = 1;
+    bool backFacing = false;  // the ray came from the side the mesh's winding faces away from
 };
 
 class SurfaceLookup {

@@ -5,7 +5,9 @@
 
 #include <fmt/format.h>
 
+#include "io/image_library.h"
 #include "io/mesh_import.h"
+#include "scene/build_environment.h"
 
 namespace veduta {
 
@@ -17,12 +19,14 @@ class SceneAssembler {
 
     RenderScene assemble() && {
         builder_.setCamera(d_.camera);
-        builder_.setSun(d_.sun);
-        builder_.setEnvironment(d_.environment);
+        Sun sun = placeSun(d_);
+        builder_.setSun(sun);
+        builder_.setEnvironment(buildEnvironment(d_.environment, sun));
         builder_.setSettings(d_.settings);
         // Material 0 is for geometry that names none; a scene may redefine "default".
-        builder_.addMaterial(Material{"default", Vec3f(0.8f)});
-        for (const MaterialDesc &m : d_.materials) builder_.addMaterial(m.material);
+        builder_.addMaterial(Material{.name = "default"});
+        for (const MaterialDesc &m : d_.materials) builder_.addMaterial(withTextures(m));
+        if (textures_) builder_.setTextures(textures_);
         defaultMaterial_ = builder_.findMaterial("default");
 
         // Geometry repeated at the top level (the same mesh file or shape with the same
@@ -49,6 +53,29 @@ class SceneAssembler {
     }
 
   private:
+    // The material with its maps registered as textures.
+    Material withTextures(const MaterialDesc &d) {
+        Material m = d.material;
+        m.diffuseMap = texture(d.diffuseMap);
+        m.specularMap = texture(d.specularMap);
+        m.normalMap = texture(d.normalMap);
+        m.reflectionMap = texture(d.reflectionMap);
+        m.opacityMap = texture(d.opacityMap);
+        return m;
+    }
+
+    TextureId texture(const ImageRef &ref) {
+        if (!ref.given()) return kNoTexture;
+        try {
+            if (!textures_) textures_ = imageLibrary().makeTextures(defaultTextureCacheDirectory());
+            return textures_->add(ref.file, ref.colorSpace);
+        } catch (const InputError &error) {
+            throw InputError(ref.loc, error.what());
+        } catch (const std::runtime_error &error) {
+            throw InputError(ref.loc, error.what());
+        }
+    }
+
     // The mesh of one geometry element in its own frame, with its material applied.
     Mesh part(const GeometryDesc &g) {
         Mesh mesh = g.shape ? makeShape(*g.shape) : meshFile(g);
@@ -87,9 +114,31 @@ class SceneAssembler {
     std::map<std::filesystem::path, Mesh> meshFiles_;
     std::map<std::string, PrototypeId> repeatedGeometry_;
     MaterialId defaultMaterial_ = 0;
+    std::shared_ptr<Textures> textures_;
 };
 
 }  // namespace
+
+// From a date and time, the azimuth is against true north; with a georeference the scene's
+// +y is grid north, which differs by the meridian convergence.
+Sun placeSun(const SceneDescription &d) {
+    Sun sun = d.sun;
+    if (!d.sunTime) return sun;
+    const SunTimeDesc &t = *d.sunTime;
+    if (!t.place && !d.georeference) {
+        throw InputError(t.loc, "the sun needs 'latitude' and 'longitude', or a <georeference> for the scene");
+    }
+    GeographicPoint place =
+        t.place ? *t.place : toGeographic(*d.georeference, d.georeference->originEasting, d.georeference->originNorthing);
+    SolarAngles angles = solarPositionNoaa(t.time, place.latitude, place.longitude);
+    double azimuth = angles.azimuthDegrees;
+    if (d.georeference) {
+        const Georeference &g = *d.georeference;
+        azimuth = gridAzimuthDegrees(azimuth, meridianConvergenceDegrees(g, g.originEasting, g.originNorthing));
+    }
+    sun.direction = Sun::directionFromAzimuthElevation(float(azimuth), float(angles.elevationDegrees));
+    return sun;
+}
 
 RenderScene buildRenderScene(const SceneDescription &description) {
     return SceneAssembler(description).assemble();

@@ -8,6 +8,9 @@
 
 namespace veduta {
 
+// The sun where the scene puts it: its direction as given, or from a date, time and place.
+Sun placeSun(const SceneDescription &description);
+
 // Throws InputError at the place in the scene file a problem comes from (an unknown material
 // or prototype, a mesh file that cannot be read).
 RenderScene buildRenderScene(const SceneDescription &description);

@@ -1,6 +1,9 @@
 #include "scene/render_scene.h"
 
+#include <algorithm>
 #include <stdexcept>
+
+#include "scene/tangents.h"
 
 namespace veduta {
 
@@ -67,6 +70,13 @@ RenderScene RenderSceneBuilder::build() && {
     }
     scene_.prototypes = std::move(shared);
     scene_.instances = std::move(kept);
+    // Normal maps need tangents, and only they: other scenes keep the memory.
+    bool normalMapped = std::any_of(scene_.materials.begin(), scene_.materials.end(),
+                                    [](const Material &m) { return m.normalMap != kNoTexture; });
+    if (normalMapped) {
+        for (BakedMesh &m : scene_.meshes) computeTangents(m.mesh);
+        for (Mesh &m : scene_.prototypes) computeTangents(m);
+    }
     return std::move(scene_);
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "scene/mesh.h"
 #include "scene/render_settings.h"
 #include "scene/sun.h"
+#include "scene/textures.h"
 
 namespace veduta {
 
@@ -42,6 +44,7 @@ struct RenderScene {
     Sun sun;
     Environment environment;
     RenderSettings settings;
+    std::shared_ptr<const Textures> textures;  // null when no material has maps
 
     uint64_t effectiveTriangleCount() const;  // counting every instance's triangles
 };
@@ -63,6 +66,7 @@ class RenderSceneBuilder {
     void setSun(const Sun &sun) { scene_.sun = sun; }
     void setEnvironment(const Environment &environment) { scene_.environment = environment; }
     void setSettings(const RenderSettings &settings) { scene_.settings = settings; }
+    void setTextures(std::shared_ptr<const Textures> textures) { scene_.textures = std::move(textures); }
 
     RenderScene build() &&;
 

@@ -5,12 +5,30 @@
 
 namespace veduta {
 
+enum class FilterKind { Box, BlackmanHarris };
+
+// The pixel filter; render/filter.h samples it.
+struct PixelFilter {
+    FilterKind kind = FilterKind::BlackmanHarris;
+    float width = 1.5f;  // pixels, the whole support; Cycles' default is Blackman–Harris 1.5
+};
+
+// Which strategies count light from the sun and the environment. Only `Mis` is for images;
+// the others exist to measure what multiple importance sampling gains.
+enum class LightSampling {
+    Mis,    // next-event estimation and BSDF sampling, weighted by the power heuristic
+    Bsdf,   // BSDF sampling only: lights are found by chance
+    Light,  // next-event estimation only: light reaching a BSDF-sampled ray is ignored
+};
+
 struct RenderSettings {
     uint32_t samplesPerPixel = 16;
     uint32_t maxDepth = 8;       // path vertices after the camera; 1 = direct light only
     uint32_t seed = 0;
     uint32_t rouletteDepth = 3;  // Russian roulette starts after this many bounces
     uint32_t tileSize = 32;      // pixels; changes speed only, never the image
+    PixelFilter filter;
+    LightSampling lightSampling = LightSampling::Mis;
 };
 
 }  // namespace veduta

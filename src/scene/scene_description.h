@@ -10,10 +10,12 @@
 #include "core/error.h"
 #include "scene/camera.h"
 #include "scene/environment.h"
+#include "scene/georeference.h"
 #include "scene/material.h"
 #include "scene/render_settings.h"
 #include "scene/shapes.h"
 #include "scene/sun.h"
+#include "scene/sun_position.h"
 
 namespace veduta {
 
@@ -48,16 +50,50 @@ struct InstanceDesc {
     uint32_t objectId = 0;
 };
 
+// An image file a material or the environment reads, with the place it was named.
+struct ImageRef {
+    std::filesystem::path file;  // already resolved against the naming file's folder; empty: none
+    std::string colorSpace;      // OpenColorIO name; "" = the file's own
+    FileLoc loc;
+
+    bool given() const { return !file.empty(); }
+};
+
+// A material with its maps named but not yet loaded; material_file.h reads it.
 struct MaterialDesc {
     FileLoc loc;
     Material material;
+    ImageRef diffuseMap, specularMap, normalMap, reflectionMap, opacityMap;
+};
+
+// Light from outside the scene: a constant radiance, a cubemap from image files, or a clear
+// sky computed for the sun's position.
+struct EnvironmentDesc {
+    FileLoc loc;
+    Vec3f radiance{0.0f};
+    ImageRef cubemap;  // six faces ({face} or {axis} in the name), a cross, or a lat-long image
+    int faceSize = 0;  // for lat-long images and the sky; 0 = chosen from the image
+    bool sky = false;
+    float turbidity = 3;
+    float groundAlbedo = 0.2f;
+    float rotationDegrees = 0;
+    float intensity = 1;
+};
+
+// The sun's place in the sky from a date and time, as an alternative to a direction.
+struct SunTimeDesc {
+    FileLoc loc;
+    CivilTime time;
+    std::optional<GeographicPoint> place;  // unset: the georeference's origin
 };
 
 struct SceneDescription {
     std::string source;  // file name, or a name for built-in text
     Camera camera;
     Sun sun;
-    Environment environment;
+    std::optional<SunTimeDesc> sunTime;
+    std::optional<Georeference> georeference;
+    EnvironmentDesc environment;
     RenderSettings settings;
     std::vector<MaterialDesc> materials;
     std::vector<GeometryDesc> geometry;

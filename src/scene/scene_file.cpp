@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "io/xml_reader.h"
+#include "scene/material_file.h"
 #include "scene/scene_description.h"
 
 namespace veduta {
@@ -34,12 +35,15 @@ class SceneFileReader {
         } else if (n == "sun") {
             readSun(e);
         } else if (n == "environment") {
-            scene_.environment.radiance = e.color("radiance", scene_.environment.radiance, 0, 1e9f);
-            e.checkLeaf();
+            readEnvironment(e);
+        } else if (n == "georeference") {
+            readGeoreference(e);
         } else if (n == "render") {
             readSettings(e);
         } else if (n == "material") {
-            readMaterial(e);
+            addMaterial(readMaterialElement(e, baseDirectory_), e);
+        } else if (n == "materials") {
+            readMaterialsInclude(e);
         } else if (n == "prototype") {
             readPrototype(e);
         } else if (n == "instance") {
@@ -77,11 +81,12 @@ class SceneFileReader {
 
     void readSun(const XmlElement &e) {
         Sun &sun = scene_.sun;
-        if (e.has("direction") && (e.has("azimuth") || e.has("elevation"))) {
-            e.fail("give the sun either 'direction' or 'azimuth' and 'elevation', not both");
-        }
+        int ways = int(e.has("direction")) + int(e.has("azimuth") || e.has("elevation")) + int(e.has("date"));
+        if (ways > 1) e.fail("give the sun one of 'direction', 'azimuth' and 'elevation', or 'date' and 'time'");
         if (e.has("azimuth") != e.has("elevation")) e.fail("give the sun both 'azimuth' and 'elevation'");
-        if (e.has("direction")) {
+        if (e.has("date")) {
+            readSunTime(e);
+        } else if (e.has("direction")) {
             Vec3f d = e.vec3("direction", sun.direction);
             if (length(d) == 0) e.failAt("direction", "sun direction has zero length");
             sun.direction = normalize(d);
@@ -94,26 +99,124 @@ class SceneFileReader {
         e.checkLeaf();
     }
 
+    // The sun's position from the date, the local time and its offset from UTC, and the
+    // place (latitude and longitude, or else the georeference's origin).
+    void readSunTime(const XmlElement &e) {
+        SunTimeDesc t;
+        t.loc = e.loc();
+        std::string date = e.string("date"), time = e.string("time"), offset = e.string("utc_offset");
+        try {
+            t.time = parseCivilTime(date, time, offset);
+        } catch (const std::invalid_argument &error) {
+            e.failAt("date", error.what());
+        }
+        if (e.has("latitude") != e.has("longitude")) e.fail("give the sun both 'latitude' and 'longitude'");
+        if (e.has("latitude")) t.place = GeographicPoint{e.number("latitude", 0, -90, 90), e.number("longitude", 0, -180, 180)};
+        scene_.sunTime = t;
+    }
+
+    void readGeoreference(const XmlElement &e) {
+        if (scene_.georeference) e.fail("the scene has a georeference already");
+        Georeference g;
+        std::string crs = e.string("crs");
+        if (crs.rfind("EPSG:", 0) != 0 || crs.size() < 6 || crs.find_first_not_of("0123456789", 5) != std::string::npos) {
+            e.failAt("crs", fmt::format("crs '{}' is not of the form EPSG:<code>", crs));
+        }
+        g.epsg = std::stoi(crs.substr(5));
+        std::vector<double> origin = e.doubles("origin");
+        if (origin.size() != 2) e.failAt("origin", "origin takes two numbers, easting and northing");
+        g.originEasting = origin[0];
+        g.originNorthing = origin[1];
+        try {
+            toGeographic(g, g.originEasting, g.originNorthing);
+        } catch (const std::invalid_argument &error) {
+            e.failAt("crs", fmt::format("crs '{}': {}", crs, error.what()));
+        }
+        e.checkLeaf();
+        scene_.georeference = g;
+    }
+
+    void readEnvironment(const XmlElement &e) {
+        EnvironmentDesc &env = scene_.environment;
+        env.loc = e.loc();
+        int sources = int(e.has("radiance")) + int(e.has("cubemap")) + int(e.has("sky"));
+        if (sources > 1) e.fail("give the environment one of 'radiance', 'cubemap' and 'sky'");
+        env.radiance = e.color("radiance", env.radiance, 0, 1e9f);
+        if (e.has("cubemap")) {
+            std::filesystem::path file = e.string("cubemap");
+            env.cubemap.file = file.is_absolute() ? file : baseDirectory_ / file;
+            env.cubemap.loc = e.attributeLoc("cubemap");
+            env.cubemap.colorSpace = e.string("colorspace", "");
+        }
+        if (e.has("sky")) {
+            std::string model = e.string("sky");
+            if (model != "preetham") e.failAt("sky", fmt::format("unknown sky model '{}' (preetham)", model));
+            env.sky = true;
+            env.turbidity = e.number("turbidity", env.turbidity, 1.7f, 10);
+            env.groundAlbedo = e.number("ground_albedo", env.groundAlbedo, 0, 1);
+        }
+        if (env.sky && e.has("rotation")) e.failAt("rotation", "the sky follows the sun; it cannot be rotated");
+        env.faceSize = e.integer("face_size", env.faceSize, 0, 8192);
+        env.rotationDegrees = e.number("rotation", env.rotationDegrees, -360, 360);
+        env.intensity = e.number("intensity", env.intensity, 0, 1e9f);
+        e.checkLeaf();
+    }
+
+    void addMaterial(MaterialDesc m, const XmlElement &e) {
+        for (const MaterialDesc &other : scene_.materials) {
+            if (other.material.name == m.material.name) {
+                e.failAt("name", fmt::format("material '{}' is already defined at {}", m.material.name, other.loc.toString()));
+            }
+        }
+        scene_.materials.push_back(std::move(m));
+    }
+
+    // <materials file="..."/>: every material of a material file, as if written here.
+    void readMaterialsInclude(const XmlElement &e) {
+        std::filesystem::path file = e.string("file");
+        e.checkLeaf();
+        if (file.is_relative()) file = baseDirectory_ / file;
+        std::vector<MaterialDesc> materials;
+        try {
+            materials = readMaterialFile(file);
+        } catch (const InputError &error) {
+            // A file that cannot be opened has no line of its own: point at the include.
+            if (error.loc().line == 0) e.failAt("file", error.what());
+            throw;
+        }
+        for (MaterialDesc &m : materials) {
+            for (const MaterialDesc &other : scene_.materials) {
+                if (other.material.name == m.material.name) {
+                    throw InputError(m.loc, fmt::format("material '{}' is already defined at {}", m.material.name,
+                                                        other.loc.toString()));
+                }
+            }
+            scene_.materials.push_back(std::move(m));
+        }
+    }
+
     void readSettings(const XmlElement &e) {
         RenderSettings &s = scene_.settings;
         s.samplesPerPixel = uint32_t(e.integer("spp", int(s.samplesPerPixel), 1, 1 << 24));
         s.maxDepth = uint32_t(e.integer("max_depth", int(s.maxDepth), 1, 1024));
         s.seed = e.unsignedInteger("seed", s.seed);
         s.tileSize = uint32_t(e.integer("tile_size", int(s.tileSize), 1, 4096));
-        e.checkLeaf();
-    }
-
-    void readMaterial(const XmlElement &e) {
-        MaterialDesc m{e.loc(), {}};
-        m.material.name = e.string("name");
-        m.material.diffuse = e.color("diffuse", m.material.diffuse, 0, 1);
-        for (const MaterialDesc &other : scene_.materials) {
-            if (other.material.name == m.material.name) {
-                e.failAt("name", fmt::format("material '{}' is already defined at {}", m.material.name, other.loc.toString()));
-            }
+        std::string filter = e.string("filter", "blackman-harris");
+        if (filter == "box") {
+            s.filter = {FilterKind::Box, 1.0f};
+        } else if (filter != "blackman-harris") {
+            e.failAt("filter", fmt::format("unknown filter '{}' (blackman-harris, box)", filter));
+        }
+        s.filter.width = e.number("filter_width", s.filter.width, 0.01f, 16);
+        std::string sampling = e.string("light_sampling", "mis");
+        if (sampling == "bsdf") {
+            s.lightSampling = LightSampling::Bsdf;
+        } else if (sampling == "light") {
+            s.lightSampling = LightSampling::Light;
+        } else if (sampling != "mis") {
+            e.failAt("light_sampling", fmt::format("unknown light sampling '{}' (mis, bsdf, light)", sampling));
         }
         e.checkLeaf();
-        scene_.materials.push_back(std::move(m));
     }
 
     void readPrototype(const XmlElement &e) {

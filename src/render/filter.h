@@ -1,0 +1,32 @@
+// The pixel reconstruction filter, by filter importance sampling (Ernst et al. 2006): each
+// camera ray's offset from the pixel centre is drawn with the filter's density, so every
+// sample has weight 1 and stays within its own pixel's sum. Unlike splatting, a pixel then
+// depends on its own samples only, which keeps images identical for any tile size or region.
+#pragma once
+
+#include <vector>
+
+#include "core/vecmath.h"
+#include "scene/render_settings.h"
+
+namespace veduta {
+
+// The 4-term Blackman–Harris window over [−width/2, width/2], unnormalised (1 at the centre).
+float blackmanHarris(float x, float width);
+
+class FilterSampler {
+  public:
+    explicit FilterSampler(const PixelFilter &filter);
+    // Offset from the pixel centre, in pixels, for a point of the unit square.
+    Vec2f sample(Vec2f u) const { return {offset(u.x), offset(u.y)}; }
+
+  private:
+    float offset(float u) const;
+
+    float width_;
+    // The inverse of the filter's 1D distribution function at evenly spaced probabilities,
+    // as Cycles tabulates it; the filter is separable, so x and y share it.
+    std::vector<float> inverseCdf_;
+};
+
+}  // namespace veduta
