@@ -72,8 +72,8 @@ void writeImageFile(const std::filesystem::path &file, const Image &image, const
     Image encoded = image;
     std::string space = keepsFloat ? config.linear() : knownSpace(file, "sRGB", config);
     config.fromLinear(encoded, space);
-    OIIO::ImageSpec spec =
-        keepAlpha(OIIO::ImageSpec(image.width, image.height, image.channels, keepsFloat ? OIIO::TypeFloat : OIIO::TypeUInt8));
+    const OIIO::TypeDesc format = keepsFloat ? OIIO::TypeFloat : OIIO::TypeUInt8;
+    OIIO::ImageSpec spec = keepAlpha(OIIO::ImageSpec(image.width, image.height, image.channels, format));
     spec.attribute("oiio:ColorSpace", space);
     if (extension == ".exr") spec.attribute("compression", "zip");
     writeFileAtomically(file, [&](const std::filesystem::path &temporary) {

@@ -239,7 +239,9 @@ class TexturesTest : public ImageLibraryTest {
         ImageLibraryTest::SetUp();
         std::vector<unsigned char> values;
         for (int y = 0; y < kCheckerSize; ++y) {
-            for (int x = 0; x < kCheckerSize; ++x) values.insert(values.end(), checkerTexel(x, y), checkerTexel(x, y) + 3);
+            for (int x = 0; x < kCheckerSize; ++x) {
+                values.insert(values.end(), checkerTexel(x, y), checkerTexel(x, y) + 3);
+            }
         }
         checker_ = write8Bit("checker.png", kCheckerSize, kCheckerSize, 3, values);
         textures_ = library_->makeTextures(cache());
@@ -323,7 +325,9 @@ TEST_F(TexturesTest, TexelCentresWithATinyFootprintGiveTheTexel) {
         for (int x = 0; x < kCheckerSize; ++x) {
             Vec2f uv = centre(x, y);
             std::vector<float> value = lookup(uv.x, uv.y, 1e-4f);
-            for (int c = 0; c < 3; ++c) EXPECT_NEAR(value[c], textureValue(checkerTexel(x, y)[c]), 1e-6) << x << " " << y;
+            for (int c = 0; c < 3; ++c) {
+                EXPECT_NEAR(value[c], textureValue(checkerTexel(x, y)[c]), 1e-6) << x << " " << y;
+            }
         }
     }
 }
