@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "app/commands.h"
+#include "core/program_folder.h"
 
 namespace veduta {
 
@@ -16,9 +17,7 @@ namespace {
 // veduta-diff is built and installed beside veduta. Where /proc is missing, the folder argv[0]
 // names serves; a bare name means veduta was found on PATH, and so is veduta-diff.
 std::string diffProgram(const char *argv0) {
-    std::error_code error;
-    std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
-    if (!error) return (self.parent_path() / "veduta-diff").string();
+    if (auto folder = runningProgramFolder()) return (*folder / "veduta-diff").string();
     std::filesystem::path invoked(argv0);
     return invoked.has_parent_path() ? (invoked.parent_path() / "veduta-diff").string() : "veduta-diff";
 }

@@ -29,7 +29,26 @@ class ImageLibrary {
 };
 
 // The image library from the plugin beside the running program; throws std::runtime_error
-// saying what is missing if it cannot be loaded. Loaded once, on first use.
+// saying what is missing if it cannot be loaded. Loaded once, on first use, thread-safe.
 ImageLibrary &imageLibrary();
+
+// Makes `library` the one imageLibrary() returns, instead of loading the plugin: for tests,
+// which link the implementation. Call it before anything uses imageLibrary().
+void setImageLibrary(std::unique_ptr<ImageLibrary> library);
+
+// The plugin imageLibrary() loads: $VEDUTA_IMAGE_PLUGIN if set, else veduta-images.so beside
+// the running program.
+std::filesystem::path imagePluginPath();
+// Loads the plugin `file` and creates its library; throws std::runtime_error naming the file
+// and the reason. The plugin stays loaded until the process ends.
+std::unique_ptr<ImageLibrary> loadImageLibrary(const std::filesystem::path &file);
+
+// The plugin's entry point, which returns a new library owned by the caller.
+inline constexpr const char *kImagePluginEntry = "vedutaCreateImageLibrary";
+using CreateImageLibraryFunction = ImageLibrary *();
+
+// Where converted textures are kept between runs: $VEDUTA_CACHE_DIR if set, else
+// $XDG_CACHE_HOME/veduta/textures, else ~/.cache/veduta/textures.
+std::filesystem::path defaultTextureCacheDirectory();
 
 }  // namespace veduta

@@ -1,0 +1,88 @@
+#include "images/image_files.h"
+
+#include <algorithm>
+#include <cctype>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "core/error.h"
+#include "io/atomic_file.h"
+
+namespace veduta {
+
+namespace {
+
+// Alpha stays as the file stores it: OpenImageIO would otherwise premultiply the colour of
+// formats with unassociated alpha (PNG) on reading and divide it on writing.
+OIIO::ImageSpec keepAlpha(OIIO::ImageSpec spec) {
+    spec.attribute("oiio:UnassociatedAlpha", 1);
+    return spec;
+}
+
+std::unique_ptr<OIIO::ImageInput> openImage(const std::filesystem::path &file) {
+    const OIIO::ImageSpec hints = keepAlpha(OIIO::ImageSpec());
+    std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::open(file.string(), &hints);
+    if (!input) throw InputError(FileLoc{file.string()}, OIIO::geterror());
+    if (input->spec().deep) throw InputError(FileLoc{file.string()}, "deep images are not supported");
+    return input;
+}
+
+std::string knownSpace(const std::filesystem::path &file, const std::string &name, const ColorConfig &config) {
+    if (auto found = config.find(name)) return *found;
+    throw InputError(FileLoc{file.string()},
+                     fmt::format("unknown colour space '{}' (the colour configuration has: {})", name, config.names()));
+}
+
+std::string lowercaseExtension(const std::filesystem::path &file) {
+    std::string extension = file.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    return extension;
+}
+
+}  // namespace
+
+OIIO::ImageSpec readImageSpec(const std::filesystem::path &file) { return openImage(file)->spec(); }
+
+std::string fileColorSpace(const std::filesystem::path &file, const OIIO::ImageSpec &spec,
+                           const std::string &requested, const ColorConfig &config) {
+    if (!requested.empty()) return knownSpace(file, requested, config);
+    if (auto declared = config.find(spec.get_string_attribute("oiio:ColorSpace"))) return *declared;
+    bool isFloat = spec.format.basetype == OIIO::TypeDesc::FLOAT || spec.format.basetype == OIIO::TypeDesc::HALF ||
+                   spec.format.basetype == OIIO::TypeDesc::DOUBLE;
+    return isFloat ? config.linear() : knownSpace(file, "sRGB", config);
+}
+
+Image readImageFile(const std::filesystem::path &file, const std::string &colorSpace, const ColorConfig &config) {
+    std::unique_ptr<OIIO::ImageInput> input = openImage(file);
+    const OIIO::ImageSpec &spec = input->spec();
+    std::string space = fileColorSpace(file, spec, colorSpace, config);
+    Image image(spec.width, spec.height, spec.nchannels);
+    if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeFloat, image.pixels.data())) {
+        throw InputError(FileLoc{file.string()}, input->geterror());
+    }
+    config.toLinear(image, space);
+    return image;
+}
+
+void writeImageFile(const std::filesystem::path &file, const Image &image, const ColorConfig &config) {
+    std::string extension = lowercaseExtension(file);
+    bool keepsFloat = extension == ".exr" || extension == ".hdr";
+    Image encoded = image;
+    std::string space = keepsFloat ? config.linear() : knownSpace(file, "sRGB", config);
+    config.fromLinear(encoded, space);
+    const OIIO::TypeDesc format = keepsFloat ? OIIO::TypeFloat : OIIO::TypeUInt8;
+    OIIO::ImageSpec spec = keepAlpha(OIIO::ImageSpec(image.width, image.height, image.channels, format));
+    spec.attribute("oiio:ColorSpace", space);
+    if (extension == ".exr") spec.attribute("compression", "zip");
+    writeFileAtomically(file, [&](const std::filesystem::path &temporary) {
+        std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create(temporary.string());
+        if (!output) throw std::runtime_error(fmt::format("{}: {}", file.string(), OIIO::geterror()));
+        bool written = output->open(temporary.string(), spec) &&
+                       output->write_image(OIIO::TypeFloat, encoded.pixels.data()) && output->close();
+        if (!written) throw std::runtime_error(fmt::format("{}: {}", file.string(), output->geterror()));
+    });
+}
+
+}  // namespace veduta

@@ -1,0 +1,58 @@
+#include "images/oiio_textures.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "core/error.h"
+#include "images/image_files.h"
+#include "images/texture_cache.h"
+
+namespace veduta {
+
+OiioTextures::OiioTextures(std::filesystem::path cacheDirectory, std::shared_ptr<const ColorConfig> config)
+    : cacheDirectory_(std::move(cacheDirectory)),
+      config_(std::move(config)),
+      system_(OIIO::TextureSystem::create(/*shared=*/false)) {}
+
+OiioTextures::~OiioTextures() { OIIO::TextureSystem::destroy(system_, /*teardown_imagecache=*/true); }
+
+TextureId OiioTextures::add(const std::filesystem::path &file, const std::string &colorSpace) {
+    // The resolved name, so that "" and the file's own space, or an alias and its name, share an id.
+    std::string space = fileColorSpace(file, readImageSpec(file), colorSpace, *config_);
+    std::lock_guard lock(addMutex_);
+    auto key = std::make_pair(std::filesystem::absolute(file).lexically_normal().string(), space);
+    if (auto found = ids_.find(key); found != ids_.end()) return found->second;
+    entries_.push_back(open(cachedTexture(cacheDirectory_, file, space, *config_), file));
+    TextureId id = TextureId(entries_.size() - 1);
+    ids_.emplace(key, id);
+    return id;
+}
+
+OiioTextures::Entry OiioTextures::open(const std::filesystem::path &texture, const std::filesystem::path &file) {
+    Entry entry;
+    entry.handle = system_->get_texture_handle(OIIO::ustring(texture.string()));
+    if (!entry.handle || !system_->get_texture_info(entry.handle, nullptr, 0, OIIO::ustring("channels"),
+                                                    OIIO::TypeInt, &entry.channels)) {
+        throw InputError(FileLoc{file.string()},
+                         fmt::format("cannot open its texture {}: {}", texture.string(), system_->geterror()));
+    }
+    return entry;
+}
+
+void OiioTextures::lookup(TextureId id, Vec2f uv, float footprint, float *out, int count) const {
+    const Entry &entry = entries_[id];
+    OIIO::TextureOpt options;
+    options.swrap = options.twrap = OIIO::TextureOpt::WrapPeriodic;
+    options.mipmode = OIIO::TextureOpt::MipModeTrilinear;  // deterministic, unlike the stochastic modes
+    options.interpmode = OIIO::TextureOpt::InterpBilinear;
+    // OpenImageIO's t runs down from the top row; our v runs up.
+    float s = uv.x, t = 1.0f - uv.y;
+    if (!system_->texture(entry.handle, system_->get_perthread_info(), options, s, t, footprint, 0.0f, 0.0f,
+                          footprint, std::min(count, entry.channels), out)) {
+        throw std::runtime_error(fmt::format("texture lookup failed: {}", system_->geterror()));
+    }
+}
+
+}  // namespace veduta

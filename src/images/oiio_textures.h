@@ -1,0 +1,48 @@
+// Textures through OpenImageIO's TextureSystem: files converted once into the texture cache
+// (src/images/texture_cache.h), looked up with trilinear mip-map filtering.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <OpenImageIO/texture.h>
+
+#include "images/color_config.h"
+#include "scene/textures.h"
+
+namespace veduta {
+
+class OiioTextures final : public Textures {
+  public:
+    OiioTextures(std::filesystem::path cacheDirectory, std::shared_ptr<const ColorConfig> config);
+    ~OiioTextures() override;
+    OiioTextures(const OiioTextures &) = delete;
+    OiioTextures &operator=(const OiioTextures &) = delete;
+
+    // Not to be called while lookups run: lookups read the entries without a lock.
+    TextureId add(const std::filesystem::path &file, const std::string &colorSpace) override;
+    int channels(TextureId id) const override { return entries_.at(id).channels; }
+    void lookup(TextureId id, Vec2f uv, float footprint, float *out, int count) const override;
+
+  private:
+    struct Entry {
+        OIIO::TextureSystem::TextureHandle *handle = nullptr;
+        int channels = 0;
+    };
+
+    Entry open(const std::filesystem::path &texture, const std::filesystem::path &file);
+
+    std::filesystem::path cacheDirectory_;
+    std::shared_ptr<const ColorConfig> config_;
+    OIIO::TextureSystem *system_;  // our own, not OpenImageIO's shared one
+    std::mutex addMutex_;
+    std::map<std::pair<std::string, std::string>, TextureId> ids_;  // (absolute path, colour space)
+    std::vector<Entry> entries_;
+};
+
+}  // namespace veduta
