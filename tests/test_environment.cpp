@@ -1,0 +1,14 @@
+// The test program's surroundings, set before any test runs: it does not stand beside the
+// image plugin, so it is told where the plugin is, and converted textures go to the build
+// tree rather than the user's cache. Values already in the environment win.
+#include <cstdlib>
+
+namespace {
+
+const bool kEnvironmentSet = [] {
+    setenv("VEDUTA_IMAGE_PLUGIN", VEDUTA_IMAGE_PLUGIN_FILE, 0);
+    setenv("VEDUTA_CACHE_DIR", VEDUTA_TEST_CACHE, 0);
+    return true;
+}();
+
+}  // namespace
