@@ -21,7 +21,8 @@ class CubemapDistribution {
 
     // u ∈ [0, 1)², from the caller's sampler: no random numbers are drawn here.
     EnvironmentSample sample(Vec2f u) const;
-    // The density `sample` draws a unit direction with; 0 exactly where the cubemap's lookup is 0.
+    // The density `sample` draws a unit direction with; positive wherever the cubemap's lookup
+    // is, 0 in texels whose whole neighbourhood is black.
     float pdf(const Vec3f &direction) const;
 
   private:

@@ -115,13 +115,13 @@ Vec2f latLongPosition(const Vec3f &d) {
 }
 
 Cubemap cubemapFromFaces(const std::array<Image, kCubeFaceCount> &faces) {
+    const Image &first = faces[0];
     for (int f = 0; f < kCubeFaceCount; ++f) {
         const Image &face = faces[size_t(f)];
         checkImage(face, faceLabel(f));
         if (face.width != face.height) {
             throw LayoutError(fmt::format("{} is {}x{}, faces must be square", faceLabel(f), face.width, face.height));
         }
-        const Image &first = faces[0];
         if (face.width != first.width) {
             throw LayoutError(fmt::format("{} is {}x{} but {} is {}x{}, all faces must be the same size", faceLabel(f),
                                           face.width, face.height, faceLabel(0), first.width, first.height));
@@ -185,8 +185,9 @@ std::array<Image, kCubeFaceCount> facesFromCubemap(const Cubemap &cubemap) {
 Image crossFromCubemap(const Cubemap &cubemap, bool vertical) {
     int n = cubemap.size();
     Image cross(vertical ? 3 * n : 4 * n, vertical ? 4 * n : 3 * n, 3);
-    forEachCrossPixel(vertical ? kVerticalCross : kHorizontalCross, n,
-                      [&](int face, int x, int y, int cx, int cy) { setRgb(cross, cx, cy, cubemap.texel(face, x, y)); });
+    forEachCrossPixel(vertical ? kVerticalCross : kHorizontalCross, n, [&](int face, int x, int y, int cx, int cy) {
+        setRgb(cross, cx, cy, cubemap.texel(face, x, y));
+    });
     return cross;
 }
 
