@@ -33,6 +33,13 @@ struct CubeTexel {
     float x = 0, y = 0;
 };
 
+// The geometry of a cube of size×size texels per face, which needs no texels: the sampling
+// distribution shares it without holding the radiance. The Cubemap members below call these.
+inline float cubeFaceCoordinate(float position, int size) { return 2 * position / float(size) - 1; }
+Vec3f cubeDirection(int size, int face, float x, float y);
+CubeTexel cubeLocate(int size, const Vec3f &direction);
+double cubeTexelSolidAngle(int size, int x, int y);
+
 class Cubemap {
   public:
     Cubemap() = default;
@@ -52,6 +59,10 @@ class Cubemap {
     Vec3f lookup(const Vec3f &direction) const;
     // The solid angle a texel subtends.
     float texelSolidAngle(int x, int y) const;
+    // A texel, or for x or y one beyond a face's edge (−1 or size) the texel of the
+    // neighbouring face that adjoins across that edge; one beyond a corner, the mean of the
+    // three texels that meet at the cube's corner. The lookup's bilinear taps come from here.
+    Vec3f texelAcrossEdges(int face, int x, int y) const;
 
   private:
     int size_ = 0;

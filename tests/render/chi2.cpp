@@ -19,7 +19,7 @@ Vec3f directionAt(double cosTheta, double phi) {
 }  // namespace
 
 Chi2Result chi2Test(const std::function<Vec3f(Vec2f)> &sample, const std::function<float(const Vec3f &)> &pdf,
-                    int sampleCount, int thetaBins, int phiBins) {
+                    int sampleCount, int thetaBins, int phiBins, int subdivisions) {
     // Cells are equal in cos θ and φ, hence equal in solid angle.
     auto cellOf = [&](const Vec3f &d) {
         int i = std::clamp(int((d.z + 1) * 0.5f * float(thetaBins)), 0, thetaBins - 1);
@@ -38,19 +38,18 @@ Chi2Result chi2Test(const std::function<Vec3f(Vec2f)> &sample, const std::functi
         observed[size_t(cellOf(d))] += 1;
     }
     // Integrate the density over each cell with a fine midpoint rule.
-    constexpr int kSub = 8;
     double cellSolidAngle = (2.0 / thetaBins) * (2 * M_PI / phiBins);
     for (int i = 0; i < thetaBins; ++i) {
         for (int j = 0; j < phiBins; ++j) {
             double sum = 0;
-            for (int a = 0; a < kSub; ++a) {
-                for (int b = 0; b < kSub; ++b) {
-                    double cosTheta = -1 + 2.0 * (i + (a + 0.5) / kSub) / thetaBins;
-                    double phi = 2 * M_PI * (j + (b + 0.5) / kSub) / phiBins;
+            for (int a = 0; a < subdivisions; ++a) {
+                for (int b = 0; b < subdivisions; ++b) {
+                    double cosTheta = -1 + 2.0 * (i + (a + 0.5) / subdivisions) / thetaBins;
+                    double phi = 2 * M_PI * (j + (b + 0.5) / subdivisions) / phiBins;
                     sum += pdf(directionAt(cosTheta, phi));
                 }
             }
-            expected[size_t(i * phiBins + j)] = sum / (kSub * kSub) * cellSolidAngle * sampleCount;
+            expected[size_t(i * phiBins + j)] = sum / (subdivisions * subdivisions) * cellSolidAngle * sampleCount;
         }
     }
     // Pool cells expecting fewer than 5 samples into one, as pbrt does.

@@ -17,8 +17,10 @@ struct Chi2Result {
 };
 
 // `sample` maps a point of the unit square to a unit direction; `pdf` is its density in
-// solid angle. Uses `sampleCount` uniform random points from a fixed-seed generator.
+// solid angle. Uses `sampleCount` uniform random points from a fixed-seed generator. Each
+// cell's expected count integrates `pdf` at subdivisions² points; densities with jumps
+// inside cells (piecewise-constant ones) need more than smooth ones.
 Chi2Result chi2Test(const std::function<Vec3f(Vec2f)> &sample, const std::function<float(const Vec3f &)> &pdf,
-                    int sampleCount = 1000000, int thetaBins = 40, int phiBins = 80);
+                    int sampleCount = 1000000, int thetaBins = 40, int phiBins = 80, int subdivisions = 8);
 
 }  // namespace veduta::test
