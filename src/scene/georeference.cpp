@@ -51,8 +51,9 @@ Projection projection(int epsg) {
         case 31468: return {"DHDN / 3-degree Gauss-Kruger zone 4", gaussKruegerBessel(), 12, 4500000};
         case 31469: return {"DHDN / 3-degree Gauss-Kruger zone 5", gaussKruegerBessel(), 15, 5500000};
         default:
-            throw std::invalid_argument(fmt::format(
-                "EPSG:{} is not supported; use 25832, 25833, 32632, 32633 (UTM) or 31466 to 31469 (Gauss-Kruger)", epsg));
+            throw std::invalid_argument(fmt::format("EPSG:{} is not supported; use 25832, 25833, 32632, 32633 (UTM) "
+                                                    "or 31466 to 31469 (Gauss-Kruger)",
+                                                    epsg));
     }
 }
 

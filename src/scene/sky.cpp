@@ -129,7 +129,8 @@ Cubemap bakePreethamSky(const Vec3f &sunDirection, const Vec3f &sunIrradiance, c
     auto forEachTexel = [&](auto &&f) {
         for (int face = 0; face < kCubeFaceCount; ++face)
             for (int y = 0; y < sky.size(); ++y)
-                for (int x = 0; x < sky.size(); ++x) f(face, x, y, sky.direction(face, float(x) + 0.5f, float(y) + 0.5f));
+                for (int x = 0; x < sky.size(); ++x)
+                    f(face, x, y, sky.direction(face, float(x) + 0.5f, float(y) + 0.5f));
     };
     forEachTexel([&](int face, int x, int y, const Vec3f &d) {
         if (d.z <= 0) return;

@@ -43,7 +43,8 @@ void parseDate(std::string_view text, CivilTime &t) {
     t.day = digitsAt(text, 8, 2);
     if (text.size() != 10 || text[4] != '-' || text[7] != '-' || t.year < 0 || t.month < 0 || t.day < 0)
         throw std::invalid_argument(fmt::format("date '{}' is not of the form YYYY-MM-DD", text));
-    if (t.month < 1 || t.month > 12) throw std::invalid_argument(fmt::format("date '{}' has no month {}", text, t.month));
+    if (t.month < 1 || t.month > 12)
+        throw std::invalid_argument(fmt::format("date '{}' has no month {}", text, t.month));
     if (t.day < 1 || t.day > daysInMonth(t.year, t.month))
         throw std::invalid_argument(fmt::format("date '{}' has no day {} in that month", text, t.day));
 }
@@ -142,15 +143,17 @@ SolarAngles solarPositionNoaa(const CivilTime &time, double latitude, double lon
 
     double y = tanDeg(obliquity / 2) * tanDeg(obliquity / 2);
     double L = meanLongitude * kRadians, M = meanAnomaly * kRadians, e = eccentricity;
-    double equationOfTimeMinutes = 4 * kDegrees *
-                                   (y * std::sin(2 * L) - 2 * e * std::sin(M) + 4 * e * y * std::sin(M) * std::cos(2 * L) -
-                                    0.5 * y * y * std::sin(4 * L) - 1.25 * e * e * std::sin(2 * M));
+    double equationOfTimeMinutes =
+        4 * kDegrees *
+        (y * std::sin(2 * L) - 2 * e * std::sin(M) + 4 * e * y * std::sin(M) * std::cos(2 * L) -
+         0.5 * y * y * std::sin(4 * L) - 1.25 * e * e * std::sin(2 * M));
 
     double utcMinutes = (decimalHours(time) - time.utcOffsetHours) * 60;
     double trueSolarTime = positiveModulo(utcMinutes + equationOfTimeMinutes + 4 * longitude, 1440);
     double hourAngle = trueSolarTime / 4 - 180;
 
-    double cosZenith = sinDeg(latitude) * sinDeg(declination) + cosDeg(latitude) * cosDeg(declination) * cosDeg(hourAngle);
+    double cosZenith =
+        sinDeg(latitude) * sinDeg(declination) + cosDeg(latitude) * cosDeg(declination) * cosDeg(hourAngle);
     double zenith = std::acos(std::clamp(cosZenith, -1.0, 1.0)) * kDegrees;
     SolarAngles angles = anglesFromZenith(zenith, hourAngle, declination, latitude);
     angles.elevationDegrees += noaaRefractionDegrees(angles.elevationDegrees);
@@ -176,7 +179,8 @@ SolarAngles solarPositionPsa(const CivilTime &time, double latitude, double long
     double hourAngle = (greenwichSiderealHours * 15 + longitude) * kRadians - rightAscension;
 
     double lat = latitude * kRadians;
-    double cosZenith = std::cos(lat) * std::cos(hourAngle) * std::cos(declination) + std::sin(declination) * std::sin(lat);
+    double cosZenith =
+        std::cos(lat) * std::cos(hourAngle) * std::cos(declination) + std::sin(declination) * std::sin(lat);
     double zenith = std::acos(std::clamp(cosZenith, -1.0, 1.0));
     constexpr double kEarthMeanRadiusKm = 6371.01, kAstronomicalUnitKm = 149597890;
     zenith += kEarthMeanRadiusKm / kAstronomicalUnitKm * std::sin(zenith);  // parallax

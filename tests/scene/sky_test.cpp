@@ -49,7 +49,8 @@ TEST(Sky, ZenithLuminanceFollowsPreethamsFormula) {
     Cubemap sky = bakePreethamSky(Sun::directionFromAzimuthElevation(135, 60), kSunIrradiance, settings);
     Vec3f zenith = sky.texel(kUp, 16, 16);
     ASSERT_NEAR(sky.direction(kUp, 16.5f, 16.5f).z, 1, 1e-6);
-    double expected = preethamZenithLuminance(M_PI / 6, 3) * luminance(kSunIrradiance) / sunDirectNormalIlluminance(60, 3);
+    double expected =
+        preethamZenithLuminance(M_PI / 6, 3) * luminance(kSunIrradiance) / sunDirectNormalIlluminance(60, 3);
     std::printf("zenith luminance %.6f, expected Y_z %.4f kcd/m2 * 3 / E_sun %.4f klx = %.6f\n", luminance(zenith),
                 preethamZenithLuminance(M_PI / 6, 3), sunDirectNormalIlluminance(60, 3), expected);
     EXPECT_NEAR(luminance(zenith), expected, 1e-5 * expected);
@@ -97,7 +98,8 @@ TEST(Sky, SymmetricAboutTheSunsVerticalPlane) {
             if (distance < nearest) nearest = distance, other = L2;
         });
         ASSERT_LT(nearest, 1e-5);
-        for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(double(L[c]) - other[c]) / std::max(1e-6, double(L[c])));
+        for (int c = 0; c < 3; ++c)
+            worst = std::max(worst, std::abs(double(L[c]) - other[c]) / std::max(1e-6, double(L[c])));
         ++compared;
     });
     std::printf("%d texels against their mirror images: largest relative difference %.2e\n", compared, worst);
@@ -109,7 +111,8 @@ TEST(Sky, SymmetricAboutTheSunsVerticalPlane) {
 TEST(Sky, ReddensAsTheSunSets) {
     double previous = 0;
     for (float elevation : {70.0f, 45.0f, 25.0f, 12.0f, 5.0f, 2.0f}) {
-        Cubemap sky = bakePreethamSky(Sun::directionFromAzimuthElevation(200, elevation), kSunIrradiance, SkySettings{});
+        Vec3f sun = Sun::directionFromAzimuthElevation(200, elevation);
+        Cubemap sky = bakePreethamSky(sun, kSunIrradiance, SkySettings{});
         Vec3f e = skyIrradiance(sky);
         double redOverBlue = e.x / e.z;
         std::printf("sun elevation %4.1f: sky irradiance RGB %.4f %.4f %.4f, R/B %.4f\n", elevation, e.x, e.y, e.z,
@@ -124,7 +127,9 @@ TEST(Sky, ReddensAsTheSunSets) {
 double preethamLuminance(double cosTheta, double gamma, double thetaS, double T) {
     double A = 0.1787 * T - 1.4630, B = -0.3554 * T + 0.4275, C = -0.0227 * T + 5.3251, D = 0.1206 * T - 2.5771,
            E = -0.0670 * T + 0.3703;
-    auto F = [&](double c, double g) { return (1 + A * std::exp(B / c)) * (1 + C * std::exp(D * g) + E * std::cos(g) * std::cos(g)); };
+    auto F = [&](double c, double g) {
+        return (1 + A * std::exp(B / c)) * (1 + C * std::exp(D * g) + E * std::cos(g) * std::cos(g));
+    };
     return preethamZenithLuminance(thetaS, T) * F(cosTheta, gamma) / F(1, thetaS);
 }
 
@@ -154,9 +159,11 @@ TEST(Sky, SkyToSunRatioIsPreethamsAndGrowsWithHaze) {
             double theta = (i + 0.5) * (M_PI / 2) / kThetaSteps;
             for (int j = 0; j < kPhiSteps; ++j) {
                 double phi = (j + 0.5) * 2 * M_PI / kPhiSteps;
-                Vec3f d{float(std::sin(theta) * std::cos(phi)), float(std::sin(theta) * std::sin(phi)), float(std::cos(theta))};
+                Vec3f d{float(std::sin(theta) * std::cos(phi)), float(std::sin(theta) * std::sin(phi)),
+                        float(std::cos(theta))};
                 double gamma = angleDegrees(d, sun) * M_PI / 180;
-                integral += preethamLuminance(std::cos(theta), gamma, thetaS, turbidity) * std::cos(theta) * std::sin(theta);
+                double cosTheta = std::cos(theta);
+                integral += preethamLuminance(cosTheta, gamma, thetaS, turbidity) * cosTheta * std::sin(theta);
             }
         }
         integral *= (M_PI / 2 / kThetaSteps) * (2 * M_PI / kPhiSteps);  // klx

@@ -124,7 +124,8 @@ TEST(SunPosition, NoaaAndPsaAgreeOverGermanyFrom1950To2050) {
                         SolarAngles psa = psaWithRefraction(t, latitude, longitude);
                         worstAzimuth = std::max(worstAzimuth,
                                                 std::abs(azimuthDifference(noaa.azimuthDegrees, psa.azimuthDegrees)));
-                        worstElevation = std::max(worstElevation, std::abs(noaa.elevationDegrees - psa.elevationDegrees));
+                        worstElevation =
+                            std::max(worstElevation, std::abs(noaa.elevationDegrees - psa.elevationDegrees));
                         ++count;
                     }
                 }
