@@ -65,6 +65,7 @@ struct Frame {
         return {{1 + sign * n.x * n.x * a, sign * b, -sign * n.x}, {b, sign + n.y * n.y * a, -n.y}, n};
     }
     Vec3f toWorld(const Vec3f &v) const { return s * v.x + t * v.y + n * v.z; }
+    Vec3f toLocal(const Vec3f &v) const { return {dot(v, s), dot(v, t), dot(v, n)}; }
 };
 
 // Affine transform stored as a 3x4 row-major matrix, the layout Embree's

@@ -33,6 +33,9 @@ bool hasNormals(const Mesh &m) { return !m.positions.empty() && m.normals.size()
 
 void Mesh::append(const Mesh &other, const Transform &transform) {
     if (other.triangleCount() == 0) return;
+    // Tangents are computed on the finished mesh (computeTangents); a partial set would be wrong.
+    tangents.clear();
+    bitangentSigns.clear();
     if (positions.empty()) {
         normals.clear();
         uvs.clear();

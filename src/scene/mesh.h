@@ -25,7 +25,8 @@ struct Mesh {
     size_t triangleCount() const { return indices.size() / 3; }
     size_t vertexCount() const { return positions.size(); }
 
-    // Appends `other` with `transform` applied, keeping its per-triangle materials.
+    // Appends `other` with `transform` applied, keeping its per-triangle materials. Clears the
+    // tangents: compute them once the mesh is complete.
     void append(const Mesh &other, const Transform &transform);
     // Gives every triangle the same material.
     void setMaterial(MaterialId material);

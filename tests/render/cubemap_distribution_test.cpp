@@ -45,8 +45,10 @@ Cubemap gradientMap() {
 void expectSamplesMatchDensity(const Cubemap &cube, const char *name) {
     CubemapDistribution distribution(cube);
     // Densities jump at texel edges inside the test's cells: integrate each cell finely.
+    test::Chi2Options options;
+    options.subdivisions = 48;
     test::Chi2Result r = test::chi2Test([&](Vec2f u) { return distribution.sample(u).direction; },
-                                        [&](const Vec3f &d) { return distribution.pdf(d); }, 1000000, 40, 80, 48);
+                                        [&](const Vec3f &d) { return distribution.pdf(d); }, options);
     std::printf("[ chi2     ] %s: statistic %.1f, dof %d, p-value %.4f (alpha %.5f)\n", name, r.statistic,
                 r.degreesOfFreedom, r.pValue, kAlpha);
     EXPECT_GT(r.pValue, kAlpha) << name << ": chi2 " << r.statistic << " dof " << r.degreesOfFreedom;

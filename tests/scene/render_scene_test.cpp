@@ -32,9 +32,11 @@ TEST(Mesh, AppendingFacetedToSmoothKeepsBothLooks) {
     Mesh smooth = makeShape({ShapeKind::Sphere});
     Mesh merged;
     merged.append(smooth, Transform{});
-    merged.append(makeShape({}), Transform::translate({3, 0, 0}));
+    ShapeSpec prism{ShapeKind::Cylinder};
+    prism.smooth = false;
+    merged.append(makeShape(prism), Transform::translate({3, 0, 0}));
     ASSERT_EQ(merged.normals.size(), merged.positions.size());
-    // The box's triangles got face normals: each is perpendicular to its triangle.
+    // The prism's triangles got face normals: each is perpendicular to its triangle.
     size_t t = smooth.triangleCount();
     const uint32_t *idx = &merged.indices[3 * t];
     Vec3f n = normalize(cross(merged.positions[idx[1]] - merged.positions[idx[0]],

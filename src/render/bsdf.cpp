@@ -1,0 +1,139 @@
+#include "render/bsdf.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/phong.h"
+#include "render/sampling.h"
+
+namespace veduta {
+
+namespace {
+
+float luminance(const Vec3f &c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
+
+Vec3f clamp01(const Vec3f &c) {
+    return {std::clamp(c.x, 0.0f, 1.0f), std::clamp(c.y, 0.0f, 1.0f), std::clamp(c.z, 0.0f, 1.0f)};
+}
+
+Vec3f nonNegative(const Vec3f &c) { return {std::max(c.x, 0.0f), std::max(c.y, 0.0f), std::max(c.z, 0.0f)}; }
+
+Vec3f reflect(const Vec3f &w, const Vec3f &n) { return n * (2 * dot(n, w)) - w; }
+
+// R' = R + T²R / (1 − R²) = 2R / (1 + R): the light a pane returns after any number of bounces
+// between its faces, with T = 1 − R at each (no absorption inside).
+float thinGlassReflectance(float cosTheta, float ior) {
+    float r = fresnelDielectric(cosTheta, ior);
+    return 2 * r / (1 + r);
+}
+
+}  // namespace
+
+float fresnelDielectric(float cosTheta, float ior) {
+    float cosI = std::min(std::abs(cosTheta), 1.0f);
+    float sin2T = (1 - cosI * cosI) / (ior * ior);
+    float cosT = std::sqrt(std::max(0.0f, 1 - sin2T));
+    float rs = (cosI - ior * cosT) / (cosI + ior * cosT);
+    float rp = (ior * cosI - cosT) / (ior * cosI + cosT);
+    return 0.5f * (rs * rs + rp * rp);
+}
+
+Vec3f thinGlassTransmittance(float cosTheta, float ior, const Vec3f &tint) {
+    return tint * (1 - thinGlassReflectance(cosTheta, ior));
+}
+
+Bsdf::Bsdf(const BsdfInputs &inputs, const Vec3f &shadingNormal, const Vec3f &geometricNormal)
+    : frame_(Frame::fromNormal(shadingNormal)), geometricNormal_(geometricNormal), mirror_(clamp01(inputs.mirror)),
+      exponent_(std::clamp(inputs.exponent, kMinPhongExponent, kMaxPhongExponent)), thinGlass_(inputs.thinGlass),
+      ior_(inputs.ior), glassTint_(inputs.glassTint) {
+    Vec3f kd = nonNegative(inputs.diffuse), ks = nonNegative(inputs.specular);
+    float sum = maxComponent(kd + ks);
+    if (sum > 1) {
+        kd = kd / sum;
+        ks = ks / sum;
+    }
+    Vec3f rest = Vec3f(1.0f) - mirror_;
+    diffuse_ = kd * rest;
+    specular_ = ks * rest;
+    // The diffuse lobe around a tilted shading normal. Directions below the geometric surface
+    // are rejected (no light leaks, and no light from inside the object), which cuts away the
+    // part of the shading normal's cosine lobe beyond the geometric horizon: a surface tilted
+    // by β sees (1 + cos β)/2 of it (the sky view factor of a tilted plane). Dividing by that
+    // fraction gives the lobe its albedo k_d back for every wo, so a normal-mapped plane in a
+    // white furnace stays white, and it leaves no black edges because the rejection only
+    // removes directions, never darkens the ones kept. The factor depends on the normals only,
+    // so the lobe stays symmetric in wo and wi. Chiang et al.'s terminator term (Cycles 3.4)
+    // would instead darken the lobe by the shadowing it models, which fails the furnace.
+    float cosTilt = std::clamp(dot(shadingNormal, geometricNormal), -1.0f, 1.0f);
+    diffuseScale_ = 2 / std::max(1 + cosTilt, 1e-3f);
+}
+
+// Both directions above the geometric surface. wo always is; checking it too keeps eval
+// symmetric in its arguments.
+bool Bsdf::aboveSurface(const Vec3f &wo, const Vec3f &wi) const {
+    return dot(wo, geometricNormal_) > 0 && dot(wi, geometricNormal_) > 0;
+}
+
+bool Bsdf::hasNonDeltaLobe() const { return !thinGlass_ && (maxComponent(diffuse_) > 0 || maxComponent(specular_) > 0); }
+
+Bsdf::LobeProbabilities Bsdf::lobeProbabilities(float cosThetaO) const {
+    float albedo = phongAlbedo(cosThetaO, exponent_), specular = luminance(specular_);
+    LobeProbabilities p{luminance(diffuse_) + specular * (1 - albedo), specular * albedo, luminance(mirror_)};
+    float total = p.cosine + p.phong + p.mirror;
+    if (total <= 0) return {};
+    return {p.cosine / total, p.phong / total, p.mirror / total};
+}
+
+Vec3f Bsdf::eval(const Vec3f &wo, const Vec3f &wi) const {
+    if (thinGlass_ || !aboveSurface(wo, wi)) return Vec3f(0.0f);
+    Vec3f o = frame_.toLocal(wo), i = frame_.toLocal(wi);
+    if (o.z <= 0 || i.z <= 0) return Vec3f(0.0f);
+    Vec3f f = diffuse_ * (kInvPi * diffuseScale_) +
+              specular_ * (phongLobe(o, i, exponent_) + phongCompensation(o.z, i.z, exponent_));
+    return f * i.z;
+}
+
+float Bsdf::pdf(const Vec3f &wo, const Vec3f &wi) const {
+    if (thinGlass_ || !aboveSurface(wo, wi)) return 0;
+    Vec3f o = frame_.toLocal(wo), i = frame_.toLocal(wi);
+    if (o.z <= 0 || i.z <= 0) return 0;
+    LobeProbabilities p = lobeProbabilities(o.z);
+    return p.cosine * cosineHemispherePdf(i.z) + p.phong * phongPdf(o, i, exponent_);
+}
+
+std::optional<BsdfSample> Bsdf::sample(const Vec3f &wo, float uLobe, Vec2f u) const {
+    if (thinGlass_) return sampleGlass(wo, uLobe);
+    Vec3f o = frame_.toLocal(wo);
+    if (o.z <= 0) return std::nullopt;
+    LobeProbabilities p = lobeProbabilities(o.z);
+    if (uLobe >= p.cosine + p.phong) {
+        if (p.mirror <= 0) return std::nullopt;
+        Vec3f wi = reflect(wo, frame_.n);
+        if (dot(wi, geometricNormal_) <= 0) return std::nullopt;
+        return BsdfSample{wi, mirror_ / p.mirror, p.mirror, true};
+    }
+    Vec3f i;
+    if (uLobe < p.cosine) {
+        i = sampleCosineHemisphere(u);
+    } else if (std::optional<Vec3f> s = samplePhong(o, exponent_, u)) {
+        i = *s;
+    } else {
+        return std::nullopt;
+    }
+    Vec3f wi = frame_.toWorld(i);
+    float density = pdf(wo, wi);
+    if (density <= 0) return std::nullopt;
+    return BsdfSample{wi, eval(wo, wi) / density, density, false};
+}
+
+std::optional<BsdfSample> Bsdf::sampleGlass(const Vec3f &wo, float uLobe) const {
+    float reflectance = thinGlassReflectance(dot(wo, frame_.n), ior_);
+    if (uLobe < reflectance) {
+        Vec3f wi = reflect(wo, frame_.n);
+        if (dot(wi, geometricNormal_) <= 0) return std::nullopt;
+        return BsdfSample{wi, Vec3f(1.0f), reflectance, true};
+    }
+    return BsdfSample{-wo, glassTint_, 1 - reflectance, true};
+}
+
+}  // namespace veduta
