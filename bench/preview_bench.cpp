@@ -50,12 +50,12 @@ RenderScene fileScene(const std::string &path, int width, int height) {
 // the material, so that path is drawn (and compared) too.
 RenderScene sphereField() {
     RenderSceneBuilder b;
-    b.addMaterial(Material{"default", Vec3f(0.8f)});
-    MaterialId grey = b.addMaterial(Material{"grey", Vec3f(0.6f)});
-    MaterialId ground = b.addMaterial(Material{"ground", Vec3f(0.3f, 0.28f, 0.25f)});
-    MaterialId tints[] = {kNoMaterial, b.addMaterial(Material{"red", Vec3f(0.7f, 0.2f, 0.15f)}),
-                          b.addMaterial(Material{"green", Vec3f(0.2f, 0.6f, 0.2f)}),
-                          b.addMaterial(Material{"blue", Vec3f(0.15f, 0.25f, 0.7f)})};
+    b.addMaterial(Material::lambertian("default", Vec3f(0.8f)));
+    MaterialId grey = b.addMaterial(Material::lambertian("grey", Vec3f(0.6f)));
+    MaterialId ground = b.addMaterial(Material::lambertian("ground", Vec3f(0.3f, 0.28f, 0.25f)));
+    MaterialId tints[] = {kNoMaterial, b.addMaterial(Material::lambertian("red", Vec3f(0.7f, 0.2f, 0.15f))),
+                          b.addMaterial(Material::lambertian("green", Vec3f(0.2f, 0.6f, 0.2f))),
+                          b.addMaterial(Material::lambertian("blue", Vec3f(0.15f, 0.25f, 0.7f)))};
 
     constexpr int kColumns = 40, kRows = 25;
     constexpr float kSpacing = 3, kRadius = 1.2f;
@@ -85,7 +85,9 @@ RenderScene sphereField() {
     camera.width = 1920;
     camera.height = 1080;
     b.setCamera(camera);
-    b.setEnvironment(Environment{Vec3f(0.4f, 0.5f, 0.7f)});
+    Environment sky;
+    sky.radiance = Vec3f(0.4f, 0.5f, 0.7f);
+    b.setEnvironment(sky);
     return std::move(b).build();
 }
 

@@ -20,6 +20,9 @@ Vec3f nonNegative(const Vec3f &c) { return {std::max(c.x, 0.0f), std::max(c.y, 0
 
 Vec3f reflect(const Vec3f &w, const Vec3f &n) { return n * (2 * dot(n, w)) - w; }
 
+// The mirror image of w in the plane perpendicular to n.
+Vec3f mirrorAcross(const Vec3f &w, const Vec3f &n) { return w - n * (2 * dot(n, w)); }
+
 // R' = R + T²R / (1 − R²) = 2R / (1 + R): the light a pane returns after any number of bounces
 // between its faces, with T = 1 − R at each (no absorption inside).
 float thinGlassReflectance(float cosTheta, float ior) {
@@ -55,23 +58,27 @@ Bsdf::Bsdf(const BsdfInputs &inputs, const Vec3f &shadingNormal, const Vec3f &ge
     Vec3f rest = Vec3f(1.0f) - mirror_;
     diffuse_ = kd * rest;
     specular_ = ks * rest;
-    // The diffuse lobe around a tilted shading normal. Directions below the geometric surface
-    // are rejected (no light leaks, and no light from inside the object), which cuts away the
-    // part of the shading normal's cosine lobe beyond the geometric horizon: a surface tilted
-    // by β sees (1 + cos β)/2 of it (the sky view factor of a tilted plane). Dividing by that
-    // fraction gives the lobe its albedo k_d back for every wo, so a normal-mapped plane in a
-    // white furnace stays white, and it leaves no black edges because the rejection only
-    // removes directions, never darkens the ones kept. The factor depends on the normals only,
-    // so the lobe stays symmetric in wo and wi. Chiang et al.'s terminator term (Cycles 3.4)
-    // would instead darken the lobe by the shadowing it models, which fails the furnace.
-    float cosTilt = std::clamp(dot(shadingNormal, geometricNormal), -1.0f, 1.0f);
-    diffuseScale_ = 2 / std::max(1 + cosTilt, 1e-3f);
 }
 
 // Both directions above the geometric surface. wo always is; checking it too keeps eval
 // symmetric in its arguments.
 bool Bsdf::aboveSurface(const Vec3f &wo, const Vec3f &wi) const {
     return dot(wo, geometricNormal_) > 0 && dot(wi, geometricNormal_) > 0;
+}
+
+// The diffuse lobe around a tilted shading normal ns. Part of ns's cosine lobe lies below the
+// geometric surface, where no light may come from (it would leak through the surface) and
+// where rejecting it would darken the surface and, at the shading normal's horizon, leave
+// black edges. That part is folded back: a direction w below the surface counts as its mirror
+// image in the geometric plane. The lobe, cos⁺(ns, w) + cos⁺(ns, mirror(w)), then integrates
+// over the upper hemisphere to exactly what ns's full lobe gives, π, so the albedo stays k_d
+// for every tilt; and sampling ns's cosine lobe, mirroring what falls below, draws exactly this
+// density, so each sample carries k_d and a white furnace shows no noise at all. Chiang et
+// al.'s terminator term (Cycles 3.4) or renormalised rejection would darken or add noise. The
+// price is reciprocity under tilted normals, which unidirectional path tracing does not need.
+float Bsdf::foldedCosine(const Vec3f &wi) const {
+    const Vec3f &ns = frame_.n;
+    return std::max(0.0f, dot(ns, wi)) + std::max(0.0f, dot(ns, mirrorAcross(wi, geometricNormal_)));
 }
 
 bool Bsdf::hasNonDeltaLobe() const { return !thinGlass_ && (maxComponent(diffuse_) > 0 || maxComponent(specular_) > 0); }
@@ -87,18 +94,20 @@ Bsdf::LobeProbabilities Bsdf::lobeProbabilities(float cosThetaO) const {
 Vec3f Bsdf::eval(const Vec3f &wo, const Vec3f &wi) const {
     if (thinGlass_ || !aboveSurface(wo, wi)) return Vec3f(0.0f);
     Vec3f o = frame_.toLocal(wo), i = frame_.toLocal(wi);
-    if (o.z <= 0 || i.z <= 0) return Vec3f(0.0f);
-    Vec3f f = diffuse_ * (kInvPi * diffuseScale_) +
-              specular_ * (phongLobe(o, i, exponent_) + phongCompensation(o.z, i.z, exponent_));
-    return f * i.z;
+    if (o.z <= 0) return Vec3f(0.0f);
+    Vec3f result = diffuse_ * (kInvPi * foldedCosine(wi));
+    if (i.z > 0) result += specular_ * ((phongLobe(o, i, exponent_) + phongCompensation(o.z, i.z, exponent_)) * i.z);
+    return result;
 }
 
 float Bsdf::pdf(const Vec3f &wo, const Vec3f &wi) const {
     if (thinGlass_ || !aboveSurface(wo, wi)) return 0;
     Vec3f o = frame_.toLocal(wo), i = frame_.toLocal(wi);
-    if (o.z <= 0 || i.z <= 0) return 0;
+    if (o.z <= 0) return 0;
     LobeProbabilities p = lobeProbabilities(o.z);
-    return p.cosine * cosineHemispherePdf(i.z) + p.phong * phongPdf(o, i, exponent_);
+    float density = p.cosine * kInvPi * foldedCosine(wi);
+    if (i.z > 0) density += p.phong * phongPdf(o, i, exponent_);
+    return density;
 }
 
 std::optional<BsdfSample> Bsdf::sample(const Vec3f &wo, float uLobe, Vec2f u) const {
@@ -112,15 +121,15 @@ std::optional<BsdfSample> Bsdf::sample(const Vec3f &wo, float uLobe, Vec2f u) co
         if (dot(wi, geometricNormal_) <= 0) return std::nullopt;
         return BsdfSample{wi, mirror_ / p.mirror, p.mirror, true};
     }
-    Vec3f i;
+    Vec3f wi;
     if (uLobe < p.cosine) {
-        i = sampleCosineHemisphere(u);
+        wi = frame_.toWorld(sampleCosineHemisphere(u));
+        if (dot(wi, geometricNormal_) < 0) wi = mirrorAcross(wi, geometricNormal_);  // see foldedCosine
     } else if (std::optional<Vec3f> s = samplePhong(o, exponent_, u)) {
-        i = *s;
+        wi = frame_.toWorld(*s);
     } else {
         return std::nullopt;
     }
-    Vec3f wi = frame_.toWorld(i);
     float density = pdf(wo, wi);
     if (density <= 0) return std::nullopt;
     return BsdfSample{wi, eval(wo, wi) / density, density, false};

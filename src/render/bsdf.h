@@ -57,13 +57,13 @@ class Bsdf {
     };
     LobeProbabilities lobeProbabilities(float cosThetaO) const;
     bool aboveSurface(const Vec3f &wo, const Vec3f &wi) const;
+    float foldedCosine(const Vec3f &wi) const;
     std::optional<BsdfSample> sampleGlass(const Vec3f &wo, float uLobe) const;
 
     Frame frame_;
     Vec3f geometricNormal_;
     Vec3f diffuse_, specular_, mirror_;
     float exponent_;
-    float diffuseScale_;  // 1/A: see the constructor
     bool thinGlass_;
     float ior_;
     Vec3f glassTint_;

@@ -7,8 +7,7 @@ namespace veduta {
 
 namespace {
 
-constexpr int kTableSize = 1024;
-constexpr int kIntegrationSteps = 16 * kTableSize;
+constexpr int kSteps = 1 << 14;  // cells of the tabulated distribution over the filter's width
 
 }  // namespace
 
@@ -20,30 +19,23 @@ float blackmanHarris(float x, float width) {
 
 FilterSampler::FilterSampler(const PixelFilter &filter) : width_(filter.width) {
     if (filter.kind == FilterKind::Box) return;  // uniform: no table needed
-    // Integrate the filter with the midpoint rule, then invert the running sum by walking it.
-    std::vector<double> cdf(kIntegrationSteps + 1, 0.0);
-    for (int i = 0; i < kIntegrationSteps; ++i) {
-        float x = width_ * ((float(i) + 0.5f) / kIntegrationSteps - 0.5f);
-        cdf[size_t(i) + 1] = cdf[size_t(i)] + blackmanHarris(x, width_);
+    // The running integral of the filter by the midpoint rule, normalised.
+    cdf_.assign(kSteps + 1, 0.0);
+    for (int i = 0; i < kSteps; ++i) {
+        float x = width_ * ((float(i) + 0.5f) / kSteps - 0.5f);
+        cdf_[size_t(i) + 1] = cdf_[size_t(i)] + blackmanHarris(x, width_);
     }
-    for (double &c : cdf) c /= cdf.back();
-    inverseCdf_.resize(kTableSize + 1);
-    int i = 0;
-    for (int k = 0; k <= kTableSize; ++k) {
-        double p = double(k) / kTableSize;
-        while (i < kIntegrationSteps - 1 && cdf[size_t(i) + 1] < p) ++i;
-        double span = cdf[size_t(i) + 1] - cdf[size_t(i)];
-        double within = span > 0 ? std::clamp((p - cdf[size_t(i)]) / span, 0.0, 1.0) : 0.0;
-        inverseCdf_[size_t(k)] = float(width_ * ((i + within) / kIntegrationSteps - 0.5));
-    }
+    for (double &c : cdf_) c /= cdf_.back();
 }
 
 float FilterSampler::offset(float u) const {
-    if (inverseCdf_.empty()) return width_ * (u - 0.5f);
-    float position = u * kTableSize;
-    int k = std::min(int(position), kTableSize - 1);
-    float t = position - float(k);
-    return inverseCdf_[size_t(k)] * (1 - t) + inverseCdf_[size_t(k) + 1] * t;
+    if (cdf_.empty()) return width_ * (u - 0.5f);
+    // The cell whose share of the distribution holds u, and u's place within it.
+    auto above = std::upper_bound(cdf_.begin() + 1, cdf_.end() - 1, double(u));
+    size_t i = size_t(above - cdf_.begin()) - 1;
+    double span = cdf_[i + 1] - cdf_[i];
+    double within = span > 0 ? std::clamp((u - cdf_[i]) / span, 0.0, 1.0) : 0.5;
+    return float(width_ * ((double(i) + within) / kSteps - 0.5));
 }
 
 }  // namespace veduta

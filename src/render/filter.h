@@ -24,9 +24,11 @@ class FilterSampler {
     float offset(float u) const;
 
     float width_;
-    // The inverse of the filter's 1D distribution function at evenly spaced probabilities,
-    // as Cycles tabulates it; the filter is separable, so x and y share it.
-    std::vector<float> inverseCdf_;
+    // The filter's 1D distribution function at evenly spaced offsets, inverted at sample time
+    // by binary search; the filter is separable, so x and y share it. (An inverse table at
+    // evenly spaced probabilities, as Cycles keeps, spreads its first and last entries
+    // uniformly over the tails and samples them far too often.)
+    std::vector<double> cdf_;
 };
 
 }  // namespace veduta

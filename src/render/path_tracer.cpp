@@ -42,12 +42,14 @@ Vec3f PathTracer::radiance(const Ray &cameraRay, PixelSampler &sampler, RayCount
             L += beta * escapedLight(ray.direction, bsdfPdf);
             break;
         }
+        // The last vertex's BSDF ray was traced only for the light it finds by escaping: the
+        // other half of that vertex's multiple importance sampling.
+        if (depth == settings.maxDepth) break;
         Vec3f wo = -ray.direction;
         Bsdf bsdf = materials_.bsdf(*si, wo, spread * si->distance);
         if (bsdf.hasNonDeltaLobe() && settings.lightSampling != LightSampling::Bsdf) {
             L += beta * directLight(*si, bsdf, wo, uSun, uEnvironment, counts);
         }
-        if (depth + 1 >= settings.maxDepth) break;
 
         std::optional<BsdfSample> s = bsdf.sample(wo, uLobeRoulette.x, uDirection);
         if (!s || isBlack(s->weight)) break;

@@ -12,6 +12,7 @@
 #include <tbb/parallel_for.h>
 
 #include "core/progress.h"
+#include "render/filter.h"
 
 namespace veduta {
 

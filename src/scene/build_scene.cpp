@@ -24,7 +24,7 @@ class SceneAssembler {
         builder_.setEnvironment(buildEnvironment(d_.environment, sun));
         builder_.setSettings(d_.settings);
         // Material 0 is for geometry that names none; a scene may redefine "default".
-        builder_.addMaterial(Material{.name = "default"});
+        builder_.addMaterial(Material::lambertian("default", Vec3f(0.8f)));
         for (const MaterialDesc &m : d_.materials) builder_.addMaterial(withTextures(m));
         if (textures_) builder_.setTextures(textures_);
         defaultMaterial_ = builder_.findMaterial("default");

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 
 #include "core/vecmath.h"
 #include "scene/textures.h"
@@ -37,6 +38,14 @@ struct Material {
     // Texture coordinates are divided by this: a texture spans `textureSize` units of u and
     // v, metres on the built-in shapes.
     Vec2f textureSize{1.0f, 1.0f};
+
+    // A plain Lambertian material, as generators and tests make them.
+    static Material lambertian(std::string name, const Vec3f &albedo) {
+        Material m;
+        m.name = std::move(name);
+        m.diffuse = albedo;
+        return m;
+    }
 
     bool hasTextures() const {
         return diffuseMap != kNoTexture || specularMap != kNoTexture || normalMap != kNoTexture ||

@@ -116,7 +116,8 @@ Chi2Result chi2Test(const std::function<Vec3f(Vec2f)> &sample, const std::functi
             total += expected[k];
         }
     }
-    expected[declinedCell] = std::max(0.0, n - total);
+    expected[declinedCell] = options.declines ? std::max(0.0, n - total) : 0.0;
+    if (!options.declines) result.outsideSupport += observed[declinedCell] / n;
     // Pool cells expecting fewer than 5 samples into one, as pbrt does.
     std::vector<size_t> order(observed.size());
     for (size_t k = 0; k < order.size(); ++k) order[k] = k;

@@ -27,6 +27,10 @@ struct Chi2Options {
     // Points per cell side for integrating the density: densities that jump inside cells
     // (piecewise-constant ones) need more than smooth ones.
     int subdivisions = 8;
+    // Whether `sample` may decline (return the zero vector), as BSDFs do below the surface.
+    // The missing mass then forms one more cell; otherwise it is not tested, since for a
+    // density that integrates to 1 it would only hold the integration rule's error.
+    bool declines = false;
     // The grid's pole is frame.n.
     Frame frame{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     // Of the uniform points: tests that share a seed share their samples, and their p-values

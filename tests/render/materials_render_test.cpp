@@ -138,7 +138,8 @@ TEST(MaterialsRender, SunlightPassesGlassByFresnel) {
 </scene>)"));
     double r = 0.04, transmitted = 1 - 2 * r / (1 + r);
     for (size_t i = 0; i < film.pixels().size(); ++i) {
-        if (i % 4 != 3) ASSERT_NEAR(film.pixels()[i], 0.5 * 2 * transmitted / M_PI, 2e-3) << i;
+        if (i % 4 == 3) continue;
+        ASSERT_NEAR(film.pixels()[i], 0.5 * 2 * transmitted / M_PI, 2e-3) << i;
     }
 }
 
@@ -189,8 +190,8 @@ TEST(MaterialsRender, ConstantCubemapLightsLikeAUniformSky) {
     }
 }
 
-// A sky with a small, very bright sun in one texel block: the three strategies estimate the
-// same image (all are unbiased); multiple importance sampling has the least error.
+// A sky with a small bright sun (2 × 2 texels): the three strategies estimate the same image,
+// as all are unbiased. (bench/mis_error.cpp measures which has the least error.)
 TEST(MaterialsRender, LightSamplingStrategiesAgree) {
     auto cubemap = std::make_shared<Cubemap>(16);
     for (int f = 0; f < kCubeFaceCount; ++f) {
@@ -201,7 +202,9 @@ TEST(MaterialsRender, LightSamplingStrategiesAgree) {
             }
         }
     }
-    cubemap->texel(kSouth, 5, 4) = Vec3f(2000.0f);  // a sun low in the south-west
+    for (int y = 4; y < 6; ++y) {
+        for (int x = 5; x < 7; ++x) cubemap->texel(kSouth, x, y) = Vec3f(300.0f);  // a sun low in the south-west
+    }
     double means[3];
     int i = 0;
     for (const char *sampling : {"mis", "bsdf", "light"}) {

@@ -8,7 +8,7 @@ namespace {
 
 TEST(RenderSceneBuilder, BakesPrototypesPlacedOnceAndSharesTheRest) {
     RenderSceneBuilder builder;
-    MaterialId red = builder.addMaterial({"red", Vec3f(0.9f, 0.1f, 0.1f)});
+    MaterialId red = builder.addMaterial(Material::lambertian("red", Vec3f(0.9f, 0.1f, 0.1f)));
     PrototypeId once = builder.addPrototype(makeShape({}));
     PrototypeId twice = builder.addPrototype(makeShape({ShapeKind::Sphere}));
     builder.addPrototype(makeShape({}));  // never placed
