@@ -39,6 +39,18 @@ TEST(Render, OneAndTwoThreadsGiveBitIdenticalImages) {
     EXPECT_EQ(one.pixels(), two.pixels());
 }
 
+// Textures, normal maps, glass, cut-outs and the cubemap environment keep the promise too.
+TEST(Render, MaterialsSceneIsTheSameForAnyThreadCountAndTileSize) {
+    RenderScene scene = buildRenderScene(loadSceneDescription(VEDUTA_SOURCE_DIR "/scenes/materials.xml"));
+    scene.camera.width = 64;
+    scene.camera.height = 36;
+    scene.settings.samplesPerPixel = 2;
+    Film one = renderWith(scene, 1);
+    scene.settings.tileSize = 5;
+    Film two = renderWith(scene, 2);
+    EXPECT_EQ(one.pixels(), two.pixels());
+}
+
 TEST(Render, TileSizeDoesNotChangeTheImage) {
     RenderScene scene = defaultSceneAt(96, 54, 4);
     scene.settings.tileSize = 7;
