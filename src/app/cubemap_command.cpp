@@ -42,6 +42,7 @@ CubemapLayout outputLayout(const CubemapOptions &o) {
 // each texel's centre: how a baked sky leaves veduta for other renderers.
 Cubemap sceneEnvironment(const std::string &sceneFile, int size) {
     SceneDescription description = loadSceneDescription(sceneFile);
+    if (description.environment.sky && size > 0) description.environment.faceSize = size;  // baked at the size asked
     Environment environment = buildEnvironment(description.environment, placeSun(description));
     if (!environment.cubemap) {
         throw InputError(description.environment.loc.line ? description.environment.loc : FileLoc{sceneFile},

@@ -3,14 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/color.h"
 #include "render/phong.h"
 #include "render/sampling.h"
 
 namespace veduta {
 
 namespace {
-
-float luminance(const Vec3f &c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
 
 Vec3f clamp01(const Vec3f &c) {
     return {std::clamp(c.x, 0.0f, 1.0f), std::clamp(c.y, 0.0f, 1.0f), std::clamp(c.z, 0.0f, 1.0f)};
@@ -142,7 +141,7 @@ std::optional<BsdfSample> Bsdf::sampleGlass(const Vec3f &wo, float uLobe) const 
         if (dot(wi, geometricNormal_) <= 0) return std::nullopt;
         return BsdfSample{wi, Vec3f(1.0f), reflectance, true};
     }
-    return BsdfSample{-wo, glassTint_, 1 - reflectance, true};
+    return BsdfSample{-wo, glassTint_, 1 - reflectance, true, true};
 }
 
 }  // namespace veduta

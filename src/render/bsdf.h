@@ -27,6 +27,9 @@ struct BsdfSample {
     Vec3f weight;  // f·|cos θi| / pdf; for a delta lobe its reflectance / the lobe's probability
     float pdf = 0;  // solid-angle density of all non-delta lobes; for a delta lobe its probability
     bool delta = false;
+    // Straight through a thin pane (wi = −wo): the path goes on as if the pane were not there,
+    // only dimmer, so the integrator does not count it as a bounce.
+    bool passThrough = false;
 };
 
 class Bsdf {
@@ -50,6 +53,7 @@ class Bsdf {
     std::optional<BsdfSample> sample(const Vec3f &wo, float uLobe, Vec2f u) const;
     // False for a pure mirror or glass: next-event estimation has nothing to evaluate there.
     bool hasNonDeltaLobe() const;
+    bool isThinGlass() const { return thinGlass_; }
 
   private:
     struct LobeProbabilities {

@@ -5,11 +5,11 @@
 
 #include <tbb/parallel_for.h>
 
+#include "core/color.h"
+
 namespace veduta {
 
 namespace {
-
-float luminance(const Vec3f &c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
 
 // The mean of the bilinear lookup's luminance over a texel: 9/16 of the texel itself, 3/32 of
 // each edge neighbour and 1/64 of each diagonal one, across face edges as the lookup reads

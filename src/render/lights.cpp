@@ -4,6 +4,21 @@
 
 namespace veduta {
 
+namespace {
+
+bool isBlack(const Cubemap &map) {
+    for (int face = 0; face < kCubeFaceCount; ++face) {
+        for (int y = 0; y < map.size(); ++y) {
+            for (int x = 0; x < map.size(); ++x) {
+                if (maxComponent(map.texel(face, x, y)) > 0) return false;
+            }
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
 SunLight::SunLight(const Sun &sun)
     : sun_(sun), isDisc_(sun.angularDiameterDegrees > 0), oneMinusCosRadius_(sun.oneMinusCosRadius()),
       frame_(Frame::fromNormal(sun.direction)), discRadiance_(isDisc_ ? sun.discRadiance() : Vec3f(0.0f)),
@@ -15,7 +30,7 @@ LightSample SunLight::sample(Vec2f u) const {
 }
 
 EnvironmentLight::EnvironmentLight(const Environment &environment) : environment_(environment) {
-    if (environment.cubemap && environment.intensity > 0) {
+    if (environment.cubemap && environment.intensity > 0 && !isBlack(*environment.cubemap)) {
         distribution_ = std::make_unique<CubemapDistribution>(*environment.cubemap);
     }
 }

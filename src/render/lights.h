@@ -23,7 +23,6 @@ class SunLight {
     explicit SunLight(const Sun &sun);
 
     bool enabled() const { return sun_.enabled(); }
-    bool isDelta() const { return !isDisc_; }
     LightSample sample(Vec2f u) const;
     // Radiance and density towards wi, for rays that BSDF sampling sends there.
     Vec3f radiance(const Vec3f &wi) const { return isDisc_ && sun_.discContains(wi) ? discRadiance_ : Vec3f(0.0f); }
@@ -44,7 +43,7 @@ class EnvironmentLight {
   public:
     explicit EnvironmentLight(const Environment &environment);
 
-    // Whether next-event estimation samples it: a cubemap that is not black.
+    // Whether next-event estimation samples it: a cubemap with light in it.
     bool sampled() const { return distribution_ != nullptr; }
     LightSample sample(Vec2f u) const;
     Vec3f radiance(const Vec3f &wi) const { return environment_.radianceTowards(wi); }

@@ -24,10 +24,12 @@ void MaterialLookup::lookup(TextureId id, const Material &m, const SurfaceIntera
 bool MaterialLookup::cutAway(const SurfaceInteraction &si, float footprint) const {
     const Material &m = scene_.materials[si.material];
     if (m.opacityMap == kNoTexture) return false;
-    // A map with alpha cuts by its alpha, a grey one by its value.
+    // A map with alpha (grey and alpha, or RGBA) cuts by its alpha, a grey or RGB one by its
+    // first channel.
     float values[4];
     lookup(m.opacityMap, m, si, footprint, values, 4);
-    float opacity = scene_.textures->channels(m.opacityMap) == 4 ? values[3] : values[0];
+    int channels = scene_.textures->channels(m.opacityMap);
+    float opacity = channels == 2 || channels == 4 ? values[channels - 1] : values[0];
     return opacity < 0.5f;
 }
 

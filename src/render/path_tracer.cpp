@@ -33,36 +33,42 @@ Vec3f PathTracer::radiance(const Ray &cameraRay, PixelSampler &sampler, RayCount
     Ray ray = cameraRay;
     float bsdfPdf = 0;  // camera rays see lights directly
     float spread = pixelSpread_;
-    for (uint32_t depth = 0;; ++depth) {
+    // `depth` counts the vertices that scatter; passing straight through glass is not one.
+    for (uint32_t depth = 0, segment = 0; segment < settings.maxDepth + kMaxPassThrough; ++segment) {
         Vec2f uSun = sampler.next2D(), uEnvironment = sampler.next2D();
         Vec2f uLobeRoulette = sampler.next2D(), uDirection = sampler.next2D();
 
-        std::optional<SurfaceInteraction> si = findSurface(ray, depth == 0, spread, counts);
+        std::optional<SurfaceInteraction> si = findSurface(ray, segment == 0, spread, counts);
         if (!si) {
             L += beta * escapedLight(ray.direction, bsdfPdf);
             break;
         }
-        // The last vertex's BSDF ray was traced only for the light it finds by escaping: the
-        // other half of that vertex's multiple importance sampling.
-        if (depth == settings.maxDepth) break;
         Vec3f wo = -ray.direction;
         Bsdf bsdf = materials_.bsdf(*si, wo, spread * si->distance);
-        if (bsdf.hasNonDeltaLobe() && settings.lightSampling != LightSampling::Bsdf) {
+        // The last vertex's BSDF ray was traced only for the light it finds by escaping (the
+        // other half of that vertex's multiple importance sampling), through panes if need be.
+        if (depth == settings.maxDepth && !bsdf.isThinGlass()) break;
+        if (depth < settings.maxDepth && bsdf.hasNonDeltaLobe() && settings.lightSampling != LightSampling::Bsdf) {
             L += beta * directLight(*si, bsdf, wo, uSun, uEnvironment, counts);
         }
 
         std::optional<BsdfSample> s = bsdf.sample(wo, uLobeRoulette.x, uDirection);
         if (!s || isBlack(s->weight)) break;
         beta *= s->weight;
+        ray = {offsetTowards(*si, s->wi), s->wi};
+        // Through a pane the ray keeps its density and footprint: next-event estimation at the
+        // vertex before counted the same light through the pane (with its transmittance).
+        if (s->passThrough) continue;
+        if (depth == settings.maxDepth) break;  // a pane's reflection at the last vertex
+        ++depth;
         bsdfPdf = s->delta ? 0.0f : s->pdf;
         if (!s->delta) spread = std::max(spread, kBouncedSpread);
 
-        if (depth + 1 >= settings.rouletteDepth) {
+        if (depth >= settings.rouletteDepth) {
             float survive = std::min(maxComponent(beta), 0.95f);
             if (uLobeRoulette.y >= survive) break;
             beta = beta / survive;
         }
-        ray = {offsetTowards(*si, s->wi), s->wi};
     }
     return L;
 }
@@ -70,17 +76,21 @@ Vec3f PathTracer::radiance(const Ray &cameraRay, PixelSampler &sampler, RayCount
 std::optional<SurfaceInteraction> PathTracer::findSurface(Ray ray, bool fromCamera, float footprintSpread,
                                                           RayCounts &counts) const {
     float travelled = 0;
-    for (int pass = 0; pass < kMaxPassThrough; ++pass) {
+    for (int pass = 0;; ++pass) {
         ++(fromCamera && pass == 0 ? counts.camera : counts.bounce);
         std::optional<Hit> hit = bvh_.intersect(ray, fromCamera);
         if (!hit) return std::nullopt;
         SurfaceInteraction si = surfaces_.at(*hit, ray.direction);
         si.distance += travelled;
-        if (!materials_.anyPassThrough() || !materials_.cutAway(si, footprintSpread * si.distance)) return si;
+        // Past that many cut-outs the ray is taken as stopped by the last: it must not see
+        // the sky where its shadow rays see none.
+        if (!materials_.anyPassThrough() || pass + 1 == kMaxPassThrough ||
+            !materials_.cutAway(si, footprintSpread * si.distance)) {
+            return si;
+        }
         travelled = si.distance;
         ray.origin = offsetTowards(si, ray.direction);
     }
-    return std::nullopt;
 }
 
 Vec3f PathTracer::directLight(const SurfaceInteraction &si, const Bsdf &bsdf, const Vec3f &wo, Vec2f uSun,

@@ -16,7 +16,7 @@ Cubemap loadCubemap(const EnvironmentDesc &desc) {
         return readCubemap(ref.file, ref.colorSpace, desc.faceSize);
     } catch (const LayoutError &error) {
         throw InputError(ref.loc, fmt::format("{}: {}", ref.file.string(), error.what()));
-    } catch (const std::runtime_error &error) {  // the image library's errors name the file
+    } catch (const InputError &error) {  // the image library's errors name the file
         throw InputError(ref.loc, error.what());
     }
 }

@@ -66,12 +66,10 @@ class SceneAssembler {
 
     TextureId texture(const ImageRef &ref) {
         if (!ref.given()) return kNoTexture;
+        if (!textures_) textures_ = imageLibrary().makeTextures(defaultTextureCacheDirectory());
         try {
-            if (!textures_) textures_ = imageLibrary().makeTextures(defaultTextureCacheDirectory());
             return textures_->add(ref.file, ref.colorSpace);
-        } catch (const InputError &error) {
-            throw InputError(ref.loc, error.what());
-        } catch (const std::runtime_error &error) {
+        } catch (const InputError &error) {  // it names the file; add where the scene names it
             throw InputError(ref.loc, error.what());
         }
     }
@@ -137,6 +135,9 @@ Sun placeSun(const SceneDescription &d) {
         azimuth = gridAzimuthDegrees(azimuth, meridianConvergenceDegrees(g, g.originEasting, g.originNorthing));
     }
     sun.direction = Sun::directionFromAzimuthElevation(float(azimuth), float(angles.elevationDegrees));
+    // Once the whole disc has set, the sun of that date and time lights nothing (a sun given
+    // by its direction still does: that is a lighting choice, not a time of day).
+    if (angles.elevationDegrees < -0.5 * sun.angularDiameterDegrees) sun.irradiance = Vec3f(0.0f);
     return sun;
 }
 

@@ -47,10 +47,6 @@ struct Material {
         return m;
     }
 
-    bool hasTextures() const {
-        return diffuseMap != kNoTexture || specularMap != kNoTexture || normalMap != kNoTexture ||
-               reflectionMap != kNoTexture || opacityMap != kNoTexture;
-    }
 };
 
 }  // namespace veduta

@@ -1,5 +1,8 @@
 // The scene-file reader: XML → SceneDescription. No geometry is made here.
+#include <charconv>
+#include <cmath>
 #include <map>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -10,6 +13,15 @@
 namespace veduta {
 
 namespace {
+
+bool parsesAsCivilTime(std::string_view date, std::string_view time, std::string_view utcOffset) {
+    try {
+        parseCivilTime(date, time, utcOffset);
+        return true;
+    } catch (const std::invalid_argument &) {
+        return false;
+    }
+}
 
 class SceneFileReader {
   public:
@@ -84,15 +96,18 @@ class SceneFileReader {
         int ways = int(e.has("direction")) + int(e.has("azimuth") || e.has("elevation")) + int(e.has("date"));
         if (ways > 1) e.fail("give the sun one of 'direction', 'azimuth' and 'elevation', or 'date' and 'time'");
         if (e.has("azimuth") != e.has("elevation")) e.fail("give the sun both 'azimuth' and 'elevation'");
+        // A later <sun> that places the sun replaces how an earlier one did.
         if (e.has("date")) {
             readSunTime(e);
         } else if (e.has("direction")) {
             Vec3f d = e.vec3("direction", sun.direction);
             if (length(d) == 0) e.failAt("direction", "sun direction has zero length");
             sun.direction = normalize(d);
+            scene_.sunTime.reset();
         } else if (e.has("azimuth")) {
             sun.direction = Sun::directionFromAzimuthElevation(e.number("azimuth", 0, -360, 360),
                                                                e.number("elevation", 0, -90, 90));
+            scene_.sunTime.reset();
         }
         sun.irradiance = e.color("irradiance", sun.irradiance, 0, 1e9f);
         sun.angularDiameterDegrees = e.number("angular_diameter", sun.angularDiameterDegrees, 0, 30);
@@ -108,7 +123,11 @@ class SceneFileReader {
         try {
             t.time = parseCivilTime(date, time, offset);
         } catch (const std::invalid_argument &error) {
-            e.failAt("date", error.what());
+            // Point at the part that is wrong: each is tried with known-good others.
+            const char *culprit = !parsesAsCivilTime(date, "00:00", "Z")         ? "date"
+                                  : !parsesAsCivilTime("2000-01-01", time, "Z") ? "time"
+                                                                                : "utc_offset";
+            e.failAt(culprit, error.what());
         }
         if (e.has("latitude") != e.has("longitude")) e.fail("give the sun both 'latitude' and 'longitude'");
         if (e.has("latitude")) t.place = GeographicPoint{e.number("latitude", 0, -90, 90), e.number("longitude", 0, -180, 180)};
@@ -122,15 +141,24 @@ class SceneFileReader {
         if (crs.rfind("EPSG:", 0) != 0 || crs.size() < 6 || crs.find_first_not_of("0123456789", 5) != std::string::npos) {
             e.failAt("crs", fmt::format("crs '{}' is not of the form EPSG:<code>", crs));
         }
-        g.epsg = std::stoi(crs.substr(5));
+        auto [end, parseError] = std::from_chars(crs.data() + 5, crs.data() + crs.size(), g.epsg);
+        if (parseError != std::errc() || end != crs.data() + crs.size()) {
+            e.failAt("crs", fmt::format("crs '{}': not a supported EPSG code", crs));
+        }
         std::vector<double> origin = e.doubles("origin");
         if (origin.size() != 2) e.failAt("origin", "origin takes two numbers, easting and northing");
         g.originEasting = origin[0];
         g.originNorthing = origin[1];
+        GeographicPoint place{};
         try {
-            toGeographic(g, g.originEasting, g.originNorthing);
+            place = toGeographic(g, g.originEasting, g.originNorthing);
         } catch (const std::invalid_argument &error) {
             e.failAt("crs", fmt::format("crs '{}': {}", crs, error.what()));
+        }
+        // Transverse Mercator holds within a few degrees of its central meridian; far outside
+        // it the inverse gives nonsense or nothing.
+        if (!std::isfinite(place.latitude) || !std::isfinite(place.longitude) || std::abs(place.latitude) > 84) {
+            e.failAt("origin", fmt::format("origin {} {} lies outside the area of {}", g.originEasting, g.originNorthing, crs));
         }
         e.checkLeaf();
         scene_.georeference = g;
@@ -141,6 +169,12 @@ class SceneFileReader {
         env.loc = e.loc();
         int sources = int(e.has("radiance")) + int(e.has("cubemap")) + int(e.has("sky"));
         if (sources > 1) e.fail("give the environment one of 'radiance', 'cubemap' and 'sky'");
+        // A later <environment> that gives a source replaces an earlier one's.
+        if (sources == 1) {
+            env.radiance = Vec3f(0.0f);
+            env.cubemap = {};
+            env.sky = false;
+        }
         env.radiance = e.color("radiance", env.radiance, 0, 1e9f);
         if (e.has("cubemap")) {
             std::filesystem::path file = e.string("cubemap");

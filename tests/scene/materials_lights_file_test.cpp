@@ -182,6 +182,38 @@ TEST(SunElement, ReadsDateTimeAndPlace) {
               "s.xml:1:8: the sun needs 'latitude' and 'longitude', or a <georeference> for the scene");
 }
 
+TEST(SunElement, ErrorsPointAtThePartThatIsWrong) {
+    std::string badTime = parseError(R"(<scene><sun date="2026-06-01" time="25:00" utc_offset="Z" latitude="50" longitude="10"/></scene>)");
+    EXPECT_EQ(badTime.rfind("s.xml:1:37: ", 0), 0u) << badTime;
+    std::string badOffset = parseError(R"(<scene><sun date="2026-06-01" time="10:00" utc_offset="+2" latitude="50" longitude="10"/></scene>)");
+    EXPECT_EQ(badOffset.rfind("s.xml:1:56: ", 0), 0u) << badOffset;
+}
+
+// A later element that places the sun or gives the environment a source replaces the
+// earlier one's choice, as other attributes do.
+TEST(SunElement, LaterElementsReplaceEarlierChoices) {
+    SceneDescription d = parse(R"(<scene>
+  <sun date="2026-06-21" time="12:00" utc_offset="+02:00" latitude="51.34" longitude="12.37"/>
+  <sun direction="0 0 1"/>
+  <environment cubemap="sky_{face}.exr"/>
+  <environment sky="preetham"/>
+</scene>)");
+    EXPECT_FALSE(d.sunTime);
+    EXPECT_EQ(placeSun(d).direction, Vec3f(0, 0, 1));
+    EXPECT_TRUE(d.environment.sky);
+    EXPECT_FALSE(d.environment.cubemap.given());
+}
+
+// At night the sun of a date and time lights nothing.
+TEST(SunElement, SetsAtNight) {
+    Sun night = placeSun(parse(R"(<scene><sun date="2026-06-21" time="23:30" utc_offset="+02:00" latitude="51.34" longitude="12.37" irradiance="3"/></scene>)"));
+    EXPECT_LT(night.direction.z, 0);
+    EXPECT_EQ(night.irradiance, Vec3f(0.0f));
+    Sun evening = placeSun(parse(R"(<scene><sun date="2026-06-21" time="21:00" utc_offset="+02:00" latitude="51.34" longitude="12.37" irradiance="3"/></scene>)"));
+    EXPECT_GT(evening.direction.z, 0);  // still up at 21:00 in June
+    EXPECT_EQ(evening.irradiance, Vec3f(3.0f));
+}
+
 // With a georeference the sun's azimuth is turned from true north to grid north.
 TEST(SunElement, GridNorthFollowsTheGeoreference) {
     const char *sunAt = R"(<sun date="2026-06-21" time="12:00" utc_offset="+02:00" latitude="51.34" longitude="12.37"/>)";
@@ -205,6 +237,10 @@ TEST(GeoreferenceElement, ChecksItsCrs) {
     EXPECT_EQ(unknown.rfind("s.xml:1:27: crs 'EPSG:4326': ", 0), 0u) << unknown;
     EXPECT_EQ(parseError(R"(<scene><georeference crs="UTM33" origin="0 0"/></scene>)"),
               "s.xml:1:27: crs 'UTM33' is not of the form EPSG:<code>");
+    EXPECT_EQ(parseError(R"(<scene><georeference crs="EPSG:99999999999" origin="0 0"/></scene>)"),
+              "s.xml:1:27: crs 'EPSG:99999999999': not a supported EPSG code");
+    std::string far = parseError(R"(<scene><georeference crs="EPSG:25833" origin="500000 9900000"/></scene>)");
+    EXPECT_EQ(far.rfind("s.xml:1:47: origin 500000 9900000 lies outside the area of EPSG:25833", 0), 0u) << far;
 }
 
 }  // namespace
