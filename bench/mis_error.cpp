@@ -5,7 +5,11 @@
 // measure: mean over pixels and channels of (x − ref)² / (ref² + 10⁻²)). Prints the three
 // figures; the acceptance of the materials-and-lights issue asks MIS to be lowest.
 //
-//   build/release/bench/bench_mis_error [--spp 64] [--reference-spp 4096]
+//   build/release/bench/bench_mis_error [--spp 64] [--reference-spp 4096] [--hdri FILE]
+//
+// With --hdri, the map is that image instead (lat-long, cross or {face} names, read through
+// the image plugin: set VEDUTA_IMAGE_PLUGIN=build/release/src/veduta-images.so), e.g.
+// ../shared/data/hdri/sunset.exr, a real sky with the sun in it.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -13,6 +17,7 @@
 #include <memory>
 #include <string>
 
+#include "io/cubemap_files.h"
 #include "render/renderer.h"
 #include "scene/build_scene.h"
 
@@ -89,14 +94,16 @@ double relMse(const Film &image, const Film &reference) {
 int main(int argc, char **argv) {
     using namespace veduta;
     uint32_t spp = 64, referenceSpp = 4096;
+    const char *hdri = nullptr;
     for (int i = 1; i + 1 < argc; i += 2) {
         if (std::strcmp(argv[i], "--spp") == 0) spp = uint32_t(std::atoi(argv[i + 1]));
         if (std::strcmp(argv[i], "--reference-spp") == 0) referenceSpp = uint32_t(std::atoi(argv[i + 1]));
+        if (std::strcmp(argv[i], "--hdri") == 0) hdri = argv[i + 1];
     }
-    std::shared_ptr<Cubemap> sky = skyWithSun(64);
+    std::shared_ptr<Cubemap> sky = hdri ? std::make_shared<Cubemap>(readCubemap(hdri, "", 128)) : skyWithSun(64);
     Film reference = renderScene(makeScene(LightSampling::Mis, referenceSpp, sky));
-    std::printf("diffuse scene, HDR cubemap (6x64^2) with a 0.5 deg sun in it; %u spp against a %u-spp MIS reference\n",
-                spp, referenceSpp);
+    std::printf("diffuse scene lit by %s; %u spp against a %u-spp MIS reference\n",
+                hdri ? hdri : "an HDR cubemap (6x64^2) with a 0.5 deg sun in it", spp, referenceSpp);
     std::printf("%-28s %12s\n", "strategy", "relMSE");
     for (auto [name, sampling] : {std::pair{"MIS (power heuristic)", LightSampling::Mis},
                                   std::pair{"BSDF sampling only", LightSampling::Bsdf},

@@ -25,9 +25,18 @@ constexpr uint32_t kBackFacing = 1u << 31;
 // vertices; smaller ones are transformed per tile, which costs less than the shared copy's memory.
 constexpr int kSharedVerticesTileCount = 4;
 
-// The preview draws materials by their base colour; maps are not looked up. A glass pane
-// mostly shows the sky's reflection and a dark room: a dim tint stands for it.
-Vec3f previewAlbedo(const Material &m) { return m.glass ? m.glassTint * 0.15f : m.diffuse; }
+// The preview draws each material in one colour: its diffuse colour times the mean of its
+// diffuse map (the texture's coarsest mip level). A glass pane mostly shows the sky's
+// reflection and a dark room: a dim tint stands for it.
+Vec3f previewAlbedo(const Material &m, const Textures *textures) {
+    if (m.glass) return m.glassTint * 0.15f;
+    if (m.diffuseMap == kNoTexture || !textures) return m.diffuse;
+    constexpr float kWholeTexture = 1e6f;  // a footprint wider than any texture
+    float mean[3] = {1, 1, 1};
+    textures->lookup(m.diffuseMap, {0.5f, 0.5f}, kWholeTexture, mean, std::min(3, textures->channels(m.diffuseMap)));
+    if (textures->channels(m.diffuseMap) < 3) mean[1] = mean[2] = mean[0];
+    return m.diffuse * Vec3f(mean[0], mean[1], mean[2]);
+}
 
 struct Box3 {
     Vec3f lo{kInfinity}, hi{-kInfinity};
@@ -134,6 +143,7 @@ class Rasterizer {
           height_(scene.camera.height), tilesX_((width_ + options.tileSize - 1) / options.tileSize),
           tilesY_((height_ + options.tileSize - 1) / options.tileSize),
           ambient_(scene.environment.averageRadiance()) {
+        for (const Material &m : scene.materials) albedos_.push_back(previewAlbedo(m, scene.textures.get()));
         collectItems();
         binItems();
         if (options.shadows && options.mode == PreviewMode::Shaded && scene.sun.enabled()) {
@@ -377,6 +387,7 @@ class Rasterizer {
     float depthNear_ = kInfinity, depthFar_ = kNear;
     std::optional<ShadowMap> shadowMap_;
     Vec3f ambient_;  // the environment's mean radiance: the preview's sky light and background
+    std::vector<Vec3f> albedos_;  // per material
 };
 
 Vec3f Rasterizer::surfaceColor(const DrawItem &item, uint32_t triangleWord, float b1, float b2, float invDepth) const {
@@ -392,7 +403,7 @@ Vec3f Rasterizer::surfaceColor(const DrawItem &item, uint32_t triangleWord, floa
     // triangle's winding, and a smooth normal follows it.
     if ((triangleWord & kBackFacing) != 0) n = -n;
     MaterialId m = item.materialOverride != kNoMaterial ? item.materialOverride : mesh.triangleMaterials[tri];
-    Vec3f albedo = previewAlbedo(scene_.materials[m]);
+    Vec3f albedo = albedos_[m];
 
     switch (options_.mode) {
     case PreviewMode::Shaded: {
