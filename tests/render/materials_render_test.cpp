@@ -52,6 +52,14 @@ double meanRgb(const Film &film) {
     return sum / double(film.pixels().size() / 4 * 3);
 }
 
+float maxRgb(const Film &film) {
+    float highest = 0;
+    for (size_t i = 0; i < film.pixels().size(); ++i) {
+        if (i % 4 != 3) highest = std::max(highest, film.pixels()[i]);
+    }
+    return highest;
+}
+
 float minRgb(const Film &film) {
     float lowest = 1e30f;
     for (size_t i = 0; i < film.pixels().size(); ++i) {
@@ -73,18 +81,19 @@ TEST(MaterialsRender, PhongWhiteFurnace) {
   <material name="phong" diffuse="0.5" specular="1" specular_intensity="0.5" shininess=")") + shininess + R"("/>
   <sphere radius="1" segments="128" rings="64" material="phong"/>
 </scene>)"));
+        std::printf("Phong furnace n=%s: image mean %.5f, darkest value %.5f\n", shininess, meanRgb(film), minRgb(film));
         EXPECT_NEAR(meanRgb(film), 1.0, 0.01);
         EXPECT_GT(minRgb(film), 0.9f);
     }
 }
 
 // A white diffuse plane whose normal map tilts the shading normal by up to `tiltDegrees`
-// in waves, seen from above and at a grazing angle, under a uniform white sky.
-Film normalMappedFurnace(const std::string &camera, float tiltDegrees) {
+// in waves, seen from above and at a grazing angle, under a uniform white sky (or `lights`).
+Film normalMappedFurnace(const std::string &camera, float tiltDegrees,
+                         const std::string &lights = R"(<sun irradiance="0"/><environment radiance="1"/>)") {
     RenderScene scene = test::sceneFromXml(R"(<scene>
   )" + camera + R"(
-  <sun irradiance="0"/>
-  <environment radiance="1"/>
+  )" + lights + R"(
   <render spp="64" max_depth="16"/>
   <material name="white" diffuse="1"/>
   <plane size="200 200" material="white"/>
@@ -105,6 +114,8 @@ TEST(MaterialsRender, NormalMappedPlaneWhiteFurnace) {
     for (float tilt : {20.0f, 45.0f, 60.0f}) {
         SCOPED_TRACE(tilt);
         Film above = normalMappedFurnace(R"(<camera position="0 0 10" look_at="0 0 0" up="0 1 0" fov="60" resolution="32 32"/>)", tilt);
+        std::printf("normal-mapped furnace, tilt up to %.0f deg: mean from above %.5f, darkest %.5f\n", tilt,
+                    meanRgb(above), minRgb(above));
         EXPECT_NEAR(meanRgb(above), 1.0, 0.01);
         Film grazing = normalMappedFurnace(R"(<camera position="0 -30 0.5" look_at="0 0 0" fov="20" resolution="48 16"/>)", tilt);
         double sum = 0;
@@ -120,8 +131,20 @@ TEST(MaterialsRender, NormalMappedPlaneWhiteFurnace) {
                 }
             }
         }
+        std::printf("normal-mapped furnace, tilt up to %.0f deg: mean at grazing view %.5f\n", tilt, sum / count);
         EXPECT_NEAR(sum / count, 1.0, 0.01);
     }
+}
+
+// The furnace cannot tell whether the map is used at all: under a low sun it must show.
+TEST(MaterialsRender, NormalMapsShadeUnderTheSun) {
+    const char *camera = R"(<camera position="0 0 10" look_at="0 0 0" up="0 1 0" fov="60" resolution="32 32"/>)";
+    const char *sun = R"(<sun azimuth="90" elevation="30" irradiance="3" angular_diameter="0"/><environment radiance="0"/>)";
+    Film flat = normalMappedFurnace(camera, 0, sun), mapped = normalMappedFurnace(camera, 30, sun);
+    std::printf("under a sun at 30 deg: flat plane %.4f to %.4f, normal-mapped %.4f to %.4f\n", minRgb(flat),
+                maxRgb(flat), minRgb(mapped), maxRgb(mapped));
+    EXPECT_LT(maxRgb(flat) - minRgb(flat), 1e-4f);
+    EXPECT_GT(maxRgb(mapped) - minRgb(mapped), 0.3f * maxRgb(flat));
 }
 
 // A floor of albedo 0.5 under a vertical sun of irradiance 2 behind a large pane of glass:
