@@ -83,7 +83,8 @@ float Bsdf::foldedCosine(const Vec3f &wi) const {
 bool Bsdf::hasNonDeltaLobe() const { return !thinGlass_ && (maxComponent(diffuse_) > 0 || maxComponent(specular_) > 0); }
 
 Bsdf::LobeProbabilities Bsdf::lobeProbabilities(float cosThetaO) const {
-    float albedo = phongAlbedo(cosThetaO, exponent_), specular = luminance(specular_);
+    float specular = luminance(specular_);
+    float albedo = specular > 0 ? phongAlbedo(cosThetaO, exponent_) : 0.0f;
     LobeProbabilities p{luminance(diffuse_) + specular * (1 - albedo), specular * albedo, luminance(mirror_)};
     float total = p.cosine + p.phong + p.mirror;
     if (total <= 0) return {};
@@ -95,7 +96,10 @@ Vec3f Bsdf::eval(const Vec3f &wo, const Vec3f &wi) const {
     Vec3f o = frame_.toLocal(wo), i = frame_.toLocal(wi);
     if (o.z <= 0) return Vec3f(0.0f);
     Vec3f result = diffuse_ * (kInvPi * foldedCosine(wi));
-    if (i.z > 0) result += specular_ * ((phongLobe(o, i, exponent_) + phongCompensation(o.z, i.z, exponent_)) * i.z);
+    // Most surfaces are plain diffuse: no Phong lobe to evaluate.
+    if (i.z > 0 && maxComponent(specular_) > 0) {
+        result += specular_ * ((phongLobe(o, i, exponent_) + phongCompensation(o.z, i.z, exponent_)) * i.z);
+    }
     return result;
 }
 
@@ -105,7 +109,7 @@ float Bsdf::pdf(const Vec3f &wo, const Vec3f &wi) const {
     if (o.z <= 0) return 0;
     LobeProbabilities p = lobeProbabilities(o.z);
     float density = p.cosine * kInvPi * foldedCosine(wi);
-    if (i.z > 0) density += p.phong * phongPdf(o, i, exponent_);
+    if (i.z > 0 && p.phong > 0) density += p.phong * phongPdf(o, i, exponent_);
     return density;
 }
 

@@ -8,6 +8,7 @@ namespace veduta {
 namespace {
 
 constexpr int kSteps = 1 << 14;  // cells of the tabulated distribution over the filter's width
+constexpr int kGuideSize = 1 << 10;
 
 }  // namespace
 
@@ -26,12 +27,22 @@ FilterSampler::FilterSampler(const PixelFilter &filter) : width_(filter.width) {
         cdf_[size_t(i) + 1] = cdf_[size_t(i)] + blackmanHarris(x, width_);
     }
     for (double &c : cdf_) c /= cdf_.back();
+    guide_.resize(kGuideSize + 1);
+    size_t i = 0;
+    for (int k = 0; k <= kGuideSize; ++k) {
+        double p = double(k) / kGuideSize;
+        while (i + 1 < size_t(kSteps) && cdf_[i + 1] <= p) ++i;
+        guide_[size_t(k)] = uint32_t(i);
+    }
 }
 
 float FilterSampler::offset(float u) const {
     if (cdf_.empty()) return width_ * (u - 0.5f);
     // The cell whose share of the distribution holds u, and u's place within it.
-    auto above = std::upper_bound(cdf_.begin() + 1, cdf_.end() - 1, double(u));
+    size_t k = std::min(size_t(double(u) * kGuideSize), size_t(kGuideSize) - 1);
+    // The search ends before the table's last entry, so that u = 1 lands in the last cell.
+    size_t end = std::min(size_t(guide_[k + 1]) + 2, cdf_.size() - 1);
+    auto above = std::upper_bound(cdf_.begin() + guide_[k] + 1, cdf_.begin() + end, double(u));
     size_t i = size_t(above - cdf_.begin()) - 1;
     double span = cdf_[i + 1] - cdf_[i];
     double within = span > 0 ? std::clamp((u - cdf_[i]) / span, 0.0, 1.0) : 0.5;

@@ -4,6 +4,7 @@
 // depends on its own samples only, which keeps images identical for any tile size or region.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "core/vecmath.h"
@@ -29,6 +30,9 @@ class FilterSampler {
     // evenly spaced probabilities, as Cycles keeps, spreads its first and last entries
     // uniformly over the tails and samples them far too often.)
     std::vector<double> cdf_;
+    // For probability k/size(), the cell where the search for it starts: a short search
+    // instead of one over the whole table for every camera ray.
+    std::vector<uint32_t> guide_;
 };
 
 }  // namespace veduta

@@ -35,7 +35,10 @@ Vec3f PathTracer::radiance(const Ray &cameraRay, PixelSampler &sampler, RayCount
     float spread = pixelSpread_;
     // `depth` counts the vertices that scatter; passing straight through glass is not one.
     for (uint32_t depth = 0, segment = 0; segment < settings.maxDepth + kMaxPassThrough; ++segment) {
-        Vec2f uSun = sampler.next2D(), uEnvironment = sampler.next2D();
+        // Pairs for lights the scene does not sample are not drawn: which ones are is the
+        // same for every path, so each dimension still has one meaning.
+        Vec2f uSun = sun_.enabled() ? sampler.next2D() : Vec2f{};
+        Vec2f uEnvironment = environment_.sampled() ? sampler.next2D() : Vec2f{};
         Vec2f uLobeRoulette = sampler.next2D(), uDirection = sampler.next2D();
 
         std::optional<SurfaceInteraction> si = findSurface(ray, segment == 0, spread, counts);

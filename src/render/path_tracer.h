@@ -32,9 +32,9 @@ class PathTracer {
   public:
     PathTracer(const RenderScene &scene, const Bvh &bvh);
 
-    // Radiance arriving along the camera ray. Every bounce takes the same four sample pairs
-    // (sun, environment, lobe and roulette, direction) whatever happens, so the result is a
-    // pure function of the sampler.
+    // Radiance arriving along the camera ray. Every bounce takes the same sample pairs (sun
+    // and environment if the scene samples them, lobe and roulette, direction) whatever
+    // happens, so the result is a pure function of the sampler.
     Vec3f radiance(const Ray &cameraRay, PixelSampler &sampler, RayCounts &counts) const;
 
   private:
