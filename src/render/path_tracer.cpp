@@ -51,7 +51,7 @@ Vec3f PathTracer::radiance(const Ray &cameraRay, PixelSampler &sampler, RayCount
         // The last vertex's BSDF ray was traced only for the light it finds by escaping (the
         // other half of that vertex's multiple importance sampling), through panes if need be.
         if (depth == settings.maxDepth && !bsdf.isThinGlass()) break;
-        if (depth < settings.maxDepth && bsdf.hasNonDeltaLobe() && settings.lightSampling != LightSampling::Bsdf) {
+        if (bsdf.hasNonDeltaLobe() && settings.lightSampling != LightSampling::Bsdf) {
             L += beta * directLight(*si, bsdf, wo, uSun, uEnvironment, counts);
         }
 
