@@ -29,7 +29,9 @@ std::vector<std::string> displayNames(const OCIO::Config &config) {
 
 std::vector<std::string> viewNames(const OCIO::Config &config, const std::string &display) {
     std::vector<std::string> names;
-    for (int i = 0; i < config.getNumViews(display.c_str()); ++i) names.emplace_back(config.getView(display.c_str(), i));
+    for (int i = 0; i < config.getNumViews(display.c_str()); ++i) {
+        names.emplace_back(config.getView(display.c_str(), i));
+    }
     return names;
 }
 
@@ -148,7 +150,8 @@ void writeDisplayImageFile(const std::filesystem::path &file, const Image &linea
     const bool jpeg = extension == ".jpg" || extension == ".jpeg";
     const bool tiff = extension == ".tif" || extension == ".tiff";
     if (!jpeg && !tiff && extension != ".png") {
-        throw InputError(FileLoc{file.string()}, "display images are PNG, JPEG or TIFF (.png, .jpg, .jpeg, .tif, .tiff)");
+        throw InputError(FileLoc{file.string()},
+                         "display images are PNG, JPEG or TIFF (.png, .jpg, .jpeg, .tif, .tiff)");
     }
     Image display = toDisplay(jpeg ? colourOnly(linear) : linear, choice);
     OIIO::ImageSpec spec(display.width, display.height, display.channels, tiff ? OIIO::TypeUInt16 : OIIO::TypeUInt8);

@@ -1,7 +1,8 @@
 // Everything veduta does with image files in formats other than its own outputs: reading
 // any format OpenImageIO reads (cubemap faces, lat-long maps, textures), writing images for
-// `veduta cubemap`, display images through an OpenColorIO view, and filtered texture lookups. OpenImageIO and OpenColorIO live behind
-// this interface in a plugin (src/images/), loaded only when a scene or command needs it.
+// `veduta cubemap`, display images through an OpenColorIO view, and filtered texture lookups.
+// OpenImageIO and OpenColorIO live behind this interface in a plugin (src/images/), loaded
+// only when a scene or command needs it.
 #pragma once
 
 #include <filesystem>

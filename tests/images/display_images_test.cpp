@@ -213,7 +213,8 @@ TEST_F(DisplayImageTest, UnknownNamesListTheValidOnes) {
     std::filesystem::path other = writeOtherConfig();
     EXPECT_EQ(writing(named("", "Filmic", "", other)),
               fmt::format("{}: unknown view 'Filmic' for display 'Rec709'; views: Gamma2.2, Raw", other.string()));
-    EXPECT_EQ(writing(named("", "", "Punchy", other)), fmt::format("{}: unknown look 'Punchy'; looks: none", other.string()));
+    EXPECT_EQ(writing(named("", "", "Punchy", other)),
+              fmt::format("{}: unknown look 'Punchy'; looks: none", other.string()));
     EXPECT_FALSE(std::filesystem::exists(dir_ / "bad.png"));
     EXPECT_NE(inputErrorOf([&] { library_->checkDisplaySettings(named("", "", "", dir_ / "missing.ocio")); }), "");
     EXPECT_EQ(inputErrorOf([&] { library_->checkDisplaySettings(named("", "Filmic", "+Blue Light Fix")); }),
