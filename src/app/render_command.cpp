@@ -6,6 +6,7 @@
 
 #include "app/command_options.h"
 #include "app/commands.h"
+#include "app/display_options.h"
 #include "app/run_guarded.h"
 #include "app/scene_loading.h"
 #include "render/bvh.h"
@@ -21,6 +22,7 @@ struct RenderArgs {
     std::string scene;
     std::string exr;
     std::string png;
+    DisplayImageOptions display;
     std::optional<uint32_t> spp, seed, maxDepth, tileSize;
     std::string resolution;
     unsigned threads = 0;
@@ -40,6 +42,7 @@ void runRender(const RenderArgs &args) {
     std::string exr = args.exr.empty() ? defaultOutput(args.scene, ".exr") : args.exr;
     prepareOutputFile(exr);
     if (!args.png.empty()) prepareOutputFile(args.png);
+    checkDisplayOptions(args.display);
     SceneDescription description = loadSceneDescription(args.scene);
     applyOverrides(args, description);
     RenderScene scene = buildRenderScene(description);
@@ -49,6 +52,7 @@ void runRender(const RenderArgs &args) {
 
     writeExr(film, exr);
     if (!args.png.empty()) writePng(film, args.png);
+    writeDisplayImage(film, args.display);
     if (stats.nonFiniteSamples) {
         std::fprintf(stderr, "veduta: warning: %llu samples were not finite and were dropped\n",
                      (unsigned long long)stats.nonFiniteSamples);
@@ -69,6 +73,7 @@ void addRenderCommand(CLI::App &app, int &exitCode) {
     cmd->add_option("-o,--output", args->exr, "EXR file to write [renders/<scene name>.exr]")
         ->check(fileWithExtension(".exr"));
     cmd->add_option("--png", args->png, "Also write an 8-bit sRGB PNG here")->check(fileWithExtension(".png"));
+    addDisplayOptions(*cmd, args->display);
     cmd->add_option("--spp", args->spp, "Samples per pixel (overrides the scene)")->check(CLI::Range(1u, 1u << 24));
     cmd->add_option("--seed", args->seed, "Seed of every random choice (overrides the scene)");
     cmd->add_option("--max-depth", args->maxDepth, "Longest path, in bounces (overrides the scene)")

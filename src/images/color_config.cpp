@@ -8,26 +8,28 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "core/error.h"
+
 namespace veduta {
 
 namespace OCIO = OCIO_NAMESPACE;
 
 namespace {
 
-OCIO::ConstConfigRcPtr readConfig() {
-    const char *file = std::getenv("OCIO");
+OCIO::ConstConfigRcPtr readConfig(const std::string &file) {
     try {
-        if (file && *file) return OCIO::Config::CreateFromFile(file);
+        if (!file.empty()) return OCIO::Config::CreateFromFile(file.c_str());
         std::istringstream text(kVedutaOcioConfig);
         return OCIO::Config::CreateFromStream(text);
     } catch (const OCIO::Exception &e) {
-        throw std::runtime_error(
-            fmt::format("cannot read the colour configuration {}: {}", file && *file ? file : "(built in)", e.what()));
+        throw std::runtime_error(fmt::format("cannot read the colour configuration {}: {}",
+                                             file.empty() ? kBuiltInConfigName : file, e.what()));
     }
 }
 
-// Applies `processor` to the pixels' colour: RGB(A) images as they are, one- and
-// two-channel images as grey, whose conversion keeps grey.
+}  // namespace
+
+// One- and two-channel images go through as grey, whose conversion keeps grey.
 void applyToColor(const OCIO::ConstCPUProcessorRcPtr &processor, Image &image) {
     const size_t pixels = size_t(image.width) * size_t(image.height);
     if (image.channels >= 3) {
@@ -46,11 +48,28 @@ void applyToColor(const OCIO::ConstCPUProcessorRcPtr &processor, Image &image) {
     for (size_t p = 0; p < pixels; ++p) image.pixels[p * size_t(image.channels)] = rgb[p * 3];
 }
 
-}  // namespace
+std::shared_ptr<const ColorConfig> ColorConfig::load() {
+    const char *variable = std::getenv("OCIO");
+    std::string file = variable ? variable : "";
+    return std::make_shared<const ColorConfig>(readConfig(file), file.empty() ? kBuiltInConfigName : file);
+}
 
-std::shared_ptr<const ColorConfig> ColorConfig::load() { return std::make_shared<const ColorConfig>(readConfig()); }
+std::shared_ptr<const ColorConfig> ColorConfig::loadFile(const std::filesystem::path &file) {
+    OCIO::ConstConfigRcPtr config;
+    try {
+        config = OCIO::Config::CreateFromFile(file.c_str());
+        config->validate();
+    } catch (const OCIO::Exception &e) {
+        throw InputError(FileLoc{file.string()}, fmt::format("not a usable colour configuration: {}", e.what()));
+    }
+    if (!config->getColorSpace(OCIO::ROLE_SCENE_LINEAR)) {
+        throw InputError(FileLoc{file.string()}, "the colour configuration has no scene_linear role");
+    }
+    return std::make_shared<const ColorConfig>(config, file.string());
+}
 
-ColorConfig::ColorConfig(OCIO::ConstConfigRcPtr config) : config_(std::move(config)) {
+ColorConfig::ColorConfig(OCIO::ConstConfigRcPtr config, std::string source)
+    : config_(std::move(config)), source_(std::move(source)) {
     OCIO::ConstColorSpaceRcPtr linear = config_->getColorSpace(OCIO::ROLE_SCENE_LINEAR);
     if (!linear) throw std::runtime_error("the colour configuration has no scene_linear role");
     linear_ = linear->getName();

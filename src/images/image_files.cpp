@@ -2,8 +2,13 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <stdexcept>
+#include <vector>
 
+#include <OpenImageIO/filesystem.h>
 #include <fmt/format.h>
 
 #include "core/error.h"
@@ -34,14 +39,26 @@ std::string knownSpace(const std::filesystem::path &file, const std::string &nam
                      fmt::format("unknown colour space '{}' (the colour configuration has: {})", name, config.names()));
 }
 
+void writeBytes(const std::filesystem::path &temporary, const std::vector<unsigned char> &bytes,
+                const std::filesystem::path &file) {
+    std::FILE *out = std::fopen(temporary.c_str(), "wb");
+    bool written = out && std::fwrite(bytes.data(), 1, bytes.size(), out) == bytes.size();
+    int error = errno;
+    if (out && std::fclose(out) != 0 && written) {
+        written = false;
+        error = errno;
+    }
+    if (!written) throw std::runtime_error(fmt::format("{}: {}", file.string(), std::strerror(error)));
+}
+
+}  // namespace
+
 std::string lowercaseExtension(const std::filesystem::path &file) {
     std::string extension = file.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return char(std::tolower(c)); });
     return extension;
 }
-
-}  // namespace
 
 OIIO::ImageSpec readImageSpec(const std::filesystem::path &file) { return openImage(file)->spec(); }
 
@@ -73,15 +90,26 @@ void writeImageFile(const std::filesystem::path &file, const Image &image, const
     std::string space = keepsFloat ? config.linear() : knownSpace(file, "sRGB", config);
     config.fromLinear(encoded, space);
     const OIIO::TypeDesc format = keepsFloat ? OIIO::TypeFloat : OIIO::TypeUInt8;
-    OIIO::ImageSpec spec = keepAlpha(OIIO::ImageSpec(image.width, image.height, image.channels, format));
+    OIIO::ImageSpec spec(image.width, image.height, image.channels, format);
     spec.attribute("oiio:ColorSpace", space);
     if (extension == ".exr") spec.attribute("compression", "zip");
+    writeEncodedImage(file, encoded, spec);
+}
+
+void writeEncodedImage(const std::filesystem::path &file, const Image &encoded, OIIO::ImageSpec spec) {
+    spec = keepAlpha(std::move(spec));
     writeFileAtomically(file, [&](const std::filesystem::path &temporary) {
         std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create(temporary.string());
         if (!output) throw std::runtime_error(fmt::format("{}: {}", file.string(), OIIO::geterror()));
+        // Some of OpenImageIO's writers miss a failed write (PNG) or end the process on one
+        // (libjpeg exits): formats that can are encoded in memory and written here, checked.
+        std::vector<unsigned char> bytes;
+        OIIO::Filesystem::IOVecOutput memory(bytes);
+        bool inMemory = output->supports("ioproxy") && output->set_ioproxy(&memory);
         bool written = output->open(temporary.string(), spec) &&
                        output->write_image(OIIO::TypeFloat, encoded.pixels.data()) && output->close();
         if (!written) throw std::runtime_error(fmt::format("{}: {}", file.string(), output->geterror()));
+        if (inMemory) writeBytes(temporary, bytes, file);
     });
 }
 

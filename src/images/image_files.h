@@ -30,4 +30,12 @@ Image readImageFile(const std::filesystem::path &file, const std::string &colorS
 // all; throws std::runtime_error naming the file when it cannot be written.
 void writeImageFile(const std::filesystem::path &file, const Image &image, const ColorConfig &config);
 
+// Writes pixels already in the file's encoding (0 to 1 for integer formats) as `spec` says
+// (size, channels, data type, metadata), alpha unassociated. The file appears whole or not at
+// all; throws std::runtime_error naming the file when it cannot be written.
+void writeEncodedImage(const std::filesystem::path &file, const Image &encoded, OIIO::ImageSpec spec);
+
+// The file's extension in lower case, with its dot.
+std::string lowercaseExtension(const std::filesystem::path &file);
+
 }  // namespace veduta

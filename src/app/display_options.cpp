@@ -1,0 +1,61 @@
+#include "app/display_options.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "render/film_output.h"
+
+namespace veduta {
+
+namespace {
+
+std::string checkDisplayImageFile(const std::string &text) {
+    std::string extension = std::filesystem::path(text).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    for (const char *known : {".png", ".jpg", ".jpeg", ".tif", ".tiff"}) {
+        if (extension == known) return {};
+    }
+    return fmt::format("'{}' is not a .png, .jpg, .jpeg, .tif or .tiff file", text);
+}
+
+}  // namespace
+
+void addDisplayOptions(CLI::App &command, DisplayImageOptions &options) {
+    DisplaySettings &settings = options.settings;
+    CLI::Option *image =
+        command.add_option("--image", options.file, "Also write a display image (PNG, JPEG, TIFF) through an OCIO view")
+            ->check(CLI::Validator(checkDisplayImageFile, "FILE.png|jpg|tif"));
+    command.add_option("--display", settings.display, "OCIO display of --image [the config's default]")
+        ->needs(image);
+    command.add_option("--view", settings.view, "OCIO view of --image [the display's default]")->needs(image);
+    command.add_option("--look", settings.look, "OCIO looks of --image, separated by commas [none]")->needs(image);
+    command.add_option("--exposure", settings.exposureStops, "Exposure of --image in stops, before the view [0]")
+        ->check(CLI::Range(-64.0f, 64.0f))
+        ->needs(image);
+    command.add_option("--ocio-config", settings.config, "OCIO config for --image [$OCIO, else veduta's own]")
+        ->check(CLI::ExistingFile)
+        ->needs(image);
+}
+
+void checkDisplayOptions(const DisplayImageOptions &options) {
+    if (options.file.empty()) return;
+    prepareOutputFile(options.file);
+    imageLibrary().checkDisplaySettings(options.settings);
+}
+
+void writeDisplayImage(const Film &film, const DisplayImageOptions &options) {
+    if (options.file.empty()) return;
+    imageLibrary().writeDisplayImage(options.file, filmImage(film), options.settings);
+}
+
+Image filmImage(const Film &film) {
+    Image image(film.width(), film.height(), 4);
+    image.pixels = film.pixels();
+    return image;
+}
+
+}  // namespace veduta
