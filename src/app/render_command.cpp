@@ -58,9 +58,13 @@ void runRender(const RenderArgs &args) {
                      (unsigned long long)stats.nonFiniteSamples);
     }
     if (!args.quiet) {
-        std::fprintf(stderr, "%s: %dx%d, %u spp, %.2f s, %.2f Mrays/s%s%s\n", exr.c_str(), film.width(), film.height(),
+        std::string also;
+        for (const std::string &file : {args.png, args.display.file}) {
+            if (!file.empty()) also += ", " + file;
+        }
+        std::fprintf(stderr, "%s: %dx%d, %u spp, %.2f s, %.2f Mrays/s%s\n", exr.c_str(), film.width(), film.height(),
                      scene.settings.samplesPerPixel, stats.seconds, double(stats.rays.total()) / stats.seconds * 1e-6,
-                     args.png.empty() ? "" : ", ", args.png.c_str());
+                     also.c_str());
     }
 }
 
