@@ -37,7 +37,8 @@ std::shared_ptr<Cubemap> skyWithSun(int size) {
                 Vec3f sum(0.0f);
                 for (int i = 0; i < kSub; ++i) {
                     for (int j = 0; j < kSub; ++j) {
-                        Vec3f d = map->direction(f, float(x) + (float(i) + 0.5f) / kSub, float(y) + (float(j) + 0.5f) / kSub);
+                        float a = float(x) + (float(i) + 0.5f) / kSub, b = float(y) + (float(j) + 0.5f) / kSub;
+                        Vec3f d = map->direction(f, a, b);
                         Vec3f radiance = d.z > 0 ? Vec3f(0.25f, 0.35f, 0.6f) * (0.6f + 0.4f * d.z) : Vec3f(0.08f);
                         if (dot(d, sun) > cosRadius) radiance = Vec3f(5e4f, 4.6e4f, 4e4f);
                         sum += radiance;

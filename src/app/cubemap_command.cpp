@@ -90,7 +90,8 @@ void addCubemapCommand(CLI::App &app, int &exitCode) {
                     "(east, west, north, south, up, down) or {axis} (+x, -x, +y, -y, +z, -z), or a scene "
                     "file (.xml), whose environment (such as its baked sky) is written")
         ->required();
-    cmd->add_option("-o,--output", o->output, "Output image, or a name with {face} or {axis} for six faces")->required();
+    cmd->add_option("-o,--output", o->output, "Output image, or a name with {face} or {axis} for six faces")
+        ->required();
     std::string layouts;
     for (const auto &[name, layout] : kLayouts) layouts += (layouts.empty() ? "" : ", ") + name;
     cmd->add_option("--to", o->layout,
@@ -99,7 +100,8 @@ void addCubemapCommand(CLI::App &app, int &exitCode) {
     cmd->add_option("--size", o->size, "Face size in pixels (default: the input's; a lat-long image is 4x as wide)")
         ->check(CLI::Range(1, 16384));
     cmd->add_option("--colorspace", o->colorSpace,
-                    "OpenColorIO colour space of the input (default: the file's own: sRGB for 8-bit, linear for float)");
+                    "OpenColorIO colour space of the input "
+                    "(default: the file's own: sRGB for 8-bit, linear for float)");
     cmd->callback([o, &exitCode] {
         CubemapLayout layout = outputLayout(*o);  // a usage error, before any work
         exitCode = runGuarded([&] { runCubemap(*o, layout); });

@@ -42,7 +42,9 @@ Cubemap readCubemap(const std::filesystem::path &file, const std::string &colorS
         return cubemapFromFaces(faces);
     }
     Image image = library.read(file, colorSpace);
-    if (image.width == 2 * image.height) return cubemapFromLatLong(image, faceSize > 0 ? faceSize : std::max(1, image.width / 4));
+    if (image.width == 2 * image.height) {
+        return cubemapFromLatLong(image, faceSize > 0 ? faceSize : std::max(1, image.width / 4));
+    }
     return cubemapFromCross(image);
 }
 

@@ -80,7 +80,9 @@ float Bsdf::foldedCosine(const Vec3f &wi) const {
     return std::max(0.0f, dot(ns, wi)) + std::max(0.0f, dot(ns, mirrorAcross(wi, geometricNormal_)));
 }
 
-bool Bsdf::hasNonDeltaLobe() const { return !thinGlass_ && (maxComponent(diffuse_) > 0 || maxComponent(specular_) > 0); }
+bool Bsdf::hasNonDeltaLobe() const {
+    return !thinGlass_ && (maxComponent(diffuse_) > 0 || maxComponent(specular_) > 0);
+}
 
 Bsdf::LobeProbabilities Bsdf::lobeProbabilities(float cosThetaO) const {
     float specular = luminance(specular_);

@@ -16,7 +16,8 @@ constexpr float kBouncedSpread = 0.05f;
 constexpr int kMaxPassThrough = 256;
 
 Vec3f offsetTowards(const SurfaceInteraction &si, const Vec3f &direction) {
-    return offsetRayOrigin(si.position, dot(direction, si.geometricNormal) > 0 ? si.geometricNormal : -si.geometricNormal);
+    const Vec3f &n = si.geometricNormal;
+    return offsetRayOrigin(si.position, dot(direction, n) > 0 ? n : -n);
 }
 
 bool isBlack(const Vec3f &v) { return v.x == 0 && v.y == 0 && v.z == 0; }

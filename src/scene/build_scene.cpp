@@ -126,8 +126,9 @@ Sun placeSun(const SceneDescription &d) {
     if (!t.place && !d.georeference) {
         throw InputError(t.loc, "the sun needs 'latitude' and 'longitude', or a <georeference> for the scene");
     }
-    GeographicPoint place =
-        t.place ? *t.place : toGeographic(*d.georeference, d.georeference->originEasting, d.georeference->originNorthing);
+    GeographicPoint place = t.place ? *t.place
+                                    : toGeographic(*d.georeference, d.georeference->originEasting,
+                                                   d.georeference->originNorthing);
     SolarAngles angles = solarPositionNoaa(t.time, place.latitude, place.longitude);
     double azimuth = angles.azimuthDegrees;
     if (d.georeference) {

@@ -93,7 +93,9 @@ MaterialDesc readMaterialElement(const XmlElement &e, const std::filesystem::pat
 std::vector<MaterialDesc> readMaterialFile(const std::filesystem::path &file) {
     XmlDocument doc = XmlDocument::fromFile(file);
     XmlElement root(doc, doc.root());
-    if (root.name() != "materials") root.fail(fmt::format("the root element is <{}>, expected <materials>", root.name()));
+    if (root.name() != "materials") {
+        root.fail(fmt::format("the root element is <{}>, expected <materials>", root.name()));
+    }
     root.integer("version", 1, 1, 1);
     root.checkAllRead();
     std::vector<MaterialDesc> materials;

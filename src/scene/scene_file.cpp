@@ -130,7 +130,9 @@ class SceneFileReader {
             e.failAt(culprit, error.what());
         }
         if (e.has("latitude") != e.has("longitude")) e.fail("give the sun both 'latitude' and 'longitude'");
-        if (e.has("latitude")) t.place = GeographicPoint{e.number("latitude", 0, -90, 90), e.number("longitude", 0, -180, 180)};
+        if (e.has("latitude")) {
+            t.place = GeographicPoint{e.number("latitude", 0, -90, 90), e.number("longitude", 0, -180, 180)};
+        }
         scene_.sunTime = t;
     }
 
@@ -138,7 +140,9 @@ class SceneFileReader {
         if (scene_.georeference) e.fail("the scene has a georeference already");
         Georeference g;
         std::string crs = e.string("crs");
-        if (crs.rfind("EPSG:", 0) != 0 || crs.size() < 6 || crs.find_first_not_of("0123456789", 5) != std::string::npos) {
+        bool epsgForm = crs.rfind("EPSG:", 0) == 0 && crs.size() >= 6 &&
+                        crs.find_first_not_of("0123456789", 5) == std::string::npos;
+        if (!epsgForm) {
             e.failAt("crs", fmt::format("crs '{}' is not of the form EPSG:<code>", crs));
         }
         auto [end, parseError] = std::from_chars(crs.data() + 5, crs.data() + crs.size(), g.epsg);
@@ -158,7 +162,8 @@ class SceneFileReader {
         // Transverse Mercator holds within a few degrees of its central meridian; far outside
         // it the inverse gives nonsense or nothing.
         if (!std::isfinite(place.latitude) || !std::isfinite(place.longitude) || std::abs(place.latitude) > 84) {
-            e.failAt("origin", fmt::format("origin {} {} lies outside the area of {}", g.originEasting, g.originNorthing, crs));
+            e.failAt("origin",
+                     fmt::format("origin {} {} lies outside the area of {}", g.originEasting, g.originNorthing, crs));
         }
         e.checkLeaf();
         scene_.georeference = g;
@@ -199,7 +204,8 @@ class SceneFileReader {
     void addMaterial(MaterialDesc m, const XmlElement &e) {
         for (const MaterialDesc &other : scene_.materials) {
             if (other.material.name == m.material.name) {
-                e.failAt("name", fmt::format("material '{}' is already defined at {}", m.material.name, other.loc.toString()));
+                e.failAt("name",
+                         fmt::format("material '{}' is already defined at {}", m.material.name, other.loc.toString()));
             }
         }
         scene_.materials.push_back(std::move(m));

@@ -26,7 +26,8 @@ void computeTangents(Mesh &mesh) {
     std::vector<Vec3f> dpdu(count, Vec3f(0.0f)), dpdv(count, Vec3f(0.0f));
     for (size_t t = 0; t < mesh.triangleCount(); ++t) {
         const uint32_t *idx = &mesh.indices[3 * t];
-        Vec3f e1 = mesh.positions[idx[1]] - mesh.positions[idx[0]], e2 = mesh.positions[idx[2]] - mesh.positions[idx[0]];
+        const Vec3f &p0 = mesh.positions[idx[0]];
+        Vec3f e1 = mesh.positions[idx[1]] - p0, e2 = mesh.positions[idx[2]] - p0;
         Vec2f uv0 = mesh.uvs[idx[0]], uv1 = mesh.uvs[idx[1]], uv2 = mesh.uvs[idx[2]];
         float du1 = uv1.x - uv0.x, dv1 = uv1.y - uv0.y, du2 = uv2.x - uv0.x, dv2 = uv2.y - uv0.y;
         float det = du1 * dv2 - du2 * dv1;
