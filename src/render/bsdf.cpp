@@ -95,8 +95,20 @@ Bsdf::LobeProbabilities Bsdf::lobeProbabilities(float cosThetaO) const {
 
 Vec3f Bsdf::eval(const Vec3f &wo, const Vec3f &wi) const {
     if (thinGlass_ || !aboveSurface(wo, wi)) return Vec3f(0.0f);
-    Vec3f o = frame_.toLocal(wo), i = frame_.toLocal(wi);
+    Vec3f o = frame_.toLocal(wo);
     if (o.z <= 0) return Vec3f(0.0f);
+    return evalLocal(o, frame_.toLocal(wi), wi);
+}
+
+float Bsdf::pdf(const Vec3f &wo, const Vec3f &wi) const {
+    if (thinGlass_ || !aboveSurface(wo, wi)) return 0;
+    Vec3f o = frame_.toLocal(wo);
+    if (o.z <= 0) return 0;
+    return pdfLocal(o, frame_.toLocal(wi), wi, lobeProbabilities(o.z));
+}
+
+// o and i are wo and wi in the shading frame, wo above it and both above the surface.
+Vec3f Bsdf::evalLocal(const Vec3f &o, const Vec3f &i, const Vec3f &wi) const {
     Vec3f result = diffuse_ * (kInvPi * foldedCosine(wi));
     // Most surfaces are plain diffuse: no Phong lobe to evaluate.
     if (i.z > 0 && maxComponent(specular_) > 0) {
@@ -105,11 +117,7 @@ Vec3f Bsdf::eval(const Vec3f &wo, const Vec3f &wi) const {
     return result;
 }
 
-float Bsdf::pdf(const Vec3f &wo, const Vec3f &wi) const {
-    if (thinGlass_ || !aboveSurface(wo, wi)) return 0;
-    Vec3f o = frame_.toLocal(wo), i = frame_.toLocal(wi);
-    if (o.z <= 0) return 0;
-    LobeProbabilities p = lobeProbabilities(o.z);
+float Bsdf::pdfLocal(const Vec3f &o, const Vec3f &i, const Vec3f &wi, const LobeProbabilities &p) const {
     float density = p.cosine * kInvPi * foldedCosine(wi);
     if (i.z > 0 && p.phong > 0) density += p.phong * phongPdf(o, i, exponent_);
     return density;
@@ -135,9 +143,11 @@ std::optional<BsdfSample> Bsdf::sample(const Vec3f &wo, float uLobe, Vec2f u) co
     } else {
         return std::nullopt;
     }
-    float density = pdf(wo, wi);
+    if (!aboveSurface(wo, wi)) return std::nullopt;
+    Vec3f i = frame_.toLocal(wi);
+    float density = pdfLocal(o, i, wi, p);
     if (density <= 0) return std::nullopt;
-    return BsdfSample{wi, eval(wo, wi) / density, density, false};
+    return BsdfSample{wi, evalLocal(o, i, wi) / density, density, false};
 }
 
 std::optional<BsdfSample> Bsdf::sampleGlass(const Vec3f &wo, float uLobe) const {

@@ -62,6 +62,8 @@ class Bsdf {
     LobeProbabilities lobeProbabilities(float cosThetaO) const;
     bool aboveSurface(const Vec3f &wo, const Vec3f &wi) const;
     float foldedCosine(const Vec3f &wi) const;
+    Vec3f evalLocal(const Vec3f &o, const Vec3f &i, const Vec3f &wi) const;
+    float pdfLocal(const Vec3f &o, const Vec3f &i, const Vec3f &wi, const LobeProbabilities &p) const;
     std::optional<BsdfSample> sampleGlass(const Vec3f &wo, float uLobe) const;
 
     Frame frame_;

@@ -3,9 +3,9 @@
 # through one given by path, the view in the metadata, unknown names (exit 1, listing the valid
 # ones, nothing rendered), options without --image (exit 2), an unwritable folder (exit 3). A write
 # failing part-way is tested in tests/images/display_images_test.cpp.
-# Usage: display_cli_test.sh VEDUTA_BINARY
+# Usage: display_cli_test.sh VEDUTA_BINARY TEST_DATA_DIR
 set -u
-veduta=$1
+veduta=$1 data=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 . "$(dirname "$0")/test_lib.sh"
@@ -40,28 +40,10 @@ check "exposure and look" rc_is 0
 check "exposure recorded" bash -c "oiiotool --info -v '$work/bright.png' | grep -q 'exposure +1.5 stops'"
 check "look recorded" bash -c "oiiotool --info -v '$work/bright.png' | grep -q \"look 'Blue Light Fix'\""
 
-cat >"$work/other.ocio" <<'OCIO'
-ocio_profile_version: 2
-roles:
-  scene_linear: lin
-  default: lin
-displays:
-  Rec709:
-    - !<View> {name: Gamma2.2, colorspace: g22}
-    - !<View> {name: Raw, colorspace: lin}
-colorspaces:
-  - !<ColorSpace>
-    name: lin
-    isdata: false
-  - !<ColorSpace>
-    name: g22
-    isdata: false
-    from_scene_reference: !<ExponentTransform> {value: 2.2, direction: inverse}
-OCIO
-render --image "$work/other.png" --ocio-config "$work/other.ocio"
+render --image "$work/other.png" --ocio-config "$data/gamma22.ocio"
 check "config by path" rc_is 0
 check "config by path: its default view" bash -c "oiiotool --info -v '$work/other.png' | grep -q \"display 'Rec709', view 'Gamma2.2'\""
-OCIO="$work/other.ocio" render --image "$work/env.png" --view Raw
+OCIO="$data/gamma22.ocio" render --image "$work/env.png" --view Raw
 check "\$OCIO chooses the config" rc_is 0
 blender=/usr/share/blender/datafiles/colormanagement/config.ocio
 if [ -e "$blender" ]; then
@@ -82,9 +64,9 @@ check "unknown display lists the displays" err_has "unknown display 'sRBG'; disp
 render --image "$work/bad.png" --look Punchy
 check "unknown look exits 1" rc_is 1
 check "unknown look lists the looks" err_has "looks: Gamut Compression, Blue Light Fix"
-render --image "$work/bad.png" --ocio-config "$work/other.ocio" --view Filmic
+render --image "$work/bad.png" --ocio-config "$data/gamma22.ocio" --view Filmic
 check "unknown view of a config by path exits 1" rc_is 1
-check "names the config" err_has "$work/other.ocio: unknown view 'Filmic' for display 'Rec709'; views: Gamma2.2, Raw"
+check "names the config" err_has "$data/gamma22.ocio: unknown view 'Filmic' for display 'Rec709'; views: Gamma2.2, Raw"
 echo "not a config" >"$work/broken.ocio"
 render --image "$work/bad.png" --ocio-config "$work/broken.ocio"
 check "broken config exits 1" rc_is 1

@@ -24,23 +24,7 @@ namespace veduta {
 namespace {
 
 // A second config, as users give one by path: its own display and views.
-constexpr const char *kOtherConfig = R"(ocio_profile_version: 2
-roles:
-  scene_linear: lin
-  default: lin
-displays:
-  Rec709:
-    - !<View> {name: Gamma2.2, colorspace: g22}
-    - !<View> {name: Raw, colorspace: lin}
-colorspaces:
-  - !<ColorSpace>
-    name: lin
-    isdata: false
-  - !<ColorSpace>
-    name: g22
-    isdata: false
-    from_scene_reference: !<ExponentTransform> {value: 2.2, direction: inverse}
-)";
+const std::filesystem::path kOtherConfig = std::filesystem::path(VEDUTA_TEST_DATA) / "gamma22.ocio";
 
 class DisplayImageTest : public testing::Test {
   protected:
@@ -73,12 +57,6 @@ class DisplayImageTest : public testing::Test {
             red.push_back(int(std::lround(values[i] * 255.0f)));
         }
         return red;
-    }
-
-    std::filesystem::path writeOtherConfig() {
-        std::filesystem::path file = dir_ / "other.ocio";
-        std::ofstream(file) << kOtherConfig;
-        return file;
     }
 
     DisplayChoice choose(const DisplaySettings &settings) { return chooseDisplay(settings, ColorConfig::load()); }
@@ -156,7 +134,7 @@ TEST_F(DisplayImageTest, PngJpegAndTiffRecordTheView) {
 
 TEST_F(DisplayImageTest, AnotherConfigByPath) {
     DisplaySettings settings;
-    settings.config = writeOtherConfig();
+    settings.config = kOtherConfig;
     DisplayChoice choice = choose(settings);
     EXPECT_EQ(choice.display, "Rec709");
     EXPECT_EQ(choice.view, "Gamma2.2");
@@ -210,7 +188,7 @@ TEST_F(DisplayImageTest, UnknownNamesListTheValidOnes) {
               "veduta.ocio (built in): unknown view 'Filmc' for display 'sRGB'; views: Standard, Filmic, Raw");
     EXPECT_EQ(writing(named("", "", "Filmic, Punchy")),
               "veduta.ocio (built in): unknown look 'Filmic'; looks: Gamut Compression, Blue Light Fix");
-    std::filesystem::path other = writeOtherConfig();
+    std::filesystem::path other = kOtherConfig;
     EXPECT_EQ(writing(named("", "Filmic", "", other)),
               fmt::format("{}: unknown view 'Filmic' for display 'Rec709'; views: Gamma2.2, Raw", other.string()));
     EXPECT_EQ(writing(named("", "", "Punchy", other)),

@@ -1,7 +1,5 @@
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
 
 #include <tbb/task_arena.h>
 
@@ -22,16 +20,16 @@ Film renderWith(const RenderScene &scene, int threads) {
 
 Film renderXml(const std::string &xml) { return renderWith(test::sceneFromXml(xml), 2); }
 
-RenderScene defaultSceneAt(int width, int height, uint32_t spp) {
-    std::ifstream in(std::string(VEDUTA_SOURCE_DIR) + "/scenes/default.xml");
-    std::stringstream text;
-    text << in.rdbuf();
-    SceneDescription d = readSceneText(text.str(), "default.xml", VEDUTA_SOURCE_DIR "/scenes");
+// An example scene at a small size, for tests that compare renders with each other.
+RenderScene exampleSceneAt(const std::string &name, int width, int height, uint32_t spp) {
+    SceneDescription d = loadSceneDescription(std::string(VEDUTA_SOURCE_DIR) + "/scenes/" + name);
     d.camera.width = width;
     d.camera.height = height;
     d.settings.samplesPerPixel = spp;
     return buildRenderScene(d);
 }
+
+RenderScene defaultSceneAt(int width, int height, uint32_t spp) { return exampleSceneAt("default.xml", width, height, spp); }
 
 TEST(Render, OneAndTwoThreadsGiveBitIdenticalImages) {
     RenderScene scene = defaultSceneAt(96, 54, 4);
@@ -41,10 +39,7 @@ TEST(Render, OneAndTwoThreadsGiveBitIdenticalImages) {
 
 // Textures, normal maps, glass, cut-outs and the cubemap environment keep the promise too.
 TEST(Render, MaterialsSceneIsTheSameForAnyThreadCountAndTileSize) {
-    RenderScene scene = buildRenderScene(loadSceneDescription(VEDUTA_SOURCE_DIR "/scenes/materials.xml"));
-    scene.camera.width = 64;
-    scene.camera.height = 36;
-    scene.settings.samplesPerPixel = 2;
+    RenderScene scene = exampleSceneAt("materials.xml", 64, 36, 2);
     Film one = renderWith(scene, 1);
     scene.settings.tileSize = 5;
     Film two = renderWith(scene, 2);
