@@ -72,12 +72,12 @@ RenderScene makeScene(LightSampling sampling, uint32_t spp, const std::shared_pt
     return scene;
 }
 
-Film renderScene(const RenderScene &scene) {
+RgbaImage renderScene(const RenderScene &scene) {
     Bvh bvh(scene);
     return render(scene, bvh, RenderOptions{});
 }
 
-double relMse(const Film &image, const Film &reference) {
+double relMse(const RgbaImage &image, const RgbaImage &reference) {
     double sum = 0;
     size_t count = 0;
     for (size_t i = 0; i < image.pixels().size(); ++i) {
@@ -102,7 +102,7 @@ int main(int argc, char **argv) {
         if (std::strcmp(argv[i], "--hdri") == 0) hdri = argv[i + 1];
     }
     std::shared_ptr<Cubemap> sky = hdri ? std::make_shared<Cubemap>(readCubemap(hdri, "", 128)) : skyWithSun(64);
-    Film reference = renderScene(makeScene(LightSampling::Mis, referenceSpp, sky));
+    RgbaImage reference = renderScene(makeScene(LightSampling::Mis, referenceSpp, sky));
     std::printf("diffuse scene lit by %s; %u spp against a %u-spp MIS reference\n",
                 hdri ? hdri : "an HDR cubemap (6x64^2) with a 0.5 deg sun in it", spp, referenceSpp);
     std::printf("%-28s %12s\n", "strategy", "relMSE");

@@ -250,7 +250,7 @@ struct OsMesaRenderer::Impl {
         if (!OSMesaMakeCurrent(context, colour.data(), GL_FLOAT, width, height)) {
             throw std::runtime_error("OSMesaMakeCurrent failed");
         }
-        // Top row first, like Film, so the image needs no flip.
+        // Top row first, like RgbaImage, so the image needs no flip.
         OSMesaPixelStore(OSMESA_Y_UP, 0);
     }
 
@@ -462,9 +462,9 @@ void OsMesaRenderer::drawFrame() {
     impl_->draw();
 }
 
-Film OsMesaRenderer::image() const {
+RgbaImage OsMesaRenderer::image() const {
     const Impl &r = *impl_;
-    Film film(r.width, r.height);
+    RgbaImage film(r.width, r.height);
     for (int y = 0; y < r.height; ++y) {
         for (int x = 0; x < r.width; ++x) {
             const float *p = &r.colour[(size_t(y) * size_t(r.width) + size_t(x)) * 4];

@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "render/film.h"
+#include "core/rgba_image.h"
 #include "scene/render_scene.h"
 
 namespace veduta {
@@ -27,8 +27,8 @@ class OsMesaRenderer {
     // the colour buffer in memory: one frame, as a benchmark should time it.
     void drawFrame();
 
-    // The last frame: linear RGBA float, top row first, like the preview's Film.
-    Film image() const;
+    // The last frame: linear RGBA float, top row first, like the preview's RgbaImage.
+    RgbaImage image() const;
 
     // GL_RENDERER and GL_VERSION, to show which driver drew.
     std::string description() const;

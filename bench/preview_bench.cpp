@@ -27,7 +27,7 @@
 #include "median_reporter.h"
 #include "osmesa_renderer.h"
 #include "preview/preview.h"
-#include "render/film_output.h"
+#include "io/output_files.h"
 #include "scene/build_scene.h"
 #include "scene/shapes.h"
 
@@ -143,7 +143,7 @@ int srgb8(float linear) { return int(std::lround(linearToSrgb(linear) * 255.0f))
 
 // The share of pixels where some channel differs by more than 8 in 8-bit sRGB, as the PNGs
 // would show them; `diff` marks them red over a dimmed copy of `a`.
-double mismatchFraction(const Film &a, const Film &b, Film *diff) {
+double mismatchFraction(const RgbaImage &a, const RgbaImage &b, RgbaImage *diff) {
     size_t mismatched = 0;
     for (int y = 0; y < a.height(); ++y) {
         for (int x = 0; x < a.width(); ++x) {
@@ -164,8 +164,8 @@ void compareImages(BenchScene &b, const std::string &imageFolder) {
     tbb::task_arena arena(kThreads);
     PreviewImage preview = arena.execute([&] { return renderPreview(b.get(), shadedOptions()); });
     b.renderer().drawFrame();
-    Film gl = b.renderer().image();
-    Film diff(gl.width(), gl.height());
+    RgbaImage gl = b.renderer().image();
+    RgbaImage diff(gl.width(), gl.height());
     double fraction = mismatchFraction(preview.film, gl, &diff);
     std::printf("scene %s: %.3f %% of pixels differ by more than 8/255 in sRGB", b.name, 100.0 * fraction);
     if (!imageFolder.empty()) {

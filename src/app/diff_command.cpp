@@ -10,7 +10,7 @@
 
 #include "app/commands.h"
 #include "io/image_compare.h"
-#include "render/film_output.h"
+#include "io/output_files.h"
 
 namespace veduta {
 

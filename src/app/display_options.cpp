@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "render/film_output.h"
+#include "io/output_files.h"
 
 namespace veduta {
 
@@ -47,12 +47,12 @@ void checkDisplayOptions(const DisplayImageOptions &options) {
     imageLibrary().checkDisplaySettings(options.settings);
 }
 
-void writeDisplayImage(const Film &film, const DisplayImageOptions &options) {
+void writeDisplayImage(const RgbaImage &film, const DisplayImageOptions &options) {
     if (options.file.empty()) return;
     imageLibrary().writeDisplayImage(options.file, filmImage(film), options.settings);
 }
 
-Image filmImage(const Film &film) {
+Image filmImage(const RgbaImage &film) {
     Image image(film.width(), film.height(), 4);
     image.pixels = film.pixels();
     return image;

@@ -10,7 +10,7 @@
 
 #include "core/image.h"
 #include "io/image_library.h"
-#include "render/film.h"
+#include "core/rgba_image.h"
 
 namespace veduta {
 
@@ -27,9 +27,9 @@ void addDisplayOptions(CLI::App &command, DisplayImageOptions &options);
 void checkDisplayOptions(const DisplayImageOptions &options);
 
 // Writes the film as the display image, if one was asked for.
-void writeDisplayImage(const Film &film, const DisplayImageOptions &options);
+void writeDisplayImage(const RgbaImage &film, const DisplayImageOptions &options);
 
 // The film's linear RGBA pixels as an Image.
-Image filmImage(const Film &film);
+Image filmImage(const RgbaImage &film);
 
 }  // namespace veduta

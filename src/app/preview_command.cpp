@@ -10,7 +10,7 @@
 #include "app/run_guarded.h"
 #include "app/scene_loading.h"
 #include "preview/preview.h"
-#include "render/film_output.h"
+#include "io/output_files.h"
 #include "scene/build_scene.h"
 
 namespace veduta {

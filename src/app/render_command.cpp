@@ -10,7 +10,7 @@
 #include "app/run_guarded.h"
 #include "app/scene_loading.h"
 #include "render/bvh.h"
-#include "render/film_output.h"
+#include "io/output_files.h"
 #include "render/renderer.h"
 #include "scene/build_scene.h"
 
@@ -48,7 +48,7 @@ void runRender(const RenderArgs &args) {
     RenderScene scene = buildRenderScene(description);
     Bvh bvh(scene);
     RenderStats stats;
-    Film film = render(scene, bvh, RenderOptions{!args.quiet}, &stats);
+    RgbaImage film = render(scene, bvh, RenderOptions{!args.quiet}, &stats);
 
     writeExr(film, exr);
     if (!args.png.empty()) writePng(film, args.png);

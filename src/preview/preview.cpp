@@ -476,14 +476,14 @@ Vec3f objectIdColor(uint32_t id) {
 
 void renderPreview(const RenderScene &scene, const PreviewOptions &options, PreviewImage &image) {
     int w = scene.camera.width, h = scene.camera.height;
-    if (image.film.width() != w || image.film.height() != h) image.film = Film(w, h);
+    if (image.film.width() != w || image.film.height() != h) image.film = RgbaImage(w, h);
     image.depth.resize(size_t(w) * size_t(h));
     image.objectId.resize(size_t(w) * size_t(h));
     Rasterizer(scene, options).run(image);
 }
 
 PreviewImage renderPreview(const RenderScene &scene, const PreviewOptions &options) {
-    PreviewImage image{Film(0, 0), {}, {}};
+    PreviewImage image{RgbaImage(0, 0), {}, {}};
     renderPreview(scene, options, image);
     return image;
 }

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "render/film.h"
+#include "core/rgba_image.h"
 #include "scene/render_scene.h"
 
 namespace veduta {
@@ -30,7 +30,7 @@ struct PreviewOptions {
 
 // What the preview computed per pixel, top row first.
 struct PreviewImage {
-    Film film;                       // the chosen mode's colours, linear (PNG output applies sRGB)
+    RgbaImage film;                       // the chosen mode's colours, linear (PNG output applies sRGB)
     std::vector<float> depth;        // view-axis distance; +infinity where no geometry
     std::vector<uint32_t> objectId;  // 0 where no geometry
 };

@@ -48,12 +48,12 @@ bool isFinite(const Vec3f &v) { return std::isfinite(v.x) && std::isfinite(v.y) 
 
 }  // namespace
 
-Film render(const RenderScene &scene, const Bvh &bvh, const RenderOptions &options, RenderStats *stats) {
+RgbaImage render(const RenderScene &scene, const Bvh &bvh, const RenderOptions &options, RenderStats *stats) {
     auto start = std::chrono::steady_clock::now();
     const Camera &camera = scene.camera;
     const CameraRays cameraRays(camera);
     const RenderSettings &settings = scene.settings;
-    Film film(camera.width, camera.height);
+    RgbaImage film(camera.width, camera.height);
     PathTracer tracer(scene, bvh);
     const FilterSampler filter(settings.filter);
     std::vector<Tile> tiles = makeTiles(camera.width, camera.height, int(settings.tileSize));

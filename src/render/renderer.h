@@ -3,7 +3,7 @@
 #pragma once
 
 #include "render/bvh.h"
-#include "render/film.h"
+#include "core/rgba_image.h"
 #include "render/path_tracer.h"
 
 namespace veduta {
@@ -19,6 +19,6 @@ struct RenderOptions {
 };
 
 // The scene's settings say how many samples and which tile size to use.
-Film render(const RenderScene &scene, const Bvh &bvh, const RenderOptions &options, RenderStats *stats = nullptr);
+RgbaImage render(const RenderScene &scene, const Bvh &bvh, const RenderOptions &options, RenderStats *stats = nullptr);
 
 }  // namespace veduta

@@ -220,8 +220,8 @@ TEST(Preview, ShadowsAgreeWithThePathTracer) {
 </scene>)");
     PreviewOptions options;
     options.shadows = true;
-    Film drawn = renderPreview(scene, options).film;
-    Film traced = tbb::task_arena(2).execute([&] { return render(scene, Bvh(scene), RenderOptions{}); });
+    RgbaImage drawn = renderPreview(scene, options).film;
+    RgbaImage traced = tbb::task_arena(2).execute([&] { return render(scene, Bvh(scene), RenderOptions{}); });
     // Lit ground shows ρ E cos θ / π; shadowed ground shows 0.
     float lit = 0.8f * 3.0f * std::sin(radians(50)) * kInvPi;
     size_t agree = 0, shadowedPixels = 0;

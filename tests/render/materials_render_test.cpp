@@ -35,7 +35,7 @@ class ProceduralTextures : public Textures {
     std::function<void(Vec2f, float *)> value_;
 };
 
-Film renderScene(const RenderScene &scene) {
+RgbaImage renderScene(const RenderScene &scene) {
     tbb::task_arena arena(2);
     return arena.execute([&] {
         Bvh bvh(scene);
@@ -44,7 +44,7 @@ Film renderScene(const RenderScene &scene) {
 }
 
 // Mean of the R, G and B values of all pixels.
-double meanRgb(const Film &film) {
+double meanRgb(const RgbaImage &film) {
     double sum = 0;
     for (size_t i = 0; i < film.pixels().size(); ++i) {
         if (i % 4 != 3) sum += film.pixels()[i];
@@ -52,7 +52,7 @@ double meanRgb(const Film &film) {
     return sum / double(film.pixels().size() / 4 * 3);
 }
 
-float maxRgb(const Film &film) {
+float maxRgb(const RgbaImage &film) {
     float highest = 0;
     for (size_t i = 0; i < film.pixels().size(); ++i) {
         if (i % 4 != 3) highest = std::max(highest, film.pixels()[i]);
@@ -60,7 +60,7 @@ float maxRgb(const Film &film) {
     return highest;
 }
 
-float minRgb(const Film &film) {
+float minRgb(const RgbaImage &film) {
     float lowest = 1e30f;
     for (size_t i = 0; i < film.pixels().size(); ++i) {
         if (i % 4 != 3) lowest = std::min(lowest, film.pixels()[i]);
@@ -73,7 +73,7 @@ float minRgb(const Film &film) {
 TEST(MaterialsRender, PhongWhiteFurnace) {
     for (const char *shininess : {"1", "10", "100", "1000"}) {
         SCOPED_TRACE(shininess);
-        Film film = renderScene(test::sceneFromXml(std::string(R"(<scene>
+        RgbaImage film = renderScene(test::sceneFromXml(std::string(R"(<scene>
   <camera position="0 -4 0" look_at="0 0 0" fov="32" resolution="32 32"/>
   <sun irradiance="0"/>
   <environment radiance="1"/>
@@ -89,7 +89,7 @@ TEST(MaterialsRender, PhongWhiteFurnace) {
 
 // A white diffuse plane whose normal map tilts the shading normal by up to `tiltDegrees`
 // in waves, seen from above and at a grazing angle, under a uniform white sky (or `lights`).
-Film normalMappedFurnace(const std::string &camera, float tiltDegrees,
+RgbaImage normalMappedFurnace(const std::string &camera, float tiltDegrees,
                          const std::string &lights = R"(<sun irradiance="0"/><environment radiance="1"/>)") {
     RenderScene scene = test::sceneFromXml(R"(<scene>
   )" + camera + R"(
@@ -113,11 +113,11 @@ Film normalMappedFurnace(const std::string &camera, float tiltDegrees,
 TEST(MaterialsRender, NormalMappedPlaneWhiteFurnace) {
     for (float tilt : {20.0f, 45.0f, 60.0f}) {
         SCOPED_TRACE(tilt);
-        Film above = normalMappedFurnace(R"(<camera position="0 0 10" look_at="0 0 0" up="0 1 0" fov="60" resolution="32 32"/>)", tilt);
+        RgbaImage above = normalMappedFurnace(R"(<camera position="0 0 10" look_at="0 0 0" up="0 1 0" fov="60" resolution="32 32"/>)", tilt);
         std::printf("normal-mapped furnace, tilt up to %.0f deg: mean from above %.5f, darkest %.5f\n", tilt,
                     meanRgb(above), minRgb(above));
         EXPECT_NEAR(meanRgb(above), 1.0, 0.01);
-        Film grazing = normalMappedFurnace(R"(<camera position="0 -30 0.5" look_at="0 0 0" fov="20" resolution="48 16"/>)", tilt);
+        RgbaImage grazing = normalMappedFurnace(R"(<camera position="0 -30 0.5" look_at="0 0 0" fov="20" resolution="48 16"/>)", tilt);
         double sum = 0;
         int count = 0;
         for (int y = grazing.height() / 2 + 1; y < grazing.height(); ++y) {  // the rows that see the plane
@@ -140,7 +140,7 @@ TEST(MaterialsRender, NormalMappedPlaneWhiteFurnace) {
 TEST(MaterialsRender, NormalMapsShadeUnderTheSun) {
     const char *camera = R"(<camera position="0 0 10" look_at="0 0 0" up="0 1 0" fov="60" resolution="32 32"/>)";
     const char *sun = R"(<sun azimuth="90" elevation="30" irradiance="3" angular_diameter="0"/><environment radiance="0"/>)";
-    Film flat = normalMappedFurnace(camera, 0, sun), mapped = normalMappedFurnace(camera, 30, sun);
+    RgbaImage flat = normalMappedFurnace(camera, 0, sun), mapped = normalMappedFurnace(camera, 30, sun);
     std::printf("under a sun at 30 deg: flat plane %.4f to %.4f, normal-mapped %.4f to %.4f\n", minRgb(flat),
                 maxRgb(flat), minRgb(mapped), maxRgb(mapped));
     EXPECT_LT(maxRgb(flat) - minRgb(flat), 1e-4f);
@@ -150,7 +150,7 @@ TEST(MaterialsRender, NormalMapsShadeUnderTheSun) {
 // A floor of albedo 0.5 under a vertical sun of irradiance 2 behind a large pane of glass:
 // the pane passes T' = 1 − R' of the sunlight, R' = 2R/(1 + R) at normal incidence.
 TEST(MaterialsRender, SunlightPassesGlassByFresnel) {
-    Film film = renderScene(test::sceneFromXml(R"(<scene>
+    RgbaImage film = renderScene(test::sceneFromXml(R"(<scene>
   <camera position="0 0 0.5" look_at="0 0 0" up="0 1 0" fov="20" resolution="16 16"/>
   <sun direction="0 0 1" irradiance="2" angular_diameter="0.53"/>
   <environment radiance="0"/>
@@ -174,7 +174,7 @@ TEST(MaterialsRender, SunlightPassesGlassByFresnel) {
 TEST(MaterialsRender, SunlightThroughGlassIsCountedOnce) {
     for (const char *sampling : {"mis", "light"}) {
         SCOPED_TRACE(sampling);
-        Film film = renderScene(test::sceneFromXml(std::string(R"(<scene>
+        RgbaImage film = renderScene(test::sceneFromXml(std::string(R"(<scene>
   <camera position="0 0 0.5" look_at="0 0 0" up="0 1 0" fov="20" resolution="16 16"/>
   <sun direction="0 0 1" irradiance="2" angular_diameter="5"/>
   <environment radiance="0"/>
@@ -213,7 +213,7 @@ TEST(MaterialsRender, CutOutsLetLightThrough) {
             out[3] = alpha;
         });
         scene.materials.back().opacityMap = 0;
-        Film film = renderScene(scene);
+        RgbaImage film = renderScene(scene);
         double expected = alpha == 0 ? 0.5 * 2 / M_PI : 0.0;
         EXPECT_NEAR(meanRgb(film), expected, 1e-3) << "alpha " << alpha;
     }

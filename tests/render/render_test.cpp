@@ -10,7 +10,7 @@
 namespace veduta {
 namespace {
 
-Film renderWith(const RenderScene &scene, int threads) {
+RgbaImage renderWith(const RenderScene &scene, int threads) {
     tbb::task_arena arena(threads);
     return arena.execute([&] {
         Bvh bvh(scene);
@@ -18,7 +18,7 @@ Film renderWith(const RenderScene &scene, int threads) {
     });
 }
 
-Film renderXml(const std::string &xml) { return renderWith(test::sceneFromXml(xml), 2); }
+RgbaImage renderXml(const std::string &xml) { return renderWith(test::sceneFromXml(xml), 2); }
 
 // An example scene at a small size, for tests that compare renders with each other.
 RenderScene exampleSceneAt(const std::string &name, int width, int height, uint32_t spp) {
@@ -33,33 +33,33 @@ RenderScene defaultSceneAt(int width, int height, uint32_t spp) { return example
 
 TEST(Render, OneAndTwoThreadsGiveBitIdenticalImages) {
     RenderScene scene = defaultSceneAt(96, 54, 4);
-    Film one = renderWith(scene, 1), two = renderWith(scene, 2);
+    RgbaImage one = renderWith(scene, 1), two = renderWith(scene, 2);
     EXPECT_EQ(one.pixels(), two.pixels());
 }
 
 // Textures, normal maps, glass, cut-outs and the cubemap environment keep the promise too.
 TEST(Render, MaterialsSceneIsTheSameForAnyThreadCountAndTileSize) {
     RenderScene scene = exampleSceneAt("materials.xml", 64, 36, 2);
-    Film one = renderWith(scene, 1);
+    RgbaImage one = renderWith(scene, 1);
     scene.settings.tileSize = 5;
-    Film two = renderWith(scene, 2);
+    RgbaImage two = renderWith(scene, 2);
     EXPECT_EQ(one.pixels(), two.pixels());
 }
 
 TEST(Render, TileSizeDoesNotChangeTheImage) {
     RenderScene scene = defaultSceneAt(96, 54, 4);
     scene.settings.tileSize = 7;
-    Film small = renderWith(scene, 2);
+    RgbaImage small = renderWith(scene, 2);
     scene.settings.tileSize = 64;
-    Film large = renderWith(scene, 2);
+    RgbaImage large = renderWith(scene, 2);
     EXPECT_EQ(small.pixels(), large.pixels());
 }
 
 TEST(Render, SeedChangesTheNoiseOnly) {
     RenderScene scene = defaultSceneAt(48, 27, 2);
-    Film a = renderWith(scene, 2);
+    RgbaImage a = renderWith(scene, 2);
     scene.settings.seed = 1;
-    Film b = renderWith(scene, 2);
+    RgbaImage b = renderWith(scene, 2);
     EXPECT_NE(a.pixels(), b.pixels());
 }
 
@@ -90,7 +90,7 @@ InstancedAndBaked instancedAndBaked(int maxDepth) {
 </scene>)")};
 }
 
-double mean(const Film &film) {
+double mean(const RgbaImage &film) {
     double sum = 0;
     for (float v : film.pixels()) sum += v;
     return sum / double(film.pixels().size());
@@ -102,7 +102,7 @@ TEST(Render, InstancedObjectsRenderLikeTheSameObjectsBaked) {
     InstancedAndBaked scenes = instancedAndBaked(1);
     ASSERT_EQ(scenes.instanced.instances.size(), 2u);
     ASSERT_EQ(scenes.baked.instances.size(), 0u);
-    Film a = renderWith(scenes.instanced, 2), b = renderWith(scenes.baked, 2);
+    RgbaImage a = renderWith(scenes.instanced, 2), b = renderWith(scenes.baked, 2);
     for (size_t i = 0; i < a.pixels().size(); ++i) {
         ASSERT_NEAR(a.pixels()[i], b.pixels()[i], 1e-5f * std::max(1.0f, a.pixels()[i])) << "value " << i;
     }
@@ -112,13 +112,13 @@ TEST(Render, InstancedObjectsRenderLikeTheSameObjectsBaked) {
 // path's worth, but never the image as a whole.
 TEST(Render, InstancedAndBakedAgreeWithIndirectLight) {
     InstancedAndBaked scenes = instancedAndBaked(4);
-    Film a = renderWith(scenes.instanced, 2), b = renderWith(scenes.baked, 2);
+    RgbaImage a = renderWith(scenes.instanced, 2), b = renderWith(scenes.baked, 2);
     EXPECT_NEAR(mean(a), mean(b), 1e-3 * mean(b));
 }
 
 // A white furnace: no sun, a uniform sky of radiance 1 and white (albedo 1) geometry, which
 // must then be invisible.
-Film renderFurnace(const std::string &camera, const std::string &settings, const std::string &geometry) {
+RgbaImage renderFurnace(const std::string &camera, const std::string &settings, const std::string &geometry) {
     return renderXml("<scene>\n" + camera + R"(
   <sun irradiance="0"/>
   <environment radiance="1"/>
@@ -127,7 +127,7 @@ Film renderFurnace(const std::string &camera, const std::string &settings, const
 }
 
 TEST(Render, WhiteFurnace) {
-    Film film = renderFurnace(R"(<camera position="0 -4 0" look_at="0 0 0" fov="40" resolution="48 48"/>)",
+    RgbaImage film = renderFurnace(R"(<camera position="0 -4 0" look_at="0 0 0" fov="40" resolution="48 48"/>)",
                               R"(<render spp="16" max_depth="64"/>)",
                               R"(<sphere radius="1" segments="128" rings="64" material="white"/>)");
     for (size_t i = 0; i < film.pixels().size(); ++i) ASSERT_NEAR(film.pixels()[i], 1.0f, 0.01f) << "value " << i;
@@ -137,7 +137,7 @@ TEST(Render, WhiteFurnace) {
 // decides: still radiance 1 in expectation. Per-sample values are 0 or 1/0.95^k, so pixels
 // carry Monte Carlo noise (σ ≈ 0.01 at 1024 spp); the image mean is far tighter.
 TEST(Render, WhiteFurnaceWithRussianRoulette) {
-    Film film = renderFurnace(R"(<camera position="3 -5 4" look_at="0 0 0.5" fov="50" resolution="16 16"/>)",
+    RgbaImage film = renderFurnace(R"(<camera position="3 -5 4" look_at="0 0 0.5" fov="50" resolution="16 16"/>)",
                               R"(<render spp="1024" max_depth="1024"/>)", R"(
   <plane size="6 6" material="white"/>
   <box size="1 1 1" material="white"/>
@@ -154,7 +154,7 @@ TEST(Render, WhiteFurnaceWithRussianRoulette) {
 // A Lambertian plane of albedo ρ lit by a sun of irradiance E at incidence θ, with a black
 // sky, has radiance ρ·E·cos θ / π everywhere.
 void expectPlaneRadiance(const std::string &sun, float expected) {
-    Film film = renderXml(R"(<scene>
+    RgbaImage film = renderXml(R"(<scene>
   <camera position="0 0 10" look_at="0 0 0" up="0 1 0" fov="30" resolution="32 32"/>
   )" + sun + R"(
   <environment radiance="0"/>
@@ -192,7 +192,7 @@ TEST(Render, AnalyticPlaneUnderSunAtSixtyDegrees) {
 
 // Under a uniform sky of radiance 1 and nothing else, a plane of albedo ρ reflects ρ.
 TEST(Render, AnalyticPlaneUnderUniformSky) {
-    Film film = renderXml(R"(<scene>
+    RgbaImage film = renderXml(R"(<scene>
   <camera position="0 0 10" look_at="0 0 0" up="0 1 0" fov="30" resolution="32 32"/>
   <sun irradiance="0"/>
   <environment radiance="1"/>

@@ -1,18 +1,18 @@
-// Writing a film to files: scene-linear float EXR, and an 8-bit sRGB PNG for a quick look.
+// Writing RGBA images to files: scene-linear float EXR, and an 8-bit sRGB PNG for a quick look.
 // Each file is written under a temporary name beside its target and renamed when complete,
 // so a failed or interrupted run never leaves a damaged file or destroys an older good one.
 #pragma once
 
 #include <filesystem>
 
-#include "render/film.h"
+#include "core/rgba_image.h"
 
 namespace veduta {
 
 // RGBA float, ZIP compression, channel names R G B A.
-void writeExr(const Film &film, const std::filesystem::path &file);
+void writeExr(const RgbaImage &film, const std::filesystem::path &file);
 // Plain sRGB transfer function, clamped to [0, 1]; OCIO display transforms come later.
-void writePng(const Film &film, const std::filesystem::path &file);
+void writePng(const RgbaImage &film, const std::filesystem::path &file);
 
 float linearToSrgb(float linear);
 

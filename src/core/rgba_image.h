@@ -1,4 +1,5 @@
-// The image being rendered: linear RGBA float pixels, top row first.
+// A plain picture in memory: linear RGBA float pixels, top row first. What the preview draws
+// and what a render develops its combined pass into for PNG and display images.
 #pragma once
 
 #include <cstddef>
@@ -8,9 +9,9 @@
 
 namespace veduta {
 
-class Film {
+class RgbaImage {
   public:
-    Film(int width, int height) : width_(width), height_(height), pixels_(size_t(width) * size_t(height) * 4, 0.0f) {}
+    RgbaImage(int width, int height) : width_(width), height_(height), pixels_(size_t(width) * size_t(height) * 4, 0.0f) {}
 
     int width() const { return width_; }
     int height() const { return height_; }

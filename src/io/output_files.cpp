@@ -1,4 +1,4 @@
-#include "render/film_output.h"
+#include "io/output_files.h"
 
 #include <algorithm>
 #include <cmath>
@@ -39,7 +39,7 @@ float linearToSrgb(float v) {
     return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
 }
 
-void writeExr(const Film &film, const std::filesystem::path &file) {
+void writeExr(const RgbaImage &film, const std::filesystem::path &file) {
     writeFileAtomically(file, [&](const std::filesystem::path &temporary) {
         try {
             Imf::Header header(film.width(), film.height());
@@ -62,7 +62,7 @@ void writeExr(const Film &film, const std::filesystem::path &file) {
     });
 }
 
-void writePng(const Film &film, const std::filesystem::path &file) {
+void writePng(const RgbaImage &film, const std::filesystem::path &file) {
     std::vector<uint8_t> pixels(film.pixels().size());
     for (size_t i = 0; i < pixels.size(); ++i) {
         float linear = std::isfinite(film.pixels()[i]) ? film.pixels()[i] : 0.0f;
