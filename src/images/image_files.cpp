@@ -39,18 +39,6 @@ std::string knownSpace(const std::filesystem::path &file, const std::string &nam
                      fmt::format("unknown colour space '{}' (the colour configuration has: {})", name, config.names()));
 }
 
-void writeBytes(const std::filesystem::path &temporary, const std::vector<unsigned char> &bytes,
-                const std::filesystem::path &file) {
-    std::FILE *out = std::fopen(temporary.c_str(), "wb");
-    bool written = out && std::fwrite(bytes.data(), 1, bytes.size(), out) == bytes.size();
-    int error = errno;
-    if (out && std::fclose(out) != 0 && written) {
-        written = false;
-        error = errno;
-    }
-    if (!written) throw std::runtime_error(fmt::format("{}: {}", file.string(), std::strerror(error)));
-}
-
 }  // namespace
 
 std::string lowercaseExtension(const std::filesystem::path &file) {
@@ -109,7 +97,7 @@ void writeEncodedImage(const std::filesystem::path &file, const Image &encoded, 
         bool written = output->open(temporary.string(), spec) &&
                        output->write_image(OIIO::TypeFloat, encoded.pixels.data()) && output->close();
         if (!written) throw std::runtime_error(fmt::format("{}: {}", file.string(), output->geterror()));
-        if (inMemory) writeBytes(temporary, bytes, file);
+        if (inMemory) writeWholeFile(temporary, bytes.data(), bytes.size(), file);
     });
 }
 

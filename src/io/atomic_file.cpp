@@ -1,7 +1,10 @@
 #include "io/atomic_file.h"
 
+#include <cerrno>
+#include <cstring>
 #include <stdexcept>
 
+#include <fcntl.h>
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -20,6 +23,38 @@ void writeFileAtomically(const std::filesystem::path &file,
         std::filesystem::remove(temporary, ignored);
         throw;
     }
+}
+
+void writeWholeFile(const std::filesystem::path &path, const void *data, size_t size,
+                    const std::filesystem::path &file) {
+    auto fail = [&](int error) {
+        return std::runtime_error(fmt::format("{}: {}", file.string(), std::strerror(error)));
+    };
+    int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (fd < 0) throw fail(errno);
+    const char *bytes = static_cast<const char *>(data);
+    while (size > 0) {
+        ssize_t written = ::write(fd, bytes, size);
+        if (written < 0 && errno == EINTR) continue;
+        if (written <= 0) {
+            int error = written < 0 ? errno : ENOSPC;
+            ::close(fd);
+            throw fail(error);
+        }
+        bytes += written;
+        size -= size_t(written);
+    }
+    // The rename that follows must not publish a file whose blocks never reached the disk.
+    if (::fsync(fd) != 0) {
+        int error = errno;
+        ::close(fd);
+        throw fail(error);
+    }
+    if (::close(fd) != 0) throw fail(errno);
+}
+
+void writeBytesAtomically(const std::filesystem::path &file, const void *data, size_t size) {
+    writeFileAtomically(file, [&](const std::filesystem::path &temporary) { writeWholeFile(temporary, data, size, file); });
 }
 
 }  // namespace veduta

@@ -3,6 +3,7 @@
 // interrupted run never leaves a damaged file or destroys an older good one.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <functional>
 
@@ -12,5 +13,14 @@ namespace veduta {
 // `file`. Removes the temporary and rethrows if `write` throws or the rename fails.
 void writeFileAtomically(const std::filesystem::path &file,
                          const std::function<void(const std::filesystem::path &temporary)> &write);
+
+// Writes bytes already in memory to `path` and flushes them to the disk, checking every write,
+// the flush and the close: a full disk shows as an error here, not as a short file later.
+// Errors name `file`, the target the user knows, rather than a temporary.
+void writeWholeFile(const std::filesystem::path &path, const void *data, size_t size,
+                    const std::filesystem::path &file);
+
+// writeFileAtomically for bytes already in memory.
+void writeBytesAtomically(const std::filesystem::path &file, const void *data, size_t size);
 
 }  // namespace veduta

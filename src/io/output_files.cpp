@@ -4,17 +4,12 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <OpenEXR/ImfChannelList.h>
-#include <OpenEXR/ImfFrameBuffer.h>
-#include <OpenEXR/ImfHeader.h>
-#include <OpenEXR/ImfOutputFile.h>
-#include <OpenEXR/ImfStandardAttributes.h>
-#include <OpenEXR/ImfStringAttribute.h>
 #include <fmt/format.h>
 #include <png.h>
 #include <unistd.h>
 
 #include "io/atomic_file.h"
+#include "io/exr_file.h"
 
 // Written with OpenEXR and libpng directly rather than through OpenImageIO: Debian's
 // OpenImageIO loads some 260 shared libraries, which costs about 0.6 s at every start of a
@@ -40,26 +35,17 @@ float linearToSrgb(float v) {
 }
 
 void writeExr(const RgbaImage &film, const std::filesystem::path &file) {
-    writeFileAtomically(file, [&](const std::filesystem::path &temporary) {
-        try {
-            Imf::Header header(film.width(), film.height());
-            header.compression() = Imf::ZIP_COMPRESSION;
-            header.insert("Software", Imf::StringAttribute("veduta"));
-            Imf::FrameBuffer frame;
-            const char *names[4] = {"R", "G", "B", "A"};
-            auto *base = reinterpret_cast<char *>(const_cast<float *>(film.rgba()));
-            for (int c = 0; c < 4; ++c) {
-                header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
-                frame.insert(names[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), 4 * sizeof(float),
-                                                  4 * sizeof(float) * size_t(film.width())));
-            }
-            Imf::OutputFile out(temporary.c_str(), header);
-            out.setFrameBuffer(frame);
-            out.writePixels(film.height());
-        } catch (const std::exception &e) {
-            throw std::runtime_error(fmt::format("{}: {}", file.string(), e.what()));
-        }
-    });
+    LayeredImage image;
+    image.fullWidth = film.width();
+    image.fullHeight = film.height();
+    image.dataWindow = {0, 0, film.width(), film.height()};
+    image.metadata["Software"] = std::string("veduta");
+    const char *names[4] = {"R", "G", "B", "A"};
+    for (int c = 0; c < 4; ++c) {
+        std::vector<float> &values = image.addChannel(names[c]);
+        for (size_t i = 0; i < values.size(); ++i) values[i] = film.pixels()[i * 4 + size_t(c)];
+    }
+    writeExr(image, file);
 }
 
 void writePng(const RgbaImage &film, const std::filesystem::path &file) {
@@ -69,16 +55,22 @@ void writePng(const RgbaImage &film, const std::filesystem::path &file) {
         float v = (i % 4 == 3) ? std::clamp(linear, 0.0f, 1.0f) : linearToSrgb(linear);
         pixels[i] = uint8_t(std::lround(v * 255.0f));
     }
-    writeFileAtomically(file, [&](const std::filesystem::path &temporary) {
-        png_image image{};
-        image.version = PNG_IMAGE_VERSION;
-        image.width = png_uint_32(film.width());
-        image.height = png_uint_32(film.height());
-        image.format = PNG_FORMAT_RGBA;  // 8-bit sRGB, as libpng's simplified API assumes
-        if (!png_image_write_to_file(&image, temporary.c_str(), 0, pixels.data(), 0, nullptr)) {
-            throw std::runtime_error(fmt::format("{}: {}", file.string(), image.message));
-        }
-    });
+    png_image image{};
+    image.version = PNG_IMAGE_VERSION;
+    image.width = png_uint_32(film.width());
+    image.height = png_uint_32(film.height());
+    image.format = PNG_FORMAT_RGBA;  // 8-bit sRGB, as libpng's simplified API assumes
+    // Encoded in memory so that every write to the disk is checked (libpng's own file writing
+    // does not check the close).
+    png_alloc_size_t size = 0;
+    if (!png_image_write_to_memory(&image, nullptr, &size, 0, pixels.data(), 0, nullptr)) {
+        throw std::runtime_error(fmt::format("{}: {}", file.string(), image.message));
+    }
+    std::vector<unsigned char> bytes(size);
+    if (!png_image_write_to_memory(&image, bytes.data(), &size, 0, pixels.data(), 0, nullptr)) {
+        throw std::runtime_error(fmt::format("{}: {}", file.string(), image.message));
+    }
+    writeBytesAtomically(file, bytes.data(), size);
 }
 
 }  // namespace veduta
