@@ -18,6 +18,7 @@
 #include <string>
 
 #include "io/cubemap_files.h"
+#include "film/passes.h"
 #include "render/renderer.h"
 #include "scene/build_scene.h"
 
@@ -74,7 +75,7 @@ RenderScene makeScene(LightSampling sampling, uint32_t spp, const std::shared_pt
 
 RgbaImage renderScene(const RenderScene &scene) {
     Bvh bvh(scene);
-    return render(scene, bvh, RenderOptions{});
+    return combinedImage(render(scene, bvh));
 }
 
 double relMse(const RgbaImage &image, const RgbaImage &reference) {

@@ -25,6 +25,7 @@ class RgbaImage {
     }
     const float *rgba() const { return pixels_.data(); }
     const std::vector<float> &pixels() const { return pixels_; }
+    std::vector<float> &pixels() { return pixels_; }
 
   private:
     int width_, height_;

@@ -42,6 +42,11 @@ inline Vec3f operator*(Vec3f a, float s) { return a *= s; }
 inline Vec3f operator*(float s, Vec3f a) { return a *= s; }
 inline Vec3f operator/(const Vec3f &a, float s) { return a * (1.0f / s); }
 
+// Sums that must stay exact over many samples (film accumulators).
+struct Vec3d {
+    double x = 0, y = 0, z = 0;
+};
+
 inline float dot(const Vec3f &a, const Vec3f &b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 inline Vec3f cross(const Vec3f &a, const Vec3f &b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};

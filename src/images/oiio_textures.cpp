@@ -32,6 +32,7 @@ TextureId OiioTextures::add(const std::filesystem::path &file, const std::string
 
 OiioTextures::Entry OiioTextures::open(const std::filesystem::path &texture, const std::filesystem::path &file) {
     Entry entry;
+    entry.texture = texture.filename().string();
     entry.handle = system_->get_texture_handle(OIIO::ustring(texture.string()));
     if (!entry.handle || !system_->get_texture_info(entry.handle, nullptr, 0, OIIO::ustring("channels"),
                                                     OIIO::TypeInt, &entry.channels)) {

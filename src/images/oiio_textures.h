@@ -27,12 +27,15 @@ class OiioTextures final : public Textures {
     // Not to be called while lookups run: lookups read the entries without a lock.
     TextureId add(const std::filesystem::path &file, const std::string &colorSpace) override;
     int channels(TextureId id) const override { return entries_.at(id).channels; }
+    // The cached texture's name, which is a hash of the file's path, size, time and colour space.
+    std::string fingerprint(TextureId id) const override { return entries_.at(id).texture; }
     void lookup(TextureId id, Vec2f uv, float footprint, float *out, int count) const override;
 
   private:
     struct Entry {
         OIIO::TextureSystem::TextureHandle *handle = nullptr;
         int channels = 0;
+        std::string texture;
     };
 
     Entry open(const std::filesystem::path &texture, const std::filesystem::path &file);

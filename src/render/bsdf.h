@@ -54,6 +54,10 @@ class Bsdf {
     // False for a pure mirror or glass: next-event estimation has nothing to evaluate there.
     bool hasNonDeltaLobe() const;
     bool isThinGlass() const { return thinGlass_; }
+    // For the Normal and DiffCol passes: the shading normal, and the diffuse reflectance the
+    // BSDF uses (after the energy rescaling; black for glass).
+    Vec3f shadingNormal() const { return frame_.n; }
+    Vec3f diffuseAlbedo() const { return thinGlass_ ? Vec3f(0.0f) : diffuse_; }
 
   private:
     struct LobeProbabilities {

@@ -26,9 +26,11 @@ bool isBlack(const Vec3f &v) { return v.x == 0 && v.y == 0 && v.z == 0; }
 
 PathTracer::PathTracer(const RenderScene &scene, const Bvh &bvh)
     : scene_(scene), bvh_(bvh), surfaces_(scene), materials_(scene), sun_(scene.sun), environment_(scene.environment),
-      pixelSpread_(radians(scene.camera.verticalFovDegrees) / float(scene.camera.height)) {}
+      pixelSpread_(radians(scene.camera.verticalFovDegrees) / float(scene.camera.height)),
+      cameraForward_(normalize(scene.camera.lookAt - scene.camera.position)) {}
 
-Vec3f PathTracer::radiance(const Ray &cameraRay, PixelSampler &sampler, RayCounts &counts) const {
+Vec3f PathTracer::radiance(const Ray &cameraRay, PixelSampler &sampler, RayCounts &counts, FirstHit *first) const {
+    if (first) *first = FirstHit{};
     const RenderSettings &settings = scene_.settings;
     Vec3f L(0.0f), beta(1.0f);
     Ray ray = cameraRay;
@@ -49,6 +51,7 @@ Vec3f PathTracer::radiance(const Ray &cameraRay, PixelSampler &sampler, RayCount
         }
         Vec3f wo = -ray.direction;
         Bsdf bsdf = materials_.bsdf(*si, wo, spread * si->distance);
+        if (segment == 0 && first) *first = describeFirstHit(*si, bsdf);
         // The last vertex's BSDF ray was traced only for the light it finds by escaping (the
         // other half of that vertex's multiple importance sampling), through panes if need be.
         if (depth == settings.maxDepth && !bsdf.isThinGlass()) break;
@@ -137,6 +140,26 @@ Vec3f PathTracer::transmittanceTowards(const SurfaceInteraction &si, const Vec3f
         shadow.origin = offsetTowards(blocker, wi);
     }
     return Vec3f(0.0f);
+}
+
+FirstHit PathTracer::firstHit(const Ray &cameraRay, RayCounts &counts) const {
+    std::optional<SurfaceInteraction> si = findSurface(cameraRay, true, pixelSpread_, counts);
+    if (!si) return {};
+    return describeFirstHit(*si, materials_.bsdf(*si, -cameraRay.direction, pixelSpread_ * si->distance));
+}
+
+FirstHit PathTracer::describeFirstHit(const SurfaceInteraction &si, const Bsdf &bsdf) const {
+    FirstHit first;
+    first.hit = true;
+    first.position = si.position;
+    first.normal = bsdf.shadingNormal();
+    first.albedo = bsdf.diffuseAlbedo();
+    first.depth = dot(si.position - scene_.camera.position, cameraForward_);
+    first.objectId = si.objectId;
+    first.materialId = si.material + 1;
+    first.buildingId = si.buildingId;
+    first.instanceId = si.instanceId;
+    return first;
 }
 
 Vec3f PathTracer::escapedLight(const Vec3f &direction, float bsdfPdf) const {

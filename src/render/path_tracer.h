@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "film/film.h"
 #include "render/bvh.h"
 #include "render/lights.h"
 #include "render/material_lookup.h"
@@ -34,8 +35,12 @@ class PathTracer {
 
     // Radiance arriving along the camera ray. Every bounce takes the same sample pairs (sun
     // and environment if the scene samples them, lobe and roulette, direction) whatever
-    // happens, so the result is a pure function of the sampler.
-    Vec3f radiance(const Ray &cameraRay, PixelSampler &sampler, RayCounts &counts) const;
+    // happens, so the result is a pure function of the sampler. `first`, if given, receives
+    // what the camera ray met first, for the film's passes.
+    Vec3f radiance(const Ray &cameraRay, PixelSampler &sampler, RayCounts &counts, FirstHit *first = nullptr) const;
+
+    // Only what the camera ray meets first, as radiance() reports it.
+    FirstHit firstHit(const Ray &cameraRay, RayCounts &counts) const;
 
   private:
     // The first surface along the ray that is there: cut-outs are passed through.
@@ -51,6 +56,7 @@ class PathTracer {
     // the density the last bounce chose it with; 0 after a delta lobe or for camera rays,
     // which no light sample could have found.
     Vec3f escapedLight(const Vec3f &direction, float bsdfPdf) const;
+    FirstHit describeFirstHit(const SurfaceInteraction &si, const Bsdf &bsdf) const;
 
     const RenderScene &scene_;
     const Bvh &bvh_;
@@ -59,6 +65,7 @@ class PathTracer {
     SunLight sun_;
     EnvironmentLight environment_;
     float pixelSpread_;  // radians a pixel spans, for texture footprints (ray cones)
+    Vec3f cameraForward_;
 };
 
 }  // namespace veduta

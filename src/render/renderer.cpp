@@ -1,10 +1,12 @@
 #include "render/renderer.h"
 
-#include <atomic>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <mutex>
+#include <stdexcept>
 
+#include <fmt/format.h>
 #include <pmmintrin.h>
 #include <xmmintrin.h>
 
@@ -12,20 +14,19 @@
 #include <tbb/parallel_for.h>
 
 #include "core/progress.h"
+#include "film/adaptive_sampling.h"
 #include "render/filter.h"
 
 namespace veduta {
 
 namespace {
 
-struct Tile {
-    int x0, y0, x1, y1;
-};
-
-std::vector<Tile> makeTiles(int width, int height, int size) {
-    std::vector<Tile> tiles;
-    for (int y = 0; y < height; y += size) {
-        for (int x = 0; x < width; x += size) tiles.push_back({x, y, std::min(x + size, width), std::min(y + size, height)});
+std::vector<PixelWindow> makeTiles(const PixelWindow &window, int size) {
+    std::vector<PixelWindow> tiles;
+    for (int y = window.y0; y < window.y1; y += size) {
+        for (int x = window.x0; x < window.x1; x += size) {
+            tiles.push_back({x, y, std::min(x + size, window.x1), std::min(y + size, window.y1)});
+        }
     }
     return tiles;
 }
@@ -46,58 +47,119 @@ class FlushDenormals {
 
 bool isFinite(const Vec3f &v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
+// Samples of one pixel, with what every sample needs worked out once per render.
+class PixelSampling {
+  public:
+    PixelSampling(const RenderScene &scene, const Bvh &bvh, uint32_t sampleOffset)
+        : seed_(scene.settings.seed), sampleOffset_(sampleOffset), cameraRays_(scene.camera), tracer_(scene, bvh),
+          filter_(scene.settings.filter) {}
+
+    // Takes the pixel's samples from the film's count up to `end` (numbers within the render).
+    void run(Film &film, int x, int y, uint32_t end, RenderStats &local) const {
+        size_t pixel = film.pixelIndex(x, y);
+        uint32_t begin = film.sampleCount(pixel);
+        // The data passes come from the pixel's sample 0, also in a render of a later range.
+        if (begin == 0 && sampleOffset_ > 0) {
+            PixelSampler sampler(seed_, uint32_t(x), uint32_t(y), 0);
+            film.setFirstSample(pixel, tracer_.firstHit(cameraRay(x, y, sampler), local.rays));
+        }
+        for (uint32_t s = begin; s < end; ++s) {
+            uint32_t index = sampleOffset_ + s;
+            PixelSampler sampler(seed_, uint32_t(x), uint32_t(y), index);
+            FirstHit first;
+            Vec3f L = tracer_.radiance(cameraRay(x, y, sampler), sampler, local.rays, &first);
+            if (!isFinite(L)) {
+                ++local.nonFiniteSamples;
+                L = Vec3f(0.0f);
+            }
+            film.addSample(pixel, index, L, first);
+            if (index == 0) film.setFirstSample(pixel, first);
+        }
+    }
+
+  private:
+    Ray cameraRay(int x, int y, PixelSampler &sampler) const {
+        Vec2f offset = filter_.sample(sampler.next2D());
+        return cameraRays_.generate(float(x) + 0.5f + offset.x, float(y) + 0.5f + offset.y);
+    }
+
+    uint32_t seed_, sampleOffset_;
+    CameraRays cameraRays_;
+    PathTracer tracer_;
+    FilterSampler filter_;
+};
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
 }  // namespace
 
-RgbaImage render(const RenderScene &scene, const Bvh &bvh, const RenderOptions &options, RenderStats *stats) {
-    auto start = std::chrono::steady_clock::now();
+Film makeFilm(const RenderScene &scene, const RenderOptions &options) {
     const Camera &camera = scene.camera;
-    const CameraRays cameraRays(camera);
+    PixelWindow whole{0, 0, camera.width, camera.height};
+    PixelWindow window = options.region.empty() ? whole : options.region;
+    if (!whole.contains(window)) {
+        throw std::invalid_argument(fmt::format("the region {} {} {} {} is not inside the {}x{} image", window.x0,
+                                                window.y0, window.x1, window.y1, camera.width, camera.height));
+    }
+    return Film(camera.width, camera.height, window);
+}
+
+void renderFilm(const RenderScene &scene, const Bvh &bvh, const RenderOptions &options, Film &film,
+                RenderStats &stats) {
+    const Clock::time_point start = Clock::now();
+    const double secondsBefore = stats.seconds;
     const RenderSettings &settings = scene.settings;
-    RgbaImage film(camera.width, camera.height);
-    PathTracer tracer(scene, bvh);
-    const FilterSampler filter(settings.filter);
-    std::vector<Tile> tiles = makeTiles(camera.width, camera.height, int(settings.tileSize));
-    Progress progress("render", tiles.size(), "tiles", options.showProgress);
+    const uint32_t total = settings.samplesPerPixel;
+    const PixelSampling sampling(scene, bvh, options.sampleOffset);
+    const std::vector<PixelWindow> tiles = makeTiles(film.window(), int(settings.tileSize));
+    bool passesNeeded = options.timeLimitSeconds > 0 || options.afterPass;
+    uint32_t step = options.passSamples ? options.passSamples : (passesNeeded ? kAdaptiveStep : total);
+    Progress progress("render", film.pixelCount() * (total - std::min(stats.samplesDone, total)), "samples",
+                      options.showProgress);
 
-    std::mutex statsMutex;
-    RenderStats total;
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles.size(), 1), [&](const tbb::blocked_range<size_t> &range) {
-        // Denormals only slow traversal down; Embree recommends flushing them. The thread's
-        // own mode comes back when the task ends.
-        FlushDenormals flushDenormals;
-        RenderStats local;
-        for (size_t t = range.begin(); t != range.end(); ++t) {
-            const Tile &tile = tiles[t];
-            for (int y = tile.y0; y < tile.y1; ++y) {
-                for (int x = tile.x0; x < tile.x1; ++x) {
-                    double sum[3] = {0, 0, 0};
-                    for (uint32_t s = 0; s < settings.samplesPerPixel; ++s) {
-                        PixelSampler sampler(settings.seed, uint32_t(x), uint32_t(y), s);
-                        Vec2f offset = filter.sample(sampler.next2D());
-                        Ray ray = cameraRays.generate(float(x) + 0.5f + offset.x, float(y) + 0.5f + offset.y);
-                        Vec3f L = tracer.radiance(ray, sampler, local.rays);
-                        if (!isFinite(L)) {
-                            ++local.nonFiniteSamples;
-                            continue;
-                        }
-                        sum[0] += L.x;
-                        sum[1] += L.y;
-                        sum[2] += L.z;
+    while (stats.samplesDone < total) {
+        const Clock::time_point passStart = Clock::now();
+        const uint32_t done = stats.samplesDone, end = passEnd(done, total, step, settings);
+        std::mutex statsMutex;
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles.size(), 1), [&](const tbb::blocked_range<size_t> &r) {
+            // Denormals only slow traversal down; Embree recommends flushing them. The thread's
+            // own mode comes back when the task ends.
+            FlushDenormals flushDenormals;
+            RenderStats local;
+            for (size_t t = r.begin(); t != r.end(); ++t) {
+                const PixelWindow &tile = tiles[t];
+                uint64_t taken = 0;
+                for (int y = tile.y0; y < tile.y1; ++y) {
+                    for (int x = tile.x0; x < tile.x1; ++x) {
+                        size_t pixel = film.pixelIndex(x, y);
+                        if (!pixelNeedsSamples(film, pixel, done, total, settings)) continue;
+                        taken += end - film.sampleCount(pixel);
+                        sampling.run(film, x, y, end, local);
                     }
-                    double inv = 1.0 / settings.samplesPerPixel;
-                    film.set(x, y, {float(sum[0] * inv), float(sum[1] * inv), float(sum[2] * inv)});
                 }
+                progress.advance(taken);
             }
-            progress.advance();
-        }
-        std::lock_guard lock(statsMutex);
-        total.rays += local.rays;
-        total.nonFiniteSamples += local.nonFiniteSamples;
-    }, tbb::simple_partitioner());
+            std::lock_guard lock(statsMutex);
+            stats.rays += local.rays;
+            stats.nonFiniteSamples += local.nonFiniteSamples;
+        }, tbb::simple_partitioner());
+        stats.samplesDone = end;
+        stats.seconds = secondsBefore + secondsSince(start);
+        if (options.afterPass) options.afterPass(film, stats);
+        double passSeconds = secondsSince(passStart);
+        if (options.timeLimitSeconds > 0 && stats.seconds + passSeconds > options.timeLimitSeconds) break;
+    }
     progress.finish();
+    stats.seconds = secondsBefore + secondsSince(start);
+}
 
-    total.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (stats) *stats = total;
+Film render(const RenderScene &scene, const Bvh &bvh, const RenderOptions &options, RenderStats *stats) {
+    Film film = makeFilm(scene, options);
+    RenderStats local;
+    renderFilm(scene, bvh, options, film, local);
+    if (stats) *stats = local;
     return film;
 }
 

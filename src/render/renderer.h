@@ -1,24 +1,48 @@
-// Rendering a whole image: tiles spread over TBB's threads, each pixel's samples summed in a
-// fixed order so that the image is bit-identical for any thread count or tile size.
+// Rendering an image, or a window of it, into a film: tiles spread over TBB's threads, each
+// pixel's samples summed in a fixed order, so that the film is bit-identical for any thread
+// count, tile size or region. The samples come in passes; between passes the film is whole,
+// which is where checkpoints are written, adaptive sampling decides and time limits stop.
 #pragma once
 
+#include <functional>
+
+#include "core/layered_image.h"
+#include "film/film.h"
 #include "render/bvh.h"
-#include "core/rgba_image.h"
 #include "render/path_tracer.h"
 
 namespace veduta {
 
+// What a render has done so far; with the film, all a resumed render needs.
 struct RenderStats {
+    uint32_t samplesDone = 0;  // passes completed: no pixel has more samples than this
     RayCounts rays;
     double seconds = 0;
-    uint64_t nonFiniteSamples = 0;  // samples dropped because a NaN or infinity came out
+    uint64_t nonFiniteSamples = 0;  // samples that came out NaN or infinite, counted as black
 };
 
 struct RenderOptions {
     bool showProgress = false;
+    PixelWindow region;         // empty: the whole image
+    uint32_t sampleOffset = 0;  // pixels take samples [sampleOffset, sampleOffset + spp) of their sequence
+    double timeLimitSeconds = 0;  // 0: none; otherwise no pass starts that would end after it
+    // Samples per pass without adaptive sampling; 0: all in one pass, unless a time limit or
+    // afterPass needs several. Changes speed only, never the image.
+    uint32_t passSamples = 0;
+    // Called after each pass with the whole film, e.g. to write a checkpoint.
+    std::function<void(Film &, const RenderStats &)> afterPass;
 };
 
-// The scene's settings say how many samples and which tile size to use.
-RgbaImage render(const RenderScene &scene, const Bvh &bvh, const RenderOptions &options, RenderStats *stats = nullptr);
+// The film a render of `options.region` (or the whole image) starts from.
+Film makeFilm(const RenderScene &scene, const RenderOptions &options);
+
+// Renders into `film` from where `stats` says it stands (nothing done for a fresh film, or
+// what a checkpoint recorded) until every pixel has its samples, has converged, or the time
+// limit is reached. The scene's settings give the samples per pixel and the tile size.
+void renderFilm(const RenderScene &scene, const Bvh &bvh, const RenderOptions &options, Film &film,
+                RenderStats &stats);
+
+// A whole fresh render.
+Film render(const RenderScene &scene, const Bvh &bvh, const RenderOptions &options = {}, RenderStats *stats = nullptr);
 
 }  // namespace veduta

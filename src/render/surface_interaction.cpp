@@ -32,8 +32,17 @@ SurfaceInteraction SurfaceLookup::at(const Hit &hit, const Vec3f &rayDirection) 
     SurfaceInteraction si;
     si.material = mesh.triangleMaterials[hit.primitive];
     si.distance = hit.t;
+    if (!hit.instanced) {
+        const BakedMesh &baked = scene_.meshes[hit.index];
+        si.objectId = baked.objectId;
+        si.buildingId = baked.buildingId;
+        si.instanceId = baked.instanceId;
+    }
     if (hit.instanced) {
         const Instance &instance = scene_.instances[hit.index];
+        si.objectId = instance.objectId;
+        si.buildingId = instance.buildingId;
+        si.instanceId = instance.instanceId;
         const Transform &normalTransform = instanceNormalTransforms_[hit.index];
         position = instance.objectToWorld.applyPoint(position);
         e1 = instance.objectToWorld.applyVector(e1);

@@ -23,6 +23,11 @@ struct SurfaceInteraction {
     Vec3f tangent;
     float bitangentSign = 1;
     bool backFacing = false;  // the ray came from the side the mesh's winding faces away from
+
+    // Whose surface it is (RenderScene's BakedMesh or Instance), for the id passes.
+    ObjectId objectId = 0;
+    uint32_t buildingId = 0;
+    uint32_t instanceId = 0;
 };
 
 class SurfaceLookup {

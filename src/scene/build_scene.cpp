@@ -34,20 +34,22 @@ class SceneAssembler {
         for (const GeometryDesc &g : d_.geometry) {
             auto [it, fresh] = repeatedGeometry_.try_emplace(sharingKey(g), 0);
             if (fresh) it->second = builder_.addPrototype(part(g));
-            builder_.addInstance({g.transform, it->second, kNoMaterial, g.objectId});
+            builder_.addInstance({g.transform, it->second, kNoMaterial, g.objectId, g.buildingId, 0});
         }
         for (const PrototypeDesc &p : d_.prototypes) {
             Mesh merged;
             for (const GeometryDesc &g : p.parts) merged.append(part(g), g.transform);
             prototypeIds_[p.name] = builder_.addPrototype(std::move(merged));
         }
-        for (const InstanceDesc &inst : d_.instances) {
+        for (size_t i = 0; i < d_.instances.size(); ++i) {
+            const InstanceDesc &inst = d_.instances[i];
             auto it = prototypeIds_.find(inst.prototype.name);
             if (it == prototypeIds_.end()) {
                 throw InputError(inst.prototype.loc, fmt::format("unknown prototype '{}'", inst.prototype.name));
             }
             MaterialId override = inst.material.name.empty() ? kNoMaterial : material(inst.material);
-            builder_.addInstance({inst.transform, it->second, override, inst.objectId});
+            builder_.addInstance(
+                {inst.transform, it->second, override, inst.objectId, inst.buildingId, uint32_t(i + 1)});
         }
         return std::move(builder_).build();
     }

@@ -26,10 +26,13 @@ MaterialId RenderSceneBuilder::findMaterial(const std::string &name) const {
     return it == materialsByName_.end() ? kNoMaterial : it->second;
 }
 
-void RenderSceneBuilder::addMesh(const Mesh &mesh, const Transform &objectToWorld, ObjectId objectId) {
+void RenderSceneBuilder::addMesh(const Mesh &mesh, const Transform &objectToWorld, ObjectId objectId,
+                                 uint32_t buildingId, uint32_t instanceId) {
     BakedMesh baked;
     baked.mesh.append(mesh, objectToWorld);
     baked.objectId = objectId;
+    baked.buildingId = buildingId;
+    baked.instanceId = instanceId;
     scene_.meshes.push_back(std::move(baked));
 }
 
@@ -66,7 +69,7 @@ RenderScene RenderSceneBuilder::build() && {
         }
         Mesh mesh = scene_.prototypes[instance.prototype];
         if (instance.materialOverride != kNoMaterial) mesh.setMaterial(instance.materialOverride);
-        addMesh(mesh, instance.objectToWorld, instance.objectId);
+        addMesh(mesh, instance.objectToWorld, instance.objectId, instance.buildingId, instance.instanceId);
     }
     scene_.prototypes = std::move(shared);
     scene_.instances = std::move(kept);

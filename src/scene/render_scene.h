@@ -25,6 +25,8 @@ using ObjectId = uint32_t;
 struct BakedMesh {
     Mesh mesh;
     ObjectId objectId = 0;
+    uint32_t buildingId = 0;  // the building it is part of; 0: none
+    uint32_t instanceId = 0;  // 1 + the index of the <instance> it was baked from; 0: none
 };
 
 // One placement of a prototype mesh.
@@ -33,6 +35,8 @@ struct Instance {
     PrototypeId prototype = 0;
     MaterialId materialOverride = kNoMaterial;  // replaces every triangle's material when set
     ObjectId objectId = 0;
+    uint32_t buildingId = 0;  // the building it is part of; 0: none
+    uint32_t instanceId = 0;  // 1 + the index of its <instance> element; 0: shared geometry
 };
 
 struct RenderScene {
@@ -58,7 +62,8 @@ class RenderSceneBuilder {
     // The id of a material added before, or kNoMaterial.
     MaterialId findMaterial(const std::string &name) const;
 
-    void addMesh(const Mesh &mesh, const Transform &objectToWorld, ObjectId objectId);
+    void addMesh(const Mesh &mesh, const Transform &objectToWorld, ObjectId objectId, uint32_t buildingId = 0,
+                 uint32_t instanceId = 0);
     PrototypeId addPrototype(Mesh mesh);
     void addInstance(const Instance &instance);
 

@@ -29,6 +29,10 @@ struct RenderSettings {
     uint32_t tileSize = 32;      // pixels; changes speed only, never the image
     PixelFilter filter;
     LightSampling lightSampling = LightSampling::Mis;
+    // Adaptive sampling (film/adaptive_sampling.h): a pixel stops once its noise estimate falls
+    // below the threshold; 0 samples every pixel fully.
+    float noiseThreshold = 0;
+    uint32_t minSamples = 0;  // before the first check; 0 = automatic
 };
 
 }  // namespace veduta

@@ -34,6 +34,7 @@ struct GeometryDesc {
     Transform transform;
     NameRef material;
     uint32_t objectId = 0;  // 0 inside prototypes: their instances carry the id
+    uint32_t buildingId = 0;  // the building it is part of; 0: none (and inside prototypes)
 };
 
 struct PrototypeDesc {
@@ -48,6 +49,7 @@ struct InstanceDesc {
     Transform transform;
     NameRef material;  // overrides the prototype's materials when given
     uint32_t objectId = 0;
+    uint32_t buildingId = 0;  // the building it is part of; 0: none
 };
 
 // An image file a material or the environment reads, with the place it was named.

@@ -282,6 +282,7 @@ class SceneFileReader {
         inst.transform = readTransform(e);
         inst.material = readNameRef(e, "material");
         readObjectId(e, inst.loc);
+        inst.buildingId = e.unsignedInteger("building", 0);
         e.checkLeaf();
         scene_.instances.push_back(std::move(inst));
     }
@@ -300,8 +301,14 @@ class SceneFileReader {
         g.material = readNameRef(e, "material");
         if (topLevel) {
             readObjectId(e, g.loc);
-        } else if (e.has("id")) {
-            e.failAt("id", "parts of a prototype have no id of their own; give it to the <instance>");
+            g.buildingId = e.unsignedInteger("building", 0);
+        } else {
+            for (const char *attribute : {"id", "building"}) {
+                if (e.has(attribute)) {
+                    e.failAt(attribute, fmt::format("parts of a prototype have no {} of their own; give it to the "
+                                                    "<instance>", attribute));
+                }
+            }
         }
         e.checkLeaf();
         return g;

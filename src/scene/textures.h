@@ -25,6 +25,8 @@ class Textures {
     // give the same id. Throws InputError naming the file if it cannot be read.
     virtual TextureId add(const std::filesystem::path &file, const std::string &colorSpace) = 0;
     virtual int channels(TextureId id) const = 0;
+    // Changes when the texel values would: the file, its size and time, the colour space.
+    virtual std::string fingerprint(TextureId id) const = 0;
 
     // Filtered value at texture coordinates (u, v), v growing upwards from the image's
     // bottom row, wrapping periodically; `footprint` is the width in (u, v) units of the

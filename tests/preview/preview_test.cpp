@@ -9,6 +9,7 @@
 
 #include "preview/preview.h"
 #include "render/object_ids.h"
+#include "film/passes.h"
 #include "render/renderer.h"
 #include "render/surface_interaction.h"
 #include "test_scenes.h"
@@ -221,7 +222,7 @@ TEST(Preview, ShadowsAgreeWithThePathTracer) {
     PreviewOptions options;
     options.shadows = true;
     RgbaImage drawn = renderPreview(scene, options).film;
-    RgbaImage traced = tbb::task_arena(2).execute([&] { return render(scene, Bvh(scene), RenderOptions{}); });
+    RgbaImage traced = tbb::task_arena(2).execute([&] { return combinedImage(render(scene, Bvh(scene))); });
     // Lit ground shows ρ E cos θ / π; shadowed ground shows 0.
     float lit = 0.8f * 3.0f * std::sin(radians(50)) * kInvPi;
     size_t agree = 0, shadowedPixels = 0;

@@ -10,6 +10,7 @@
 #include <tbb/task_arena.h>
 
 #include "render/bsdf.h"
+#include "film/passes.h"
 #include "render/renderer.h"
 #include "scene/tangents.h"
 #include "test_scenes.h"
@@ -24,6 +25,7 @@ class ProceduralTextures : public Textures {
         : channels_(channels), value_(std::move(value)) {}
     TextureId add(const std::filesystem::path &, const std::string &) override { return 0; }
     int channels(TextureId) const override { return channels_; }
+    std::string fingerprint(TextureId) const override { return "procedural"; }
     void lookup(TextureId, Vec2f uv, float, float *out, int count) const override {
         float v[4] = {0, 0, 0, 0};
         value_(uv, v);
@@ -39,7 +41,7 @@ RgbaImage renderScene(const RenderScene &scene) {
     tbb::task_arena arena(2);
     return arena.execute([&] {
         Bvh bvh(scene);
-        return render(scene, bvh, RenderOptions{});
+        return combinedImage(render(scene, bvh));
     });
 }
 

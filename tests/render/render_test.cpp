@@ -4,6 +4,7 @@
 #include <tbb/task_arena.h>
 
 #include "app/scene_loading.h"
+#include "film/passes.h"
 #include "render/renderer.h"
 #include "test_scenes.h"
 
@@ -14,7 +15,7 @@ RgbaImage renderWith(const RenderScene &scene, int threads) {
     tbb::task_arena arena(threads);
     return arena.execute([&] {
         Bvh bvh(scene);
-        return render(scene, bvh, RenderOptions{});
+        return combinedImage(render(scene, bvh));
     });
 }
 

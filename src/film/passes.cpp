@@ -1,0 +1,91 @@
+#include "film/passes.h"
+
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace veduta {
+
+namespace {
+
+struct Pass {
+    const char *name;
+    std::vector<const char *> channels;
+};
+
+// Adds the pass's channels and returns them, one vector per channel.
+std::vector<std::vector<float> *> addPass(LayeredImage &image, const Pass &pass) {
+    std::vector<std::vector<float> *> channels;
+    for (const char *c : pass.channels) channels.push_back(&image.addChannel(passChannel(pass.name, c)));
+    return channels;
+}
+
+template <typename V>
+void store(const std::vector<std::vector<float> *> &channels, size_t pixel, const V &v, double scale) {
+    (*channels[0])[pixel] = float(double(v.x) * scale);
+    (*channels[1])[pixel] = float(double(v.y) * scale);
+    (*channels[2])[pixel] = float(double(v.z) * scale);
+}
+
+double inverse(uint32_t count) { return count ? 1.0 / double(count) : 0.0; }
+
+}  // namespace
+
+std::string passChannel(const std::string &pass, const std::string &channel) {
+    return fmt::format("{}.{}.{}", kViewLayer, pass, channel);
+}
+
+LayeredImage developFilm(const Film &film) {
+    LayeredImage image;
+    image.fullWidth = film.fullWidth();
+    image.fullHeight = film.fullHeight();
+    image.dataWindow = film.window();
+    auto combined = addPass(image, {"Combined", {"R", "G", "B", "A"}});
+    auto even = addPass(image, {"CombinedEven", {"R", "G", "B"}});
+    auto odd = addPass(image, {"CombinedOdd", {"R", "G", "B"}});
+    auto depth = addPass(image, {"Depth", {"Z"}});
+    auto normal = addPass(image, {"Normal", {"X", "Y", "Z"}});
+    auto albedo = addPass(image, {"DiffCol", {"R", "G", "B"}});
+    auto position = addPass(image, {"Position", {"X", "Y", "Z"}});
+    auto ids = addPass(image, {"IndexOB", {"X"}});
+    auto materials = addPass(image, {"IndexMA", {"X"}});
+    auto buildings = addPass(image, {"IndexBuilding", {"X"}});
+    auto instances = addPass(image, {"IndexInstance", {"X"}});
+    auto samples = addPass(image, {"SampleCount", {"X"}});
+
+    for (size_t p = 0; p < film.pixelCount(); ++p) {
+        uint32_t n = film.sampleCount(p), nEven = film.evenSampleCount(p);
+        Vec3d sum = film.radianceSum(p), evenSum = film.evenRadianceSum(p);
+        store(combined, p, sum, inverse(n));
+        // Alpha is 1: the background is part of the image, as in Blender's non-transparent film.
+        (*combined[3])[p] = 1.0f;
+        store(even, p, evenSum, inverse(nEven));
+        store(odd, p, Vec3d{sum.x - evenSum.x, sum.y - evenSum.y, sum.z - evenSum.z}, inverse(n - nEven));
+        store(normal, p, film.normalSum(p), inverse(n));
+        store(albedo, p, film.albedoSum(p), inverse(n));
+        bool background = film.materialId(p) == 0;
+        (*depth[0])[p] = background ? kBackgroundDepth : film.depth(p);
+        store(position, p, film.position(p), 1.0);
+        (*ids[0])[p] = float(film.objectId(p));
+        (*materials[0])[p] = float(film.materialId(p));
+        (*buildings[0])[p] = float(film.buildingId(p));
+        (*instances[0])[p] = float(film.instanceId(p));
+        (*samples[0])[p] = float(n);
+    }
+    return image;
+}
+
+RgbaImage combinedImage(const Film &film) { return combinedImage(developFilm(film)); }
+
+RgbaImage combinedImage(const LayeredImage &image) {
+    const char *names[4] = {"R", "G", "B", "A"};
+    RgbaImage rgba(image.dataWindow.width(), image.dataWindow.height());
+    for (int c = 0; c < 4; ++c) {
+        const LayeredImage::Channel *channel = image.find(passChannel("Combined", names[c]));
+        if (!channel) throw std::logic_error("the image has no Combined pass");
+        for (size_t p = 0; p < channel->values.size(); ++p) rgba.pixels()[p * 4 + size_t(c)] = channel->values[p];
+    }
+    return rgba;
+}
+
+}  // namespace veduta
