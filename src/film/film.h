@@ -16,8 +16,6 @@
 
 namespace veduta {
 
-inline Vec3f at3(const std::vector<float> &v, size_t i) { return {v[3 * i], v[3 * i + 1], v[3 * i + 2]}; }
-
 // What a camera ray met first (cut-outs are looked through, panes of glass are not).
 struct FirstHit {
     bool hit = false;  // false: the ray left the scene, everything else is zero
@@ -78,6 +76,8 @@ class Film {
     std::vector<FilmBuffer> buffers();
 
   private:
+    static Vec3f at3(const std::vector<float> &v, size_t i) { return {v[3 * i], v[3 * i + 1], v[3 * i + 2]}; }
+
     int fullWidth_, fullHeight_;
     PixelWindow window_;
     std::vector<double> sum_, evenSum_;
