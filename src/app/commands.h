@@ -20,5 +20,6 @@ void addDiffCommand(CLI::App &app, int &exitCode);  // in the veduta-diff progra
 int runDiffProgram(int argc, char **argv);
 void addInfoCommand(CLI::App &app, int &exitCode);
 void addCubemapCommand(CLI::App &app, int &exitCode);
+void addMergeCommand(CLI::App &app, int &exitCode);
 
 }  // namespace veduta

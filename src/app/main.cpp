@@ -18,5 +18,6 @@ int main(int argc, char **argv) {
     app.add_subcommand("diff", "Compare two images and say whether they agree (see veduta diff --help)");
     veduta::addInfoCommand(app, exitCode);
     veduta::addCubemapCommand(app, exitCode);
+    veduta::addMergeCommand(app, exitCode);
     return veduta::runApp(app, argc, argv, exitCode);
 }

@@ -1,5 +1,7 @@
 #include "film/passes.h"
 
+#include <array>
+#include <iterator>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -13,10 +15,25 @@ struct Pass {
     std::vector<const char *> channels;
 };
 
-// Adds the pass's channels and returns them, one vector per channel.
-std::vector<std::vector<float> *> addPass(LayeredImage &image, const Pass &pass) {
+// Every pass developFilm writes, in order.
+const Pass kPasses[] = {{"Combined", {"R", "G", "B", "A"}},
+                        {"CombinedEven", {"R", "G", "B"}},
+                        {"CombinedOdd", {"R", "G", "B"}},
+                        {"Depth", {"Z"}},
+                        {"Normal", {"X", "Y", "Z"}},
+                        {"DiffCol", {"R", "G", "B"}},
+                        {"Position", {"X", "Y", "Z"}},
+                        {"IndexOB", {"X"}},
+                        {"IndexMA", {"X"}},
+                        {"IndexBuilding", {"X"}},
+                        {"IndexInstance", {"X"}},
+                        {"SampleCount", {"X"}}};
+
+// The pass's channels, one vector per channel. Taken only once every channel is added: adding a
+// channel may move the others.
+std::vector<std::vector<float> *> channelsOf(LayeredImage &image, const Pass &pass) {
     std::vector<std::vector<float> *> channels;
-    for (const char *c : pass.channels) channels.push_back(&image.addChannel(passChannel(pass.name, c)));
+    for (const char *c : pass.channels) channels.push_back(&image.find(passChannel(pass.name, c))->values);
     return channels;
 }
 
@@ -40,18 +57,15 @@ LayeredImage developFilm(const Film &film) {
     image.fullWidth = film.fullWidth();
     image.fullHeight = film.fullHeight();
     image.dataWindow = film.window();
-    auto combined = addPass(image, {"Combined", {"R", "G", "B", "A"}});
-    auto even = addPass(image, {"CombinedEven", {"R", "G", "B"}});
-    auto odd = addPass(image, {"CombinedOdd", {"R", "G", "B"}});
-    auto depth = addPass(image, {"Depth", {"Z"}});
-    auto normal = addPass(image, {"Normal", {"X", "Y", "Z"}});
-    auto albedo = addPass(image, {"DiffCol", {"R", "G", "B"}});
-    auto position = addPass(image, {"Position", {"X", "Y", "Z"}});
-    auto ids = addPass(image, {"IndexOB", {"X"}});
-    auto materials = addPass(image, {"IndexMA", {"X"}});
-    auto buildings = addPass(image, {"IndexBuilding", {"X"}});
-    auto instances = addPass(image, {"IndexInstance", {"X"}});
-    auto samples = addPass(image, {"SampleCount", {"X"}});
+    for (const Pass &pass : kPasses) {
+        for (const char *c : pass.channels) image.addChannel(passChannel(pass.name, c));
+    }
+    auto [combined, even, odd, depth, normal, albedo, position, ids, materials, buildings, instances, samples] =
+        [&] {
+            std::array<std::vector<std::vector<float> *>, std::size(kPasses)> all;
+            for (size_t i = 0; i < all.size(); ++i) all[i] = channelsOf(image, kPasses[i]);
+            return all;
+        }();
 
     for (size_t p = 0; p < film.pixelCount(); ++p) {
         uint32_t n = film.sampleCount(p), nEven = film.evenSampleCount(p);

@@ -56,7 +56,11 @@ void insertMetadata(Imf::Header &header, const std::string &name, const Metadata
 }
 
 void readMetadata(const Imf::Header &header, LayeredImage &image) {
+    // The attributes every header has (windows, pixelAspectRatio, …) are not metadata: the
+    // writer's header sets them, and it would refuse pixelAspectRatio back as a double.
+    const Imf::Header required;
     for (auto a = header.begin(); a != header.end(); ++a) {
+        if (required.find(a.name()) != required.end()) continue;
         const Imf::Attribute &attribute = a.attribute();
         if (auto *s = dynamic_cast<const Imf::StringAttribute *>(&attribute)) image.metadata[a.name()] = s->value();
         if (auto *i = dynamic_cast<const Imf::IntAttribute *>(&attribute)) image.metadata[a.name()] = i->value();
