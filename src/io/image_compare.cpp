@@ -42,7 +42,7 @@ struct Role {
     Role(const OIIO::ImageBuf *buffer, const char *messageName)
         : image(buffer), name(messageName), prefix(combinedPrefix(buffer->spec())) {}
 
-    // The index of channel `name` (R, G, …) of the compared pass; -1 when there is none.
+    // The index of `channel` (R, G, …) of the compared pass; -1 when there is none.
     int channelIndex(const std::string &channel) const { return image->spec().channelindex(prefix + channel); }
 
     // The names of the compared pass's channels without the prefix, in the image's order.
