@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <string_view>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -23,10 +24,39 @@ constexpr double kMinVariance = 1e-4;
 constexpr double kZTestSignificance = 0.01;
 constexpr double kDiffImageScale = 16.0;  // as Cycles' test reports, so that small errors show
 
-// An image that takes part in a comparison, with the name messages give it.
+// Blender's multilayer EXRs (veduta's renders among them) hold many passes; the picture is the
+// pass `<layer>.Combined`. Its channels are compared as plain R, G, B and A, so that a new render
+// compares with an old plain RGBA golden. The channel-name prefix of that pass, or "" for a plain image.
+std::string combinedPrefix(const OIIO::ImageSpec &spec) {
+    constexpr std::string_view kCombined = ".Combined.";
+    for (const std::string &name : spec.channelnames) {
+        size_t at = name.find(kCombined);
+        if (at != std::string::npos && at > 0) return name.substr(0, at + kCombined.size());
+    }
+    return "";
+}
+
+// An image that takes part in a comparison, with the name messages give it and the prefix of the
+// channels it is compared through.
 struct Role {
+    Role(const OIIO::ImageBuf *buffer, const char *messageName)
+        : image(buffer), name(messageName), prefix(combinedPrefix(buffer->spec())) {}
+
+    // The index of `channel` (R, G, …) of the compared pass; -1 when there is none.
+    int channelIndex(const std::string &channel) const { return image->spec().channelindex(prefix + channel); }
+
+    // The names of the compared pass's channels without the prefix, in the image's order.
+    std::vector<std::string> channels() const {
+        std::vector<std::string> names;
+        for (const std::string &full : image->spec().channelnames) {
+            if (full.starts_with(prefix)) names.push_back(full.substr(prefix.size()));
+        }
+        return names;
+    }
+
     const OIIO::ImageBuf *image;
     const char *name;
+    std::string prefix;
 };
 
 void checkSameSize(const Role &a, const Role &b) {
@@ -40,9 +70,9 @@ void checkSameSize(const Role &a, const Role &b) {
 void requireRgb(const std::vector<Role> &roles) {
     for (const Role &role : roles) {
         for (const char *channel : {"R", "G", "B"}) {
-            if (role.image->spec().channelindex(channel) < 0) {
-                throw std::runtime_error(fmt::format("{} has no {} channel (it has {})", role.name, channel,
-                                                     fmt::join(role.image->spec().channelnames, ", ")));
+            if (role.channelIndex(channel) < 0) {
+                throw std::runtime_error(fmt::format("{} has no {}{} channel (it has {})", role.name, role.prefix,
+                                                     channel, fmt::join(role.image->spec().channelnames, ", ")));
             }
         }
     }
@@ -51,9 +81,9 @@ void requireRgb(const std::vector<Role> &roles) {
 // The channels of the first image that all the others have too, in the first image's order.
 std::vector<std::string> sharedChannels(const std::vector<Role> &roles) {
     std::vector<std::string> shared;
-    for (const std::string &name : roles.front().image->spec().channelnames) {
+    for (const std::string &name : roles.front().channels()) {
         bool everywhere = std::all_of(roles.begin() + 1, roles.end(),
-                                      [&](const Role &r) { return r.image->spec().channelindex(name) >= 0; });
+                                      [&](const Role &r) { return r.channelIndex(name) >= 0; });
         if (everywhere) shared.push_back(name);
     }
     return shared;
@@ -62,12 +92,14 @@ std::vector<std::string> sharedChannels(const std::vector<Role> &roles) {
 // One image's pixels as float, whatever the buffer stores, read through the compared channels.
 class ChannelReader {
   public:
-    ChannelReader(const OIIO::ImageBuf &image, const std::vector<std::string> &channels)
-        : stride_(size_t(image.nchannels())) {
-        OIIO::ROI roi = image.roi();
+    ChannelReader(const Role &role, const std::vector<std::string> &channels)
+        : stride_(size_t(role.image->nchannels())) {
+        OIIO::ROI roi = role.image->roi();
         values_.resize(roi.npixels() * stride_);
-        if (!image.get_pixels(roi, OIIO::TypeFloat, values_.data())) throw std::runtime_error(image.geterror());
-        for (const std::string &name : channels) index_.push_back(size_t(image.spec().channelindex(name)));
+        if (!role.image->get_pixels(roi, OIIO::TypeFloat, values_.data())) {
+            throw std::runtime_error(role.image->geterror());
+        }
+        for (const std::string &name : channels) index_.push_back(size_t(role.channelIndex(name)));
     }
 
     // `pixel` counts from the top left, row by row.
@@ -134,9 +166,9 @@ struct Totals {
 
 Totals sumErrors(const std::vector<Role> &roles, const std::vector<std::string> &channels,
                  const ImageDiffOptions &options) {
-    ChannelReader a(*roles[0].image, channels), b(*roles[1].image, channels);
+    ChannelReader a(roles[0], channels), b(roles[1], channels);
     std::optional<ChannelReader> variance;
-    if (options.referenceVariance) variance.emplace(*options.referenceVariance, channels);
+    if (options.referenceVariance) variance.emplace(roles[2], channels);
     const size_t pixels = size_t(roles[0].image->spec().width) * size_t(roles[0].image->spec().height);
     const ZTest zTest(options.samplesPerPixel, pixels * channels.size());
     const double warnThreshold = options.warnThreshold.value_or(kInfinity);
@@ -221,7 +253,7 @@ ImageDiff compareImages(const OIIO::ImageBuf &a, const OIIO::ImageBuf &b, const 
     std::vector<std::string> channels = sharedChannels({roles[0], roles[1]});
     if (options.referenceVariance) {
         for (const std::string &name : channels) {
-            if (options.referenceVariance->spec().channelindex(name) < 0) {
+            if (roles[2].channelIndex(name) < 0) {
                 throw std::runtime_error(fmt::format("the reference variance has no {} channel", name));
             }
         }
@@ -238,7 +270,7 @@ void writeDiffImage(const OIIO::ImageBuf &a, const OIIO::ImageBuf &b, const std:
     checkSameSize(roles[0], roles[1]);
     requireRgb(roles);
     const std::vector<std::string> rgb{"R", "G", "B"};
-    ChannelReader ra(a, rgb), rb(b, rgb);
+    ChannelReader ra(roles[0], rgb), rb(roles[1], rgb);
     OIIO::ImageBuf diff(OIIO::ImageSpec(a.spec().width, a.spec().height, 3, OIIO::TypeFloat));
     auto *out = static_cast<float *>(diff.localpixels());
     const size_t pixels = size_t(a.spec().width) * size_t(a.spec().height);

@@ -1,7 +1,9 @@
 // Comparing a test image A with a reference image B, pixel by pixel: the figures and the
 // pass/fail verdict of `veduta diff`, shared with golden-image tests. Values are compared as
 // stored, as float, with no colour transform. The channels compared are those both images
-// (and a reference variance, when given) have by name; R, G and B must be among them.
+// (and a reference variance, when given) have by name; R, G and B must be among them. Of a
+// multilayer EXR with Blender's pass names only the pass `<layer>.Combined` is compared, its
+// channels `<layer>.Combined.R` … standing for R …, so that either kind compares with either.
 #pragma once
 
 #include <cstdint>
@@ -39,7 +41,7 @@ struct ImageDiffOptions {
 // image and not the same in the other counts as an infinite difference.
 struct ImageDiff {
     int width = 0, height = 0;
-    std::vector<std::string> channels;  // the channels compared, in A's order
+    std::vector<std::string> channels;  // the channels compared (R, G, B, A, never a pass prefix), in A's order
     uint64_t pixels = 0;
     uint64_t failedPixels = 0;
     double failedPercent = 0;

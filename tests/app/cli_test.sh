@@ -35,9 +35,12 @@ run render --res 40x24 --spp 2 -q -o "$work/d.exr" --png "$work/d.png"
 check "default render" rc_is 0
 check "exr written" test -s "$work/d.exr"
 check "png written" test -s "$work/d.png"
-if command -v iinfo >/dev/null; then
-    check "iinfo reads the exr" bash -c "iinfo -v '$work/d.exr' | grep -q '40 x   24, 4 channel, float openexr'"
-    check "exr channels" bash -c "iinfo -v '$work/d.exr' | grep -q 'channel list: R, G, B, A'"
+# A multilayer EXR with Blender's pass names; aov_cli_test.sh checks every pass and attribute.
+if command -v oiiotool >/dev/null; then
+    oiiotool --info -v "$work/d.exr" >"$work/info"
+    check "oiiotool reads the exr" grep -q '40 x  *24, 25 channel, float openexr' "$work/info"
+    combined='ViewLayer.Combined.R, ViewLayer.Combined.G, ViewLayer.Combined.B, ViewLayer.Combined.A,'
+    check "exr channels" grep -q "channel list: $combined" "$work/info"
 fi
 check "no temporary left" bash -c "! ls -a '$work' | grep -q tmp"
 

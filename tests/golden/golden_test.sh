@@ -45,12 +45,25 @@ for kind in render.exr preview.png; do
     fi
 done
 
+# The colour channels of an EXR for oiiotool --ch: a render's Combined pass, or those of a plain image.
+colour_channels() {
+    if oiiotool --info -v "$1" 2>/dev/null | grep -q 'channel list: .*ViewLayer\.Combined\.R'; then
+        echo R=ViewLayer.Combined.R,G=ViewLayer.Combined.G,B=ViewLayer.Combined.B
+    else
+        echo R,G,B
+    fi
+}
+
+# EXR -> sRGB PNG for a browser.
+view_png() {
+    oiiotool "$1" --ch "$(colour_channels "$1")" --colorconvert linear sRGB -d uint8 -o "$2" 2>/dev/null
+}
+
 if [ $failed -ne 0 ]; then
     # A page for a person: browsers show PNG, so EXRs are converted for it.
     if command -v oiiotool >/dev/null; then
-        oiiotool "$out/render.exr" --ch R,G,B --colorconvert linear sRGB -d uint8 -o "$out/render-view.png" 2>/dev/null
-        [ -e "$golden/$name-render.exr" ] && oiiotool "$golden/$name-render.exr" --ch R,G,B \
-            --colorconvert linear sRGB -d uint8 -o "$out/reference-render-view.png" 2>/dev/null
+        view_png "$out/render.exr" "$out/render-view.png"
+        [ -e "$golden/$name-render.exr" ] && view_png "$golden/$name-render.exr" "$out/reference-render-view.png"
     fi
     [ -e "$golden/$name-preview.png" ] && cp "$golden/$name-preview.png" "$out/reference-preview.png"
     cat >"$out/report.html" <<HTML

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "core/error.h"
+#include "io/exr_file.h"
 #include "io/image_compare.h"
 
 namespace veduta {
@@ -109,6 +110,57 @@ TEST(ImageCompare, ComparesTheChannelsBothHave) {
     EXPECT_EQ(withAlpha.channels, (std::vector<std::string>{"R", "G", "B", "A"}));
     EXPECT_EQ(withAlpha.failedPixels, 16u);
     EXPECT_THROW(compareImages(constantImage(4, 4, {0.5f}), constantImage(4, 4, {0.5f})), std::runtime_error);
+}
+
+// A render's multilayer EXR as OpenImageIO reads it: the Combined pass of `layer` with `color`,
+// and other passes in front of and behind it whose values differ from anything compared.
+OIIO::ImageBuf multilayerImage(int width, int height, const std::string &layer, std::vector<float> color) {
+    std::vector<std::string> names{layer + ".Depth.Z"};
+    for (const char *c : {"R", "G", "B", "A"}) names.push_back(layer + ".Combined." + c);
+    names.push_back(layer + ".Normal.X");
+    OIIO::ImageSpec spec(width, height, int(names.size()), OIIO::TypeFloat);
+    spec.channelnames = names;
+    OIIO::ImageBuf image(spec);
+    color.insert(color.begin(), 1e10f);
+    color.push_back(-0.7f);
+    OIIO::ImageBufAlgo::fill(image, color);
+    return image;
+}
+
+TEST(ImageCompare, MultilayerComparesOnlyItsCombinedPassAsRgba) {
+    OIIO::ImageBuf layered = multilayerImage(4, 4, "ViewLayer", {0.2f, 0.4f, 0.6f, 1.0f});
+    OIIO::ImageBuf plain = constantImage(4, 4, {0.2f, 0.4f, 0.6f, 1.0f});
+    for (const auto &[a, b] : {std::pair{&layered, &plain}, std::pair{&plain, &layered}}) {
+        ImageDiff d = compareImages(*a, *b);
+        EXPECT_EQ(d.channels, (std::vector<std::string>{"R", "G", "B", "A"}));
+        EXPECT_TRUE(d.passed);
+        EXPECT_EQ(d.maxError, 0.0);
+    }
+    // Another layer name, other values in the other passes: still only Combined counts.
+    OIIO::ImageBuf other = multilayerImage(4, 4, "RenderLayer", {0.2f, 0.4f, 0.6f, 1.0f});
+    OIIO::ImageBufAlgo::fill(other, {5.0f}, OIIO::ROI(0, 4, 0, 4, 0, 1, 0, 1));  // its Depth.Z
+    EXPECT_TRUE(compareImages(layered, other).passed);
+
+    OIIO::ImageBuf brighter = multilayerImage(4, 4, "ViewLayer", {0.2f, 0.5f, 0.6f, 1.0f});
+    ImageDiff d = compareImages(brighter, plain);
+    EXPECT_FALSE(d.passed);
+    EXPECT_EQ(d.failedPixels, 16u);
+    EXPECT_NEAR(d.maxError, 0.1, 1e-6);
+    EXPECT_FALSE(compareImages(plain, brighter).passed);
+    EXPECT_FALSE(compareImages(layered, brighter).passed);
+}
+
+TEST(ImageCompare, MultilayerWithoutCombinedColourThrowsNamingTheChannel) {
+    OIIO::ImageSpec spec(4, 4, 2, OIIO::TypeFloat);
+    spec.channelnames = {"ViewLayer.Combined.R", "ViewLayer.Combined.G"};
+    OIIO::ImageBuf noBlue(spec);
+    try {
+        compareImages(noBlue, constantImage(4, 4, {0.2f, 0.4f, 0.6f}));
+        FAIL() << "no exception";
+    } catch (const std::runtime_error &e) {
+        EXPECT_STREQ(e.what(),
+                     "A has no ViewLayer.Combined.B channel (it has ViewLayer.Combined.R, ViewLayer.Combined.G)");
+    }
 }
 
 // Worked by hand: pixel 0 equal; pixel 1 off by 0.1, 0.2, 0.3 against a reference of 0.1, 0.2, 0.
@@ -223,6 +275,32 @@ TEST_F(ImageCompareFiles, ComparesFilesAndSeesRewrites) {
     EXPECT_FALSE(compareImages(a, b).passed);
 }
 
+// A file as `veduta render` writes it, against an old plain RGBA golden, through the files.
+TEST_F(ImageCompareFiles, RenderMultilayerExrComparesWithPlainRgbaExr) {
+    LayeredImage render;
+    render.fullWidth = 6;
+    render.fullHeight = 4;
+    render.dataWindow = {0, 0, 6, 4};
+    const std::vector<float> rgba{0.25f, 0.5f, 0.75f, 1.0f};
+    const char *names[] = {"ViewLayer.Combined.R", "ViewLayer.Combined.G", "ViewLayer.Combined.B",
+                           "ViewLayer.Combined.A"};
+    render.addChannel("ViewLayer.Depth.Z").assign(render.dataWindow.area(), 1e10f);
+    for (size_t c = 0; c < 4; ++c) render.addChannel(names[c]).assign(render.dataWindow.area(), rgba[c]);
+    render.addChannel("ViewLayer.SampleCount.X").assign(render.dataWindow.area(), 16.0f);
+    std::string layered = (dir_ / "render.exr").string();
+    writeExr(render, layered);
+    std::string plain = write(constantImage(6, 4, rgba), "golden.exr");
+
+    ImageDiff d = compareImages(layered, plain);
+    EXPECT_EQ(d.channels, (std::vector<std::string>{"R", "G", "B", "A"}));
+    EXPECT_TRUE(d.passed);
+    EXPECT_EQ(d.maxError, 0.0);
+    write(constantImage(6, 4, {0.25f, 0.5f, 0.95f, 1.0f}), "golden.exr");
+    d = compareImages(plain, layered);
+    EXPECT_FALSE(d.passed);
+    EXPECT_NEAR(d.maxError, 0.2, 1e-6);
+}
+
 TEST_F(ImageCompareFiles, UnreadableFileThrowsInputErrorNamingIt) {
     std::string bad = (dir_ / "bad.exr").string();
     std::ofstream(bad) << "not an image";
@@ -245,6 +323,12 @@ TEST_F(ImageCompareFiles, DiffImageIsScaledBySixteenInEightBits) {
     EXPECT_NEAR(diff.getchannel(5, 2, 0, 0), std::round(0.16 * 255) / 255, 1e-6);
     EXPECT_EQ(diff.getchannel(5, 2, 0, 1), 0.0f);
     EXPECT_EQ(diff.getchannel(5, 2, 0, 2), 1.0f);  // 1.6, clamped
+    // The same from a multilayer A: its Combined pass, not its first three channels.
+    writeDiffImage(multilayerImage(8, 4, "ViewLayer", {0.2f, 0.4f, 0.6f, 1.0f}), b, out);
+    diff = readImage(out.string());
+    EXPECT_NEAR(diff.getchannel(5, 2, 0, 0), std::round(0.16 * 255) / 255, 1e-6);
+    EXPECT_EQ(diff.getchannel(5, 2, 0, 1), 0.0f);
+    EXPECT_EQ(diff.getchannel(5, 2, 0, 2), 1.0f);
     for (const auto &entry : std::filesystem::directory_iterator(out.parent_path())) {
         EXPECT_EQ(entry.path().filename(), "diff.png") << "a temporary was left behind";
     }
