@@ -33,8 +33,21 @@ TEST(AdaptiveSampling, AgreeingHalvesConverge) {
 
 TEST(AdaptiveSampling, DisagreeingHalvesDoNotConverge) {
     Film film = filmWith(16, Vec3f(1.0f), Vec3f(0.0f));
-    EXPECT_GT(pixelNoise(film, 0), 0.5f);
+    EXPECT_GT(pixelNoise(film, 0), 0.1f);
     EXPECT_TRUE(pixelNeedsSamples(film, 0, 16, 64, adaptiveSettings(64, 0.01f, 16)));
+}
+
+TEST(AdaptiveSampling, NoiseIsRelativeDeviationOverSamples) {
+    // Halves 1 and 0: the mean 0.5 has variance (1 − 0)² / 4 per half-pair, relative to
+    // 0.5² + ε; per sample that is 16 times more, and √v / n = √(relative variance of the mean / n).
+    Film film = filmWith(16, Vec3f(1.0f), Vec3f(0.0f));
+    EXPECT_NEAR(pixelNoise(film, 0), std::sqrt(0.25 / (0.25 + kRelMseEpsilon) / 16), 1e-6);
+}
+
+TEST(AdaptiveSampling, OddCountsCompareTheHalvesMeans) {
+    // 9 even and 8 odd samples of the same value: no noise (the sum minus twice the even sum
+    // would see one sample's worth).
+    EXPECT_EQ(pixelNoise(filmWith(17, Vec3f(0.5f), Vec3f(0.5f)), 0), 0.0f);
 }
 
 TEST(AdaptiveSampling, FewerThanTwoSamplesAreInfinitelyNoisy) {
