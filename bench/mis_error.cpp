@@ -17,8 +17,9 @@
 #include <memory>
 #include <string>
 
-#include "io/cubemap_files.h"
 #include "film/passes.h"
+#include "io/cubemap_files.h"
+#include "rel_mse.h"
 #include "render/renderer.h"
 #include "scene/build_scene.h"
 
@@ -76,18 +77,6 @@ RenderScene makeScene(LightSampling sampling, uint32_t spp, const std::shared_pt
 RgbaImage renderScene(const RenderScene &scene) {
     Bvh bvh(scene);
     return combinedImage(render(scene, bvh));
-}
-
-double relMse(const RgbaImage &image, const RgbaImage &reference) {
-    double sum = 0;
-    size_t count = 0;
-    for (size_t i = 0; i < image.pixels().size(); ++i) {
-        if (i % 4 == 3) continue;
-        double r = reference.pixels()[i], d = image.pixels()[i] - r;
-        sum += d * d / (r * r + 1e-2);
-        ++count;
-    }
-    return sum / double(count);
 }
 
 }  // namespace

@@ -191,7 +191,8 @@ void addRenderCommand(CLI::App &app, int &exitCode) {
     cmd->add_option("--max-depth", args->maxDepth, "Longest path, in bounces (overrides the scene)")
         ->check(CLI::Range(1u, 1024u));
     cmd->add_option("--noise-threshold", args->noiseThreshold,
-                    "Adaptive sampling: a pixel stops below this noise estimate (Cycles' scale; 0 = off)")
+                    "Adaptive sampling: a pixel stops once its relative deviation over its samples falls "
+                    "below this (e.g. 0.001; 0 = off)")
         ->check(CLI::Range(0.0f, 1e6f));
     cmd->add_option("--min-spp", args->minSamples, "Adaptive sampling: samples before the first check [automatic]")
         ->check(CLI::Range(1u, 1u << 24));

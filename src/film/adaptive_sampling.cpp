@@ -2,18 +2,23 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace veduta {
 
 float pixelNoise(const Film &film, size_t pixel) {
-    uint32_t n = film.sampleCount(pixel);
-    if (n < 2) return INFINITY;
-    Vec3d all = film.radianceSum(pixel), even = film.evenRadianceSum(pixel);
-    // Cycles' "I − A" with A twice the even half: the odd half minus the even half, per sample.
-    double difference =
-        std::abs(all.x - 2 * even.x) + std::abs(all.y - 2 * even.y) + std::abs(all.z - 2 * even.z);
-    double intensity = (all.x + all.y + all.z) / n;
-    return float(difference / n / (1e-4 + std::sqrt(std::max(intensity, 0.0))));
+    const double n = film.sampleCount(pixel), nEven = film.evenSampleCount(pixel);
+    if (nEven == 0 || nEven == n) return INFINITY;
+    const Vec3d all = film.radianceSum(pixel), even = film.evenRadianceSum(pixel);
+    double relativeVariance = 0;
+    for (auto [a, e] : {std::pair{all.x, even.x}, std::pair{all.y, even.y}, std::pair{all.z, even.z}}) {
+        // The pixel's mean is (even mean + odd mean) / 2: its variance is a quarter of that of
+        // their difference. Relative as relMSE weighs it.
+        double mean = a / n, difference = e / nEven - (a - e) / (n - nEven);
+        relativeVariance += difference * difference / 4 / (mean * mean + kRelMseEpsilon);
+    }
+    // relativeVariance / 3 estimates the pixel's relMSE, v / n, so this is √v / n.
+    return float(std::sqrt(relativeVariance / 3 / n));
 }
 
 uint32_t adaptiveMinSamples(const RenderSettings &settings) {
