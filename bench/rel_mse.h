@@ -5,6 +5,7 @@
 
 #include <cstddef>
 
+#include "core/rel_mse.h"
 #include "core/rgba_image.h"
 
 namespace veduta {
@@ -14,8 +15,7 @@ inline double relMse(const RgbaImage &image, const RgbaImage &reference) {
     size_t count = 0;
     for (size_t i = 0; i < image.pixels().size(); ++i) {
         if (i % 4 == 3) continue;
-        double r = reference.pixels()[i], d = image.pixels()[i] - r;
-        sum += d * d / (r * r + 1e-2);
+        sum += relMseTerm(image.pixels()[i], reference.pixels()[i]);
         ++count;
     }
     return sum / double(count);

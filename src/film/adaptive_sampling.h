@@ -14,6 +14,7 @@
 
 #include <cstdint>
 
+#include "core/rel_mse.h"
 #include "film/film.h"
 #include "scene/render_settings.h"
 
@@ -21,9 +22,6 @@ namespace veduta {
 
 // Checks follow the first `adaptiveMinSamples` samples every this many samples.
 inline constexpr uint32_t kAdaptiveStep = 4;
-
-// relMSE's ε: (x − ref)² / (ref² + ε) keeps dark pixels from counting without bound.
-inline constexpr double kRelMseEpsilon = 1e-2;
 
 // The pixel's noise estimate √v / n, in the units of the threshold; infinite before both
 // halves have a sample.

@@ -11,6 +11,7 @@
 #include <fmt/ranges.h>
 
 #include "core/error.h"
+#include "core/rel_mse.h"
 #include "io/atomic_file.h"
 
 namespace veduta {
@@ -18,7 +19,6 @@ namespace veduta {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-constexpr double kRelMseEpsilon = 1e-2;
 // As in Mitsuba 3: a pixel without noise in the reference still allows a small difference.
 constexpr double kMinVariance = 1e-4;
 constexpr double kZTestSignificance = 0.01;
