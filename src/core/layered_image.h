@@ -41,7 +41,8 @@ struct LayeredImage {
     std::vector<Channel> channels;
     std::map<std::string, MetadataValue> metadata;
 
-    // A new zero-filled channel of dataWindow's size.
+    // A new zero-filled channel of dataWindow's size. The reference lasts only until the next
+    // channel is added (the list may move); take pointers once all channels are there.
     std::vector<float> &addChannel(std::string name) {
         channels.push_back({std::move(name), std::vector<float>(dataWindow.area(), 0.0f)});
         return channels.back().values;
