@@ -17,6 +17,16 @@ inline uint32_t mix32(uint32_t x) {
     return x;
 }
 
+// MurmurHash3's 64-bit finaliser.
+inline uint64_t mix64(uint64_t k) {
+    k ^= k >> 33;
+    k *= 0xff51afd7ed558ccdull;
+    k ^= k >> 33;
+    k *= 0xc4ceb9fe1a85ec53ull;
+    k ^= k >> 33;
+    return k;
+}
+
 // Hash of an ordered list of integers: hashValues({seed, x, y}) != hashValues({seed, y, x}).
 inline uint32_t hashValues(std::initializer_list<uint32_t> values) {
     uint32_t h = 0x9e3779b9u;

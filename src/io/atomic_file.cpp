@@ -27,22 +27,30 @@ void writeFileAtomically(const std::filesystem::path &file,
 
 void writeWholeFile(const std::filesystem::path &path, const void *data, size_t size,
                     const std::filesystem::path &file) {
+    writeWholeFile(path, {std::span(static_cast<const std::byte *>(data), size)}, file);
+}
+
+void writeWholeFile(const std::filesystem::path &path, const std::vector<std::span<const std::byte>> &pieces,
+                    const std::filesystem::path &file) {
     auto fail = [&](int error) {
         return std::runtime_error(fmt::format("{}: {}", file.string(), std::strerror(error)));
     };
     int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
     if (fd < 0) throw fail(errno);
-    const char *bytes = static_cast<const char *>(data);
-    while (size > 0) {
-        ssize_t written = ::write(fd, bytes, size);
-        if (written < 0 && errno == EINTR) continue;
-        if (written <= 0) {
-            int error = written < 0 ? errno : ENOSPC;
-            ::close(fd);
-            throw fail(error);
+    for (std::span<const std::byte> piece : pieces) {
+        const std::byte *bytes = piece.data();
+        size_t size = piece.size();
+        while (size > 0) {
+            ssize_t written = ::write(fd, bytes, size);
+            if (written < 0 && errno == EINTR) continue;
+            if (written <= 0) {
+                int error = written < 0 ? errno : ENOSPC;
+                ::close(fd);
+                throw fail(error);
+            }
+            bytes += written;
+            size -= size_t(written);
         }
-        bytes += written;
-        size -= size_t(written);
     }
     // The rename that follows must not publish a file whose blocks never reached the disk.
     if (::fsync(fd) != 0) {
@@ -54,7 +62,11 @@ void writeWholeFile(const std::filesystem::path &path, const void *data, size_t 
 }
 
 void writeBytesAtomically(const std::filesystem::path &file, const void *data, size_t size) {
-    writeFileAtomically(file, [&](const std::filesystem::path &temporary) { writeWholeFile(temporary, data, size, file); });
+    writeBytesAtomically(file, {std::span(static_cast<const std::byte *>(data), size)});
+}
+
+void writeBytesAtomically(const std::filesystem::path &file, const std::vector<std::span<const std::byte>> &pieces) {
+    writeFileAtomically(file, [&](const std::filesystem::path &temporary) { writeWholeFile(temporary, pieces, file); });
 }
 
 }  // namespace veduta

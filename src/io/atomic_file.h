@@ -6,6 +6,8 @@
 #include <cstddef>
 #include <filesystem>
 #include <functional>
+#include <span>
+#include <vector>
 
 namespace veduta {
 
@@ -19,8 +21,12 @@ void writeFileAtomically(const std::filesystem::path &file,
 // Errors name `file`, the target the user knows, rather than a temporary.
 void writeWholeFile(const std::filesystem::path &path, const void *data, size_t size,
                     const std::filesystem::path &file);
+// The same for a file made of pieces, written one after the other without copying them together.
+void writeWholeFile(const std::filesystem::path &path, const std::vector<std::span<const std::byte>> &pieces,
+                    const std::filesystem::path &file);
 
 // writeFileAtomically for bytes already in memory.
 void writeBytesAtomically(const std::filesystem::path &file, const void *data, size_t size);
+void writeBytesAtomically(const std::filesystem::path &file, const std::vector<std::span<const std::byte>> &pieces);
 
 }  // namespace veduta

@@ -3,7 +3,6 @@
 #include <cstring>
 #include <fstream>
 #include <map>
-#include <sstream>
 
 #include <fmt/format.h>
 
@@ -16,35 +15,28 @@ namespace {
 
 constexpr const char *kMagic = "veduta checkpoint 1";
 
-template <typename T>
-void put(std::string &out, const T &value) {
-    out.append(reinterpret_cast<const char *>(&value), sizeof(T));
-}
+// RenderStats as the file stores them, in this order.
+struct StoredStats {
+    uint64_t samplesDone;
+    double seconds;
+    uint64_t camera, bounce, shadow, nonFinite;
+};
 
-void putStats(std::string &out, const RenderStats &s) {
-    put(out, s.samplesDone);
-    put(out, s.seconds);
-    put(out, s.rays.camera);
-    put(out, s.rays.bounce);
-    put(out, s.rays.shadow);
-    put(out, s.nonFiniteSamples);
-}
-
+// Reads the checkpoint straight into the film's buffers: a film may be gigabytes, too much to
+// hold twice.
 class Reader {
   public:
-    Reader(const std::filesystem::path &file, std::string bytes) : file_(file), bytes_(std::move(bytes)) {}
+    explicit Reader(const std::filesystem::path &file) : file_(file), in_(file, std::ios::binary) {
+        if (!in_) throw InputError(FileLoc{file.string()}, "cannot read the checkpoint");
+    }
 
     std::string line() {
-        size_t end = bytes_.find('\n', at_);
-        if (end == std::string::npos) fail("ends inside its header");
-        std::string text = bytes_.substr(at_, end - at_);
-        at_ = end + 1;
+        std::string text;
+        if (!std::getline(in_, text)) fail("ends inside its header");
         return text;
     }
     void raw(void *out, size_t size) {
-        if (bytes_.size() - at_ < size) fail("is cut short");
-        std::memcpy(out, bytes_.data() + at_, size);
-        at_ += size;
+        if (!in_.read(static_cast<char *>(out), std::streamsize(size))) fail("is cut short");
     }
     template <typename T>
     T get() {
@@ -52,24 +44,15 @@ class Reader {
         raw(&value, sizeof(T));
         return value;
     }
-    bool atEnd() const { return at_ == bytes_.size(); }
+    bool atEnd() { return in_.peek() == std::char_traits<char>::eof(); }
     [[noreturn]] void fail(const std::string &what) const {
         throw InputError(FileLoc{file_.string()}, fmt::format("the checkpoint {}", what));
     }
 
   private:
     std::filesystem::path file_;
-    std::string bytes_;
-    size_t at_ = 0;
+    std::ifstream in_;
 };
-
-std::string readWhole(const std::filesystem::path &file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw InputError(FileLoc{file.string()}, "cannot read the checkpoint");
-    std::ostringstream bytes;
-    bytes << in.rdbuf();
-    return bytes.str();
-}
 
 void checkIdentity(const Reader &reader, const RenderIdentity &written, const RenderIdentity &expected) {
     std::map<std::string, std::string> there(written.begin(), written.end());
@@ -86,20 +69,26 @@ void checkIdentity(const Reader &reader, const RenderIdentity &written, const Re
 
 void writeCheckpoint(const std::filesystem::path &file, const RenderIdentity &identity, Film &film,
                      const RenderStats &stats) {
-    std::string out = fmt::format("{}\n", kMagic);
-    for (const auto &[key, value] : identity) out += fmt::format("{}: {}\n", key, value);
-    out += "\n";
-    putStats(out, stats);
-    for (const FilmBuffer &buffer : film.buffers()) {
-        put(out, uint64_t(buffer.bytes.size()));
-        out.append(reinterpret_cast<const char *>(buffer.bytes.data()), buffer.bytes.size());
+    std::string header = fmt::format("{}\n", kMagic);
+    for (const auto &[key, value] : identity) header += fmt::format("{}: {}\n", key, value);
+    header += "\n";
+    const StoredStats stored{stats.samplesDone, stats.seconds,     stats.rays.camera,
+                             stats.rays.bounce, stats.rays.shadow, stats.nonFiniteSamples};
+    std::vector<FilmBuffer> buffers = film.buffers();
+    std::vector<uint64_t> sizes;
+    for (const FilmBuffer &buffer : buffers) sizes.push_back(buffer.bytes.size());
+    std::vector<std::span<const std::byte>> pieces{std::as_bytes(std::span(header)),
+                                                   std::as_bytes(std::span(&stored, 1))};
+    for (size_t i = 0; i < buffers.size(); ++i) {
+        pieces.push_back(std::as_bytes(std::span(&sizes[i], 1)));
+        pieces.push_back(buffers[i].bytes);
     }
-    writeBytesAtomically(file, out.data(), out.size());
+    writeBytesAtomically(file, pieces);
 }
 
 void readCheckpoint(const std::filesystem::path &file, const RenderIdentity &identity, Film &film,
                     RenderStats &stats) {
-    Reader reader(file, readWhole(file));
+    Reader reader(file);
     if (reader.line() != kMagic) reader.fail("does not start with its signature: not a veduta checkpoint");
     RenderIdentity written;
     for (std::string text = reader.line(); !text.empty(); text = reader.line()) {
@@ -108,12 +97,11 @@ void readCheckpoint(const std::filesystem::path &file, const RenderIdentity &ide
         written.emplace_back(text.substr(0, colon), text.substr(colon + 2));
     }
     checkIdentity(reader, written, identity);
-    stats.samplesDone = reader.get<uint32_t>();
-    stats.seconds = reader.get<double>();
-    stats.rays.camera = reader.get<uint64_t>();
-    stats.rays.bounce = reader.get<uint64_t>();
-    stats.rays.shadow = reader.get<uint64_t>();
-    stats.nonFiniteSamples = reader.get<uint64_t>();
+    StoredStats stored = reader.get<StoredStats>();
+    stats.samplesDone = uint32_t(stored.samplesDone);
+    stats.seconds = stored.seconds;
+    stats.rays = {stored.camera, stored.bounce, stored.shadow};
+    stats.nonFiniteSamples = stored.nonFinite;
     for (const FilmBuffer &buffer : film.buffers()) {
         if (reader.get<uint64_t>() != buffer.bytes.size()) {
             reader.fail(fmt::format("has a {} buffer of the wrong size", buffer.name));

@@ -110,22 +110,25 @@ const AlbedoTable &albedoTable() {
     return table;
 }
 
+// cosⁿα, the shape the lobe and its density share; 0 below either horizon or past 90° from
+// the mirror direction.
+float phongShape(const Vec3f &wo, const Vec3f &wi, float n) {
+    if (wo.z <= 0 || wi.z <= 0) return 0;
+    float cosAlpha = cosToMirror(wo, wi);
+    if (cosAlpha <= 0) return 0;
+    return std::pow(cosAlpha, n);
+}
+
 }  // namespace
 
 float phongLobe(const Vec3f &wo, const Vec3f &wi, float exponent) {
-    if (wo.z <= 0 || wi.z <= 0) return 0;
-    float cosAlpha = cosToMirror(wo, wi);
-    if (cosAlpha <= 0) return 0;
     float n = clampExponent(exponent);
-    return (n + 2) * (0.5f * kInvPi) * std::pow(cosAlpha, n);
+    return (n + 2) * (0.5f * kInvPi) * phongShape(wo, wi, n);
 }
 
 float phongPdf(const Vec3f &wo, const Vec3f &wi, float exponent) {
-    if (wo.z <= 0 || wi.z <= 0) return 0;
-    float cosAlpha = cosToMirror(wo, wi);
-    if (cosAlpha <= 0) return 0;
     float n = clampExponent(exponent);
-    return (n + 1) * (0.5f * kInvPi) * std::pow(cosAlpha, n);
+    return (n + 1) * (0.5f * kInvPi) * phongShape(wo, wi, n);
 }
 
 std::optional<Vec3f> samplePhong(const Vec3f &wo, float exponent, Vec2f u) {

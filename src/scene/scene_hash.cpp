@@ -6,11 +6,13 @@
 
 #include <fmt/format.h>
 
+#include "core/hash.h"
+
 namespace veduta {
 
 namespace {
 
-// 64-bit words through a multiply–xorshift mix (the finaliser of MurmurHash3), in order.
+// 64-bit words through MurmurHash3's finaliser, in order.
 class Hasher {
   public:
     void bytes(const void *data, size_t size) {
@@ -40,16 +42,8 @@ class Hasher {
 
   private:
     void word(uint64_t w) {
-        state_ = (state_ ^ mix(w + 0x9e3779b97f4a7c15ull)) * 0xff51afd7ed558ccdull;
+        state_ = (state_ ^ mix64(w + 0x9e3779b97f4a7c15ull)) * 0xff51afd7ed558ccdull;
         state_ ^= state_ >> 32;
-    }
-    static uint64_t mix(uint64_t k) {
-        k ^= k >> 33;
-        k *= 0xff51afd7ed558ccdull;
-        k ^= k >> 33;
-        k *= 0xc4ceb9fe1a85ec53ull;
-        k ^= k >> 33;
-        return k;
     }
     uint64_t state_ = 0x243f6a8885a308d3ull;
 };
