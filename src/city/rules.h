@@ -1,0 +1,98 @@
+// The facade split grammar as a rule file describes it (seed 000, digest-000 §2.3–2.5):
+// rules keyed by their predecessor symbol, each with probability branches that substitute,
+// split or repeat. rule_file.h reads it from seed 000's XML; derivation.h applies it.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "core/error.h"
+#include "core/vecmath.h"
+
+namespace veduta {
+
+// The two axes of a facade scope: r runs left to right, u bottom to top.
+enum class SplitAxis { Right, Up };
+
+// How a fitted model's depth follows its scope (digest-000 §4, Shape::GetTransformMatrix).
+// NotSet lets the model type decide.
+enum class ZScale { NotSet, None, Right, Up, Average };
+
+// A size along a split or repeat axis: metres ("4"), a share of what the absolute sizes leave
+// ("1r"), or, for repeats, a floating target ("~2.1", an extension after CGA's `~`).
+struct Extent {
+    enum class Unit { Absolute, Relative, Floating };
+    float value = 1;
+    Unit unit = Unit::Relative;
+};
+
+// One successor in a branch: a rule's predecessor or a terminal model, with the attributes
+// of seed 000's <Symbol>.
+struct Successor {
+    std::string name;  // trimmed; terminals keep their ".wrl"
+    FileLoc loc;
+    Extent size;              // along the split axis; unused in substitutions and repeats
+    std::string property;     // a setting that multiplies an absolute size (or a repeat's)
+    std::optional<std::string> texture;  // '/' separated, relative to the textures folder
+    Vec3f scale{1.0f};        // (right, up, out)
+    Vec3f translate{0.0f};    // metres, (right, up, out); +out points away from the wall
+    std::optional<Vec2f> uv;  // texture tiles are uv × their size: "0.5 0.5" tiles twice as often
+    ZScale zScale = ZScale::NotSet;
+};
+
+// A condition on the scope a branch would derive (an extension): the branch is eligible only
+// when the scope's width and height lie within these bounds, in metres.
+struct ScopeCondition {
+    float minWidth = 0, maxWidth = 1e30f;
+    float minHeight = 0, maxHeight = 1e30f;
+    bool holdsFor(float width, float height) const {
+        return width >= minWidth && width <= maxWidth && height >= minHeight && height <= maxHeight;
+    }
+};
+
+// One <Probability> branch of a rule.
+struct Branch {
+    enum class Kind { Substitution, Split, Repeat };
+    Kind kind = Kind::Substitution;
+    float probability = 1;  // renormalised over the rule's branches when the file's do not sum to 1
+    SplitAxis axis = SplitAxis::Right;
+    Extent repeatSize;  // Repeat: the tile size before the first successor's property multiplies it
+    ScopeCondition condition;
+    std::vector<Successor> successors;
+    FileLoc loc;
+};
+
+struct Rule {
+    std::string predecessor;
+    std::vector<Branch> branches;
+    FileLoc loc;
+};
+
+// A setting given in a <BuildingSettings> element: the element's name and its text, a number
+// or a string.
+struct SettingValue {
+    std::string text;
+    std::optional<float> number;
+    FileLoc loc;
+};
+
+// All rules of a rule file and the files it includes.
+struct RuleSet {
+    std::string name;  // Rulefile@name of the file that was read
+    std::vector<Rule> rules;
+    std::unordered_map<std::string, uint32_t> ruleIndex;  // predecessor → index into rules
+    // The rule files' <BuildingSettings>, defaults for properties the rules use; the first
+    // definition in file order wins (an including file's own come first).
+    std::unordered_map<std::string, SettingValue> settings;
+    std::vector<std::string> warnings;  // "file:line:col: message", for the caller to print
+
+    const Rule *find(const std::string &predecessor) const {
+        auto it = ruleIndex.find(predecessor);
+        return it == ruleIndex.end() ? nullptr : &rules[it->second];
+    }
+};
+
+}  // namespace veduta
