@@ -21,5 +21,7 @@ int runDiffProgram(int argc, char **argv);
 void addInfoCommand(CLI::App &app, int &exitCode);
 void addCubemapCommand(CLI::App &app, int &exitCode);
 void addMergeCommand(CLI::App &app, int &exitCode);
+void addFacadeCommand(CLI::App &app, int &exitCode);
+void addBuildingCommand(CLI::App &app, int &exitCode);
 
 }  // namespace veduta

@@ -14,7 +14,7 @@ namespace veduta {
 namespace {
 
 void runInfo(const std::string &path) {
-    RenderScene scene = buildRenderScene(loadSceneDescription(path));
+    RenderScene scene = buildSceneWithWarnings(loadSceneDescription(path));
     uint64_t stored = 0;
     for (const BakedMesh &m : scene.meshes) stored += m.mesh.triangleCount();
     for (const Mesh &p : scene.prototypes) stored += p.triangleCount();

@@ -19,5 +19,7 @@ int main(int argc, char **argv) {
     veduta::addInfoCommand(app, exitCode);
     veduta::addCubemapCommand(app, exitCode);
     veduta::addMergeCommand(app, exitCode);
+    veduta::addFacadeCommand(app, exitCode);
+    veduta::addBuildingCommand(app, exitCode);
     return veduta::runApp(app, argc, argv, exitCode);
 }

@@ -36,7 +36,7 @@ void runPreview(const PreviewArgs &args) {
     prepareOutputFile(output);
     SceneDescription description = loadSceneDescription(args.scene);
     applyResolution(args.resolution, description.camera);
-    RenderScene scene = buildRenderScene(description);
+    RenderScene scene = buildSceneWithWarnings(description);
 
     PreviewOptions options;
     options.mode = args.mode;

@@ -125,7 +125,7 @@ void runRender(const RenderArgs &args) {
     checkDisplayOptions(args.display);
     SceneDescription description = loadSceneDescription(args.scene);
     applyOverrides(args, description);
-    RenderScene scene = buildRenderScene(description);
+    RenderScene scene = buildSceneWithWarnings(description);
     const uint64_t hash = sceneHash(scene);
 
     RenderOptions options;

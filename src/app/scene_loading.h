@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "scene/render_scene.h"
 #include "scene/scene_description.h"
 
 namespace veduta {
@@ -12,5 +13,11 @@ extern const char *const kDefaultSceneXml;
 
 // An empty path means the built-in default scene.
 SceneDescription loadSceneDescription(const std::string &path);
+
+// buildRenderScene, with its warnings printed to stderr ("veduta: warning: file:line:col: …").
+RenderScene buildSceneWithWarnings(const SceneDescription &description);
+
+// Prints warnings to stderr, the first 20 of them and then how many more there were.
+void printWarnings(const std::vector<std::string> &warnings);
 
 }  // namespace veduta

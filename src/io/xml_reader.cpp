@@ -179,6 +179,26 @@ std::vector<XmlElement> XmlElement::children() const {
     return result;
 }
 
+namespace {
+
+constexpr const char *kXmlSpace = " \t\r\n";
+
+}  // namespace
+
+std::string XmlElement::text() const {
+    std::string_view raw = node_.child_value();
+    size_t first = raw.find_first_not_of(kXmlSpace);
+    if (first == std::string_view::npos) return "";
+    return std::string(raw.substr(first, raw.find_last_not_of(kXmlSpace) - first + 1));
+}
+
+FileLoc XmlElement::textLoc() const {
+    const char *raw = node_.child_value();
+    std::string_view view(raw);
+    size_t first = view.find_first_not_of(kXmlSpace);
+    return first == std::string_view::npos || view.empty() ? loc() : doc_->locate(raw + first);
+}
+
 void XmlElement::checkAllRead() const {
     for (pugi::xml_attribute a : node_.attributes()) {
         if (std::find(read_.begin(), read_.end(), a.name()) == read_.end()) {

@@ -67,6 +67,10 @@ class XmlElement {
     std::vector<double> doubles(const char *attribute) const;
 
     std::vector<XmlElement> children() const;
+    // The element's text, trimmed (<Symbol>\n  Wall0.wrl\n</Symbol> reads "Wall0.wrl"), and
+    // where it starts; the element's place when it has none.
+    std::string text() const;
+    FileLoc textLoc() const;
     // Reports attributes nobody read, and attributes given twice.
     void checkAllRead() const;
     // checkAllRead(), and reports child elements: for elements that hold none.

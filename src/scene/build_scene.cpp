@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "city/generate_buildings.h"
 #include "io/image_library.h"
 #include "io/mesh_import.h"
 #include "scene/build_environment.h"
@@ -15,7 +16,7 @@ namespace {
 
 class SceneAssembler {
   public:
-    explicit SceneAssembler(const SceneDescription &d) : d_(d) {}
+    SceneAssembler(const SceneDescription &d, std::vector<std::string> &warnings) : d_(d), warnings_(warnings) {}
 
     RenderScene assemble() && {
         builder_.setCamera(d_.camera);
@@ -51,6 +52,7 @@ class SceneAssembler {
             builder_.addInstance(
                 {inst.transform, it->second, override, inst.objectId, inst.buildingId, uint32_t(i + 1)});
         }
+        for (const BuildingGroupDesc &group : d_.buildingGroups) generateBuildings(group, builder_, warnings_);
         return std::move(builder_).build();
     }
 
@@ -109,6 +111,7 @@ class SceneAssembler {
     }
 
     const SceneDescription &d_;
+    std::vector<std::string> &warnings_;
     RenderSceneBuilder builder_;
     std::map<std::string, PrototypeId> prototypeIds_;
     std::map<std::filesystem::path, Mesh> meshFiles_;
@@ -144,8 +147,9 @@ Sun placeSun(const SceneDescription &d) {
     return sun;
 }
 
-RenderScene buildRenderScene(const SceneDescription &description) {
-    return SceneAssembler(description).assemble();
+RenderScene buildRenderScene(const SceneDescription &description, std::vector<std::string> *warnings) {
+    std::vector<std::string> ignored;
+    return SceneAssembler(description, warnings ? *warnings : ignored).assemble();
 }
 
 }  // namespace veduta

@@ -3,6 +3,9 @@
 // city, GIS) add to the same builder.
 #pragma once
 
+#include <string>
+#include <vector>
+
 #include "scene/render_scene.h"
 #include "scene/scene_description.h"
 
@@ -12,7 +15,8 @@ namespace veduta {
 Sun placeSun(const SceneDescription &description);
 
 // Throws InputError at the place in the scene file a problem comes from (an unknown material
-// or prototype, a mesh file that cannot be read).
-RenderScene buildRenderScene(const SceneDescription &description);
+// or prototype, a mesh file that cannot be read, a rule that cannot be derived). Warnings
+// ("file:line:col: message") go to `warnings` when it is given.
+RenderScene buildRenderScene(const SceneDescription &description, std::vector<std::string> *warnings = nullptr);
 
 }  // namespace veduta

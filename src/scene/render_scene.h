@@ -61,6 +61,7 @@ class RenderSceneBuilder {
     MaterialId addMaterial(Material material);
     // The id of a material added before, or kNoMaterial.
     MaterialId findMaterial(const std::string &name) const;
+    const std::vector<Material> &materials() const { return scene_.materials; }
 
     void addMesh(const Mesh &mesh, const Transform &objectToWorld, ObjectId objectId, uint32_t buildingId = 0,
                  uint32_t instanceId = 0);

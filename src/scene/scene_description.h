@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "city/building_settings.h"
 #include "core/error.h"
 #include "scene/camera.h"
 #include "scene/environment.h"
@@ -89,6 +90,42 @@ struct SunTimeDesc {
     std::optional<GeographicPoint> place;  // unset: the georeference's origin
 };
 
+// One procedural building: a footprint whose walls its group's rules derive.
+struct BuildingDesc {
+    FileLoc loc;
+    uint32_t buildingId = 0;  // its identity: its random choices and the IndexBuilding pass
+    uint32_t objectId = 0;
+    std::vector<Vec2f> footprint;  // x y pairs, metres, either orientation
+    FileLoc footprintLoc;
+    std::vector<uint32_t> streetEdges;  // edge i runs from point i to point i+1
+    FileLoc streetLoc;
+    float base = 0;  // the ground height it stands on
+    SettingsMap settings;
+};
+
+// A lone facade: a start symbol on a width × height rectangle, for studies of a rule set. It
+// stands on the x axis facing −y (south) before its transform.
+struct FacadeDesc {
+    FileLoc loc;
+    uint32_t buildingId = 0;  // numbered with the buildings
+    uint32_t objectId = 0;
+    std::string start;
+    float width = 0, height = 0;
+    Transform transform;
+    SettingsMap settings;
+};
+
+// A <buildings> element: buildings derived with one rule file (docs/buildings.md).
+struct BuildingGroupDesc {
+    FileLoc loc;
+    std::filesystem::path rules;  // resolved against the scene's folder
+    FileLoc rulesLoc;
+    uint32_t seed = 0;  // with each building's id, every random choice of its derivation
+    SettingsMap settings;
+    std::vector<BuildingDesc> buildings;
+    std::vector<FacadeDesc> facades;
+};
+
 struct SceneDescription {
     std::string source;  // file name, or a name for built-in text
     Camera camera;
@@ -101,6 +138,7 @@ struct SceneDescription {
     std::vector<GeometryDesc> geometry;
     std::vector<PrototypeDesc> prototypes;
     std::vector<InstanceDesc> instances;
+    std::vector<BuildingGroupDesc> buildingGroups;
 };
 
 // Parse a scene file; throws InputError with file:line:column on any problem.

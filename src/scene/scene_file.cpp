@@ -1,4 +1,5 @@
 // The scene-file reader: XML → SceneDescription. No geometry is made here.
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <map>
@@ -36,6 +37,7 @@ class SceneFileReader {
         scene_.source = doc_.name();
         for (const XmlElement &e : root.children()) readTopLevel(e);
         assignObjectIds();
+        assignBuildingIds();
         return std::move(scene_);
     }
 
@@ -60,6 +62,8 @@ class SceneFileReader {
             readPrototype(e);
         } else if (n == "instance") {
             readInstance(e);
+        } else if (n == "buildings") {
+            readBuildings(e);
         } else if (isGeometry(n)) {
             scene_.geometry.push_back(readGeometry(e, true));
         } else {
@@ -287,6 +291,79 @@ class SceneFileReader {
         scene_.instances.push_back(std::move(inst));
     }
 
+    void readBuildings(const XmlElement &e) {
+        BuildingGroupDesc group;
+        group.loc = e.loc();
+        std::filesystem::path rules = e.string("rules");
+        group.rules = rules.is_absolute() ? rules : baseDirectory_ / rules;
+        group.rulesLoc = e.attributeLoc("rules");
+        group.seed = e.unsignedInteger("seed", 0);
+        e.checkAllRead();
+        for (const XmlElement &child : e.children()) {
+            if (child.name() == "BuildingSettings") {
+                group.settings = readBuildingSettings(child);
+            } else if (child.name() == "building") {
+                group.buildings.push_back(readBuilding(child));
+            } else if (child.name() == "facade") {
+                group.facades.push_back(readFacade(child));
+            } else {
+                child.fail(fmt::format(
+                    "<{}> cannot stand inside <buildings>; expected <building>, <facade> or <BuildingSettings>",
+                    child.name()));
+            }
+        }
+        scene_.buildingGroups.push_back(std::move(group));
+    }
+
+    BuildingDesc readBuilding(const XmlElement &e) {
+        BuildingDesc b;
+        b.loc = e.loc();
+        b.buildingId = e.unsignedInteger("id", 0);
+        if (e.has("id") && b.buildingId == 0) e.failAt("id", "building ids start at 1; 0 means no building");
+        std::vector<float> xy = e.numbers("footprint");
+        b.footprintLoc = e.attributeLoc("footprint");
+        if (xy.size() % 2 != 0 || xy.size() < 6)
+            e.failAt("footprint", fmt::format("a footprint is at least three x y pairs; {} numbers given", xy.size()));
+        for (size_t i = 0; i < xy.size(); i += 2) b.footprint.push_back({xy[i], xy[i + 1]});
+        b.streetLoc = e.attributeLoc("street");
+        for (float edge : e.has("street") ? e.numbers("street") : std::vector<float>{}) {
+            if (edge < 0 || edge != std::floor(edge) || edge >= float(b.footprint.size()))
+                e.failAt("street", fmt::format("street edges are numbers of footprint edges, 0 to {}; {} is not one",
+                                               b.footprint.size() - 1, edge));
+            b.streetEdges.push_back(uint32_t(edge));
+        }
+        b.base = e.number("base", 0);
+        b.settings = readSettingsChild(e);
+        return b;
+    }
+
+    FacadeDesc readFacade(const XmlElement &e) {
+        FacadeDesc f;
+        f.loc = e.loc();
+        f.buildingId = e.unsignedInteger("id", 0);
+        if (e.has("id") && f.buildingId == 0) e.failAt("id", "building ids start at 1; 0 means no building");
+        f.start = e.string("start");
+        f.width = e.number("width", 0, 0.01f, 1e4f);
+        f.height = e.number("height", 0, 0.01f, 1e4f);
+        if (!e.has("width") || !e.has("height")) e.fail("<facade> needs 'width' and 'height' in metres");
+        f.transform = readTransform(e);
+        f.settings = readSettingsChild(e);
+        return f;
+    }
+
+    // The optional <BuildingSettings> inside a <building> or <facade>, after its attributes.
+    static SettingsMap readSettingsChild(const XmlElement &e) {
+        e.checkAllRead();
+        SettingsMap settings;
+        for (const XmlElement &child : e.children()) {
+            if (child.name() != "BuildingSettings")
+                child.fail(fmt::format("<{}> cannot stand inside <{}>; expected <BuildingSettings>", child.name(),
+                                       e.name()));
+            settings = readBuildingSettings(child);
+        }
+        return settings;
+    }
+
     GeometryDesc readGeometry(const XmlElement &e, bool topLevel) {
         GeometryDesc g;
         g.loc = e.loc();
@@ -386,6 +463,11 @@ class SceneFileReader {
         std::map<std::pair<int, int>, uint32_t *> byPlace;
         for (GeometryDesc &g : scene_.geometry) byPlace[{g.loc.line, g.loc.column}] = &g.objectId;
         for (InstanceDesc &i : scene_.instances) byPlace[{i.loc.line, i.loc.column}] = &i.objectId;
+        for (BuildingGroupDesc &group : scene_.buildingGroups)
+        {
+            for (BuildingDesc &b : group.buildings) byPlace[{b.loc.line, b.loc.column}] = &b.objectId;
+            for (FacadeDesc &f : group.facades) byPlace[{f.loc.line, f.loc.column}] = &f.objectId;
+        }
         uint32_t next = 1;
         for (auto &[place, id] : byPlace) {
             auto given = idsByPlace_.find(place);
@@ -394,6 +476,32 @@ class SceneFileReader {
                 continue;
             }
             while (explicitIds_.count(next)) ++next;
+            *id = next++;
+        }
+    }
+
+    // Buildings without an id get the smallest unused numbers from 1 up, in file order; an id
+    // given twice is an error (it would give two buildings the same random choices).
+    void assignBuildingIds() {
+        std::vector<std::pair<uint32_t *, const FileLoc *>> all;
+        for (BuildingGroupDesc &group : scene_.buildingGroups) {
+            for (BuildingDesc &b : group.buildings) all.emplace_back(&b.buildingId, &b.loc);
+            for (FacadeDesc &f : group.facades) all.emplace_back(&f.buildingId, &f.loc);
+        }
+        std::sort(all.begin(), all.end(), [](const auto &a, const auto &b) {
+            return std::pair(a.second->line, a.second->column) < std::pair(b.second->line, b.second->column);
+        });
+        std::map<uint32_t, FileLoc> given;
+        for (auto &[id, loc] : all) {
+            if (*id == 0) continue;
+            auto [it, fresh] = given.emplace(*id, *loc);
+            if (!fresh)
+                throw InputError(*loc, fmt::format("building id {} is already used at {}", *id, it->second.toString()));
+        }
+        uint32_t next = 1;
+        for (auto &[id, loc] : all) {
+            if (*id != 0) continue;
+            while (given.count(next)) ++next;
             *id = next++;
         }
     }

@@ -1,0 +1,136 @@
+#include "city/building_generator.h"
+
+#include <cmath>
+
+#include "city/asset_fitting.h"
+#include "city/roofs.h"
+#include "city/start_shapes.h"
+#include "core/hash.h"
+
+namespace veduta {
+
+size_t BuildingGenerator::PrototypeKeyHash::operator()(const PrototypeKey &key) const {
+    uint32_t h = hashValues({key.model});
+    for (MaterialId m : key.materials) h = mix32(h ^ m);
+    return h;
+}
+
+BuildingGenerator::BuildingGenerator(const Grammar &grammar, const AssetLibrary &assets, RenderSceneBuilder &builder,
+                                     uint32_t seed, const DerivationLimits &limits)
+    : grammar_(grammar), assets_(assets), builder_(builder), palette_(builder), seed_(seed), limits_(limits) {}
+
+PrototypeId BuildingGenerator::prototypeFor(const PrototypeKey &key) {
+    auto it = prototypes_.find(key);
+    if (it != prototypes_.end()) return it->second;
+    Mesh mesh = assets_[key.model].mesh;
+    for (MaterialId &m : mesh.triangleMaterials) m = key.materials[m];
+    PrototypeId id = builder_.addPrototype(std::move(mesh));
+    prototypes_.emplace(key, id);
+    return id;
+}
+
+BuildingGenerator::PrototypeKey BuildingGenerator::keyFor(const Terminal &terminal, const MaterialSet &materials) {
+    const Asset &model = assets_[terminal.model];
+    PrototypeKey key;
+    key.model = terminal.model;
+    for (size_t s = 0; s < model.surfaces.size() && s < kMaxSurfaces; ++s)
+        key.materials[s] = materials[model.surfaces[s]];
+    if (terminal.texture) {
+        auto [it, added] = textureChoices_.try_emplace(terminal.texture);
+        if (added) it->second = palette_.forTexture(*terminal.texture);
+        key.materials[0] = it->second.in(materials);
+    }
+    return key;
+}
+
+// A wall piece is baked, not instanced: its texture coordinates are its position on the
+// facade (metres along the perimeter, metres up; plus the depth for reveals) divided by the
+// uv attribute, so neighbouring pieces continue one another (seed 000's planar wall mapping).
+void BuildingGenerator::addWallPiece(const Asset &model, const Transform &modelToFacade,
+                                     const Transform &facadeToWorld, float alongPerimeter, const Terminal &terminal,
+                                     const PrototypeKey &key, Mesh &baked) const {
+    auto first = uint32_t(baked.positions.size());
+    auto firstTriangle = baked.triangleCount();
+    baked.append(model.mesh, facadeToWorld * modelToFacade);
+    for (size_t v = 0; v < model.mesh.positions.size(); ++v) {
+        Vec3f onFacade = modelToFacade.applyPoint(model.mesh.positions[v]);
+        baked.uvs[first + v] = {(alongPerimeter + onFacade.x + onFacade.z) / terminal.uv.x, onFacade.y / terminal.uv.y};
+    }
+    for (size_t t = firstTriangle; t < baked.triangleCount(); ++t)
+        baked.triangleMaterials[t] = key.materials[model.mesh.triangleMaterials[t - firstTriangle]];
+}
+
+void BuildingGenerator::addRoof(const BuildingSpec &building, float eaves, float roofHeight,
+                                const MaterialSet &materials, Mesh &baked) const {
+    Mesh roof;
+    if (chooseRoofKind(building.footprint) == RoofKind::Gable) {
+        roof = gableRoof(building.footprint, eaves, roofHeight);
+    } else {
+        float inset = building.settings.number("RoofInset").value_or(1.5f);
+        roof = mansardRoof(building.footprint, eaves, roofHeight, inset).mesh;
+    }
+    for (MaterialId &m : roof.triangleMaterials)
+        m = m == RoofGableWall ? materials[MaterialCategory::Wall] : materials[MaterialCategory::Roof];
+    baked.append(roof, Transform{});
+}
+
+BuildingGenerator::BuildingContext BuildingGenerator::contextFor(uint32_t id, ObjectId objectId,
+                                                                const SettingsStack &settings) const {
+    BuildingHeights heights = randomiseHeights(settings, seed_, id);
+    return {id, objectId, heights, BuildingProperties(settings, heights), palette_.choose(seed_, id)};
+}
+
+void BuildingGenerator::emitFacade(const BuildingContext &building, const StartShape &start, float alongPerimeter,
+                                   Mesh &baked, BuildingStats &stats, std::vector<std::string> &warnings) {
+    terminals_.clear();
+    deriveFacade(grammar_, start.symbol, {start.width, start.height}, building.properties, {seed_, building.id},
+                 terminals_, warnings, limits_);
+    stats.terminals += terminals_.size();
+    for (const Terminal &terminal : terminals_) {
+        const Asset &model = assets_[terminal.model];
+        Transform modelToFacadeFrame = modelToFacade(model, terminal);
+        PrototypeKey key = keyFor(terminal, building.materials);
+        if (model.type == ModelType::Wall) {
+            addWallPiece(model, modelToFacadeFrame, start.facadeToWorld, alongPerimeter, terminal, key, baked);
+            continue;
+        }
+        Instance instance;
+        instance.objectToWorld = start.facadeToWorld * modelToFacadeFrame;
+        instance.prototype = prototypeFor(key);
+        instance.objectId = building.objectId;
+        instance.buildingId = building.id;
+        builder_.addInstance(instance);
+        ++stats.instances;
+    }
+}
+
+BuildingStats BuildingGenerator::generate(const BuildingSpec &spec, std::vector<std::string> &warnings) {
+    BuildingContext building = contextFor(spec.id, spec.objectId, spec.settings);
+    const std::vector<Vec2f> &points = spec.footprint.points;
+    std::vector<float> perimeterAt(points.size() + 1, 0.0f);
+    for (size_t i = 0; i < points.size(); ++i) {
+        const Vec2f &a = points[i], &b = points[(i + 1) % points.size()];
+        perimeterAt[i + 1] = perimeterAt[i] + std::hypot(b.x - a.x, b.y - a.y);
+    }
+    BuildingStats stats;
+    Mesh baked;
+    for (const StartShape &start : makeStartShapes(spec.footprint, building.heights.building))
+        emitFacade(building, start, perimeterAt[start.edge], baked, stats, warnings);
+    addRoof(spec, spec.footprint.base + building.heights.building, building.heights.roof, building.materials, baked);
+    stats.bakedTriangles = baked.triangleCount();
+    builder_.addMesh(baked, Transform{}, spec.objectId, spec.id);
+    return stats;
+}
+
+BuildingStats BuildingGenerator::generateFacade(const FacadeSpec &spec, std::vector<std::string> &warnings) {
+    BuildingContext building = contextFor(spec.id, spec.objectId, spec.settings);
+    StartShape start{spec.startSymbol, 0, spec.width, spec.height, spec.facadeToWorld};
+    BuildingStats stats;
+    Mesh baked;
+    emitFacade(building, start, 0, baked, stats, warnings);
+    stats.bakedTriangles = baked.triangleCount();
+    if (baked.triangleCount() > 0) builder_.addMesh(baked, Transform{}, spec.objectId, spec.id);
+    return stats;
+}
+
+}  // namespace veduta

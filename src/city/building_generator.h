@@ -1,0 +1,97 @@
+// Generating a procedural building from its footprint (seed 000's BuildingGenerator,
+// digest-000 §4): one start shape per wall, each derived with the split grammar; models become
+// instances of shared prototypes, walls are baked with planar texture coordinates that run on
+// across neighbouring pieces and around the corners, and a gable or mansard roof closes the top.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "city/assets.h"
+#include "city/building_settings.h"
+#include "city/derivation.h"
+#include "city/footprint.h"
+#include "city/material_palette.h"
+#include "city/start_shapes.h"
+#include "scene/render_scene.h"
+
+namespace veduta {
+
+struct BuildingSpec {
+    uint32_t id = 0;  // the building's stable identity: its random choices and its id pass
+    ObjectId objectId = 0;
+    Footprint footprint;     // normalised (counter-clockwise)
+    SettingsStack settings;  // lot > block > city > rule file > defaults
+};
+
+// A lone facade (the Facade Editor's preview, digest-000 §5): a start symbol on a width × height
+// rectangle placed by `facadeToWorld` (facade frame: right, up, out).
+struct FacadeSpec {
+    uint32_t id = 0;
+    ObjectId objectId = 0;
+    std::string startSymbol;
+    float width = 0, height = 0;
+    Transform facadeToWorld;
+    SettingsStack settings;
+};
+
+struct BuildingStats {
+    size_t terminals = 0;
+    size_t instances = 0;
+    size_t bakedTriangles = 0;
+};
+
+class BuildingGenerator {
+  public:
+    BuildingGenerator(const Grammar &grammar, const AssetLibrary &assets, RenderSceneBuilder &builder, uint32_t seed,
+                      const DerivationLimits &limits = {});
+
+    // Emits one building into the builder. Warnings are appended as "file:line:col: message";
+    // problems in the rules or settings throw InputError.
+    BuildingStats generate(const BuildingSpec &building, std::vector<std::string> &warnings);
+    BuildingStats generateFacade(const FacadeSpec &facade, std::vector<std::string> &warnings);
+
+  private:
+    static constexpr size_t kMaxSurfaces = 4;
+    struct PrototypeKey {
+        uint32_t model = 0;
+        std::array<MaterialId, kMaxSurfaces> materials{};
+        bool operator==(const PrototypeKey &) const = default;
+    };
+    struct PrototypeKeyHash {
+        size_t operator()(const PrototypeKey &key) const;
+    };
+
+    // What every facade of one building shares.
+    struct BuildingContext {
+        uint32_t id = 0;
+        ObjectId objectId = 0;
+        BuildingHeights heights;
+        BuildingProperties properties;
+        MaterialSet materials;
+    };
+    BuildingContext contextFor(uint32_t id, ObjectId objectId, const SettingsStack &settings) const;
+    void emitFacade(const BuildingContext &building, const StartShape &start, float alongPerimeter, Mesh &baked,
+                    BuildingStats &stats, std::vector<std::string> &warnings);
+    PrototypeId prototypeFor(const PrototypeKey &key);
+    PrototypeKey keyFor(const Terminal &terminal, const MaterialSet &materials);
+    void addWallPiece(const Asset &model, const Transform &modelToFacade, const Transform &facadeToWorld,
+                      float alongPerimeter, const Terminal &terminal, const PrototypeKey &key, Mesh &baked) const;
+    void addRoof(const BuildingSpec &building, float eaves, float roofHeight, const MaterialSet &materials,
+                 Mesh &baked) const;
+
+    const Grammar &grammar_;
+    const AssetLibrary &assets_;
+    RenderSceneBuilder &builder_;
+    MaterialPalette palette_;
+    uint32_t seed_;
+    DerivationLimits limits_;
+    std::unordered_map<PrototypeKey, PrototypeId, PrototypeKeyHash> prototypes_;
+    std::unordered_map<const std::string *, MaterialPalette::TextureChoice> textureChoices_;
+    std::vector<Terminal> terminals_;  // reused from building to building
+};
+
+}  // namespace veduta

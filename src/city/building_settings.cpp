@@ -1,0 +1,102 @@
+#include "city/building_settings.h"
+
+#include <algorithm>
+#include <cmath>
+#include <charconv>
+
+#include <fmt/format.h>
+
+#include "core/hash.h"
+#include "io/xml_reader.h"
+
+namespace veduta {
+
+const SettingValue *SettingsStack::find(const std::string &name) const {
+    for (const SettingsMap *layer : layers_) {
+        auto it = layer->find(name);
+        if (it != layer->end()) return &it->second;
+    }
+    return nullptr;
+}
+
+std::optional<float> SettingsStack::number(const std::string &name) const {
+    const SettingValue *value = find(name);
+    if (!value) return std::nullopt;
+    if (!value->number)
+        throw InputError(value->loc, fmt::format("setting {} must be a number, not '{}'", name, value->text));
+    return value->number;
+}
+
+std::optional<std::string> SettingsStack::text(const std::string &name) const {
+    const SettingValue *value = find(name);
+    return value ? std::optional(value->text) : std::nullopt;
+}
+
+SettingValue settingValue(std::string text, const FileLoc &loc) {
+    SettingValue value{std::move(text), std::nullopt, loc};
+    float number = 0;
+    const char *first = value.text.data(), *last = first + value.text.size();
+    auto [end, error] = std::from_chars(first, last, number);
+    if (error == std::errc() && end == last && std::isfinite(number)) value.number = number;
+    return value;
+}
+
+SettingsMap readBuildingSettings(const XmlElement &element) {
+    element.checkAllRead();
+    SettingsMap settings;
+    for (const XmlElement &child : element.children()) {
+        child.checkLeaf();
+        auto [it, fresh] = settings.emplace(std::string(child.name()), settingValue(child.text(), child.textLoc()));
+        if (!fresh)
+            child.fail(fmt::format("the setting {} is given twice (first at {})", child.name(), it->second.loc.toString()));
+    }
+    return settings;
+}
+
+const SettingsMap &defaultBuildingSettings() {
+    static const SettingsMap defaults = [] {
+        SettingsMap map;
+        FileLoc loc{"<built-in defaults>", 0, 0};
+        auto set = [&](const char *name, float value) {
+            map[name] = SettingValue{fmt::format("{}", value), value, loc};
+        };
+        set("BuildingHeight", 15);
+        set("BuildingHeightVar", 0);
+        set("FloorHeight", 3);
+        set("FloorHeightVar", 0);
+        set("RoofHeight", 4);
+        set("RoofHeightVar", 0);
+        return map;
+    }();
+    return defaults;
+}
+
+namespace {
+
+float randomised(const SettingsStack &settings, const std::string &name, uint32_t seed, uint32_t buildingId,
+                 uint32_t which) {
+    float base = settings.number(name).value_or(0);
+    float deviation = settings.number(name + "Var").value_or(0);
+    float u = bitsToUnitFloat(hashValues({seed, buildingId, 0x48454947u, which}));
+    return std::max(base + (2 * u - 1) * deviation, 0.1f * base);
+}
+
+}  // namespace
+
+BuildingHeights randomiseHeights(const SettingsStack &settings, uint32_t seed, uint32_t buildingId) {
+    return {randomised(settings, "BuildingHeight", seed, buildingId, 0),
+            randomised(settings, "FloorHeight", seed, buildingId, 1),
+            randomised(settings, "RoofHeight", seed, buildingId, 2)};
+}
+
+BuildingProperties::BuildingProperties(const SettingsStack &settings, const BuildingHeights &heights)
+    : settings_(&settings), heights_(heights) {}
+
+std::optional<float> BuildingProperties::number(const std::string &name) const {
+    if (name == "BuildingHeight" || name == "ActualBuildingHeight") return heights_.building;
+    if (name == "FloorHeight" || name == "ActualFloorHeight") return heights_.floor;
+    if (name == "RoofHeight" || name == "ActualRoofHeight") return heights_.roof;
+    return settings_->number(name);
+}
+
+}  // namespace veduta

@@ -1,0 +1,60 @@
+#include "city/generate_buildings.h"
+
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "city/assets.h"
+#include "city/building_generator.h"
+#include "city/rule_file.h"
+
+namespace veduta {
+
+namespace {
+
+Footprint footprintOf(const BuildingDesc &building, std::vector<std::string> &warnings) {
+    Footprint footprint;
+    footprint.points = building.footprint;
+    footprint.streetEdges.assign(building.footprint.size(), false);
+    for (uint32_t edge : building.streetEdges) footprint.streetEdges[edge] = true;
+    footprint.base = building.base;
+    if (auto warning = normaliseFootprint(footprint, building.footprintLoc)) warnings.push_back(*warning);
+    return footprint;
+}
+
+}  // namespace
+
+void generateBuildings(const BuildingGroupDesc &group, RenderSceneBuilder &builder, std::vector<std::string> &warnings) {
+    if (!std::filesystem::is_regular_file(group.rules))
+        throw InputError(group.rulesLoc, fmt::format("cannot read the rule file {}", group.rules.string()));
+    const AssetLibrary &assets = AssetLibrary::builtIn();
+    RuleSet rules = readRuleFile(group.rules, [&](std::string_view name) { return assets.isModelName(name); });
+    warnings.insert(warnings.end(), rules.warnings.begin(), rules.warnings.end());
+    Grammar grammar(rules, [&](std::string_view name) { return assets.find(name); });
+    BuildingGenerator generator(grammar, assets, builder, group.seed);
+    for (const BuildingDesc &desc : group.buildings) {
+        BuildingSpec spec;
+        spec.id = desc.buildingId;
+        spec.objectId = desc.objectId;
+        spec.footprint = footprintOf(desc, warnings);
+        spec.settings = SettingsStack({&desc.settings, &group.settings, &rules.settings, &defaultBuildingSettings()});
+        generator.generate(spec, warnings);
+    }
+    // The facade frame (right, up, out) standing on the x axis and facing −y.
+    const Transform standing{{1, 0, 0, 0, 0, 0, -1, 0, 0, 1, 0, 0}};
+    for (const FacadeDesc &desc : group.facades) {
+        FacadeSpec spec;
+        spec.id = desc.buildingId;
+        spec.objectId = desc.objectId;
+        spec.startSymbol = desc.start;
+        spec.width = desc.width;
+        spec.height = desc.height;
+        spec.facadeToWorld = desc.transform * standing;
+        spec.settings = SettingsStack({&desc.settings, &group.settings, &rules.settings, &defaultBuildingSettings()});
+        if (!grammar.findRule(desc.start))
+            throw InputError(desc.loc, fmt::format("the rule file has no rule for the start symbol '{}'", desc.start));
+        generator.generateFacade(spec, warnings);
+    }
+}
+
+}  // namespace veduta
