@@ -264,3 +264,64 @@ def leaf_pixel(x, y):
 
 
 write_png("leaves.png", S, S, 4, leaf_pixel)
+
+# --- Slate (category roof, rules/gruenderzeit): rows of rectangular slates, overlapping ---
+SLATE_ROWS, SLATES = 10, 5
+
+
+def slate_cell(x, y):
+    row = y * SLATE_ROWS // S
+    u = x / S * SLATES + (0.5 if row % 2 else 0)
+    return row, int(u) % SLATES, u % 1.0, (y * SLATE_ROWS / S) % 1.0
+
+
+def slate_height(x, y):
+    row, slate, fu, fv = slate_cell(x, y)
+    gap = 0.0 if min(fu, 1 - fu) < 0.02 else 1.0
+    return gap * (0.4 + 0.5 * fv) + 0.1 * fbm(x, y, S, 81, 3, 32)
+
+
+slate_h = cached(slate_height, S)
+
+
+def slate_diffuse(x, y):
+    row, slate, fu, fv = slate_cell(x, y)
+    g = 0.2 + 0.06 * hash01(row, slate, 83) + 0.05 * (fbm(x, y, S, 85, 4, 16) - 0.5)
+    return (g, g * 1.04, g * 1.12)
+
+
+write_png("slate_diffuse.png", S, S, 3, slate_diffuse)
+write_png("slate_normal.png", S, S, 3, normal_map(slate_h, S, 5.0))
+
+# --- Stucco ornaments (rules/gruenderzeit: miscNormal\OrnamentBorder0081_S.jpg and
+# miscNormal\OrnamentBorder0093_2_S.jpg). Only their normal maps carry the relief (L2442). ---
+O = 128
+
+
+def fillets(v):
+    """Raised bands along the top and bottom edge that frame a frieze; v in [0, 1]."""
+    return 1.0 if v < 0.1 or v > 0.9 else 0.0
+
+
+def egg_and_dart_height(x, y):
+    """Four eggs across, each in a sunken shell, with a dart between neighbours."""
+    u, v = (x + 0.5) / O * 4 % 1.0, (y + 0.5) / O
+    a, b = (u - 0.5) / 0.34, (v - 0.5) / 0.36
+    egg = max(0.0, 1 - a * a - b * b) ** 0.5
+    shell = 1.0 if 0.34 ** 2 < (u - 0.5) ** 2 + ((v - 0.5) * 0.34 / 0.36) ** 2 < 0.42 ** 2 else 0.0
+    dart = max(0.0, 1 - abs(u if u < 0.5 else u - 1.0) / 0.06 - abs(v - 0.45) / 0.35)
+    return max(0.8 * egg, 0.5 * shell, 0.7 * dart, 0.6 * fillets(v))
+
+
+def rosette_height(x, y):
+    """A rosette of eight petals in a round frame, once per texture (uv tiles it)."""
+    dx, dy = (x + 0.5) / O - 0.5, (y + 0.5) / O - 0.5
+    r, angle = math.hypot(dx, dy), math.atan2(dy, dx)
+    petals = 0.32 * (0.55 + 0.45 * abs(math.cos(4 * angle)))
+    petal = max(0.0, 1 - r / petals) if r < petals else 0.0
+    ring = 0.6 if 0.38 < r < 0.44 else 0.0
+    return max(petal, ring, 0.7 if r < 0.06 else 0.0, 0.5 * fillets((y + 0.5) / O))
+
+
+write_png("ornament_egg_and_dart_normal.png", O, O, 3, normal_map(cached(egg_and_dart_height, O), O, 6.0))
+write_png("ornament_rosette_normal.png", O, O, 3, normal_map(cached(rosette_height, O), O, 6.0))
