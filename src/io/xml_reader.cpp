@@ -185,12 +185,13 @@ constexpr const char *kXmlSpace = " \t\r\n";
 
 }  // namespace
 
-std::string XmlElement::text() const {
-    std::string_view raw = node_.child_value();
-    size_t first = raw.find_first_not_of(kXmlSpace);
+std::string trimmedXmlText(std::string_view text) {
+    size_t first = text.find_first_not_of(kXmlSpace);
     if (first == std::string_view::npos) return "";
-    return std::string(raw.substr(first, raw.find_last_not_of(kXmlSpace) - first + 1));
+    return std::string(text.substr(first, text.find_last_not_of(kXmlSpace) - first + 1));
 }
+
+std::string XmlElement::text() const { return trimmedXmlText(node_.child_value()); }
 
 FileLoc XmlElement::textLoc() const {
     const char *raw = node_.child_value();

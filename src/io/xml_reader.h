@@ -16,6 +16,9 @@
 
 namespace veduta {
 
+// `text` without the XML white space (space, tab, CR, LF) at either end.
+std::string trimmedXmlText(std::string_view text);
+
 class XmlDocument {
   public:
     static XmlDocument fromFile(const std::filesystem::path &file);

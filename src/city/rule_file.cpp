@@ -1,0 +1,478 @@
+#include "city/rule_file.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <deque>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "city/building_settings.h"
+#include "io/xml_reader.h"
+
+namespace veduta {
+
+namespace {
+
+// Seed 000's own files write thirds as 0.333333.
+constexpr float kProbabilitySumTolerance = 1e-4f;
+
+constexpr const char *kWhiteSpace = " \t\r\n";
+
+
+std::optional<float> parseFloat(std::string_view text) {
+    float value = 0;
+    auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) return std::nullopt;
+    return value;
+}
+
+std::vector<pugi::xml_node> childElements(pugi::xml_node node) {
+    std::vector<pugi::xml_node> children;
+    for (pugi::xml_node child : node.children()) {
+        if (child.type() == pugi::node_element) children.push_back(child);
+    }
+    return children;
+}
+
+// Seed 000's files break symbol names across lines, so the text is trimmed; white space
+// inside a name is more likely two names run together than a name.
+std::string symbolName(const XmlElement &e) {
+    std::string name = e.text();
+    if (name.empty()) e.fail(fmt::format("<{}> holds no symbol name", e.name()));
+    if (name.find_first_of(kWhiteSpace) != std::string::npos) {
+        e.fail(fmt::format("'{}' is not a symbol name: it contains white space", name));
+    }
+    return name;
+}
+
+// "4" metres, "1r" a share of what the absolute sizes leave, "~2.1" a floating repeat size.
+Extent readExtent(const XmlElement &e, const char *attribute) {
+    std::string text = trimmedXmlText(e.string(attribute));
+    Extent extent;
+    std::string_view number = text;
+    if (number.starts_with('~')) {
+        extent.unit = Extent::Unit::Floating;
+        number.remove_prefix(1);
+    } else if (number.ends_with('r')) {
+        extent.unit = Extent::Unit::Relative;
+        number.remove_suffix(1);
+    } else {
+        extent.unit = Extent::Unit::Absolute;
+    }
+    std::optional<float> value = parseFloat(number);
+    if (!value) {
+        e.failAt(attribute, fmt::format("'{}' is not a size: give metres ('4'), a share ('1r') or a floating "
+                                        "repeat size ('~2.1')",
+                                        text));
+    }
+    if (*value <= 0) e.failAt(attribute, fmt::format("size '{}' is not positive", text));
+    extent.value = *value;
+    return extent;
+}
+
+SplitAxis readAxis(const XmlElement &e) {
+    std::string axis = trimmedXmlText(e.string("axis"));
+    if (axis == "r") return SplitAxis::Right;
+    if (axis == "u") return SplitAxis::Up;
+    e.failAt("axis", fmt::format("unknown axis '{}': expected r (right) or u (up)", axis));
+}
+
+ZScale readZScale(const XmlElement &e) {
+    if (!e.has("z_scale")) return ZScale::NotSet;
+    std::string mode = trimmedXmlText(e.string("z_scale"));
+    if (mode == "none") return ZScale::None;
+    if (mode == "right") return ZScale::Right;
+    if (mode == "up") return ZScale::Up;
+    if (mode == "average") return ZScale::Average;
+    e.failAt("z_scale", fmt::format("unknown z_scale '{}': expected none, right, up or average", mode));
+}
+
+std::optional<Vec2f> readUv(const XmlElement &e) {
+    if (!e.has("uv")) return std::nullopt;
+    std::vector<float> uv = e.numbers("uv");
+    if (uv.size() != 2) e.failAt("uv", "attribute 'uv' takes two numbers");
+    if (uv[0] <= 0 || uv[1] <= 0) e.failAt("uv", "the uv scale must be positive");
+    return Vec2f{uv[0], uv[1]};
+}
+
+// Seed 000 was written on Windows: its texture paths use '\'.
+std::string texturePath(std::string path) {
+    std::replace(path.begin(), path.end(), '\\', '/');
+    return path;
+}
+
+float readProbability(const XmlElement &e) {
+    if (!e.has("value")) e.fail("<Probability> needs the attribute 'value'");
+    float probability = e.number("value", 0);
+    if (probability < 0) e.failAt("value", fmt::format("probability {} is negative", probability));
+    return probability;
+}
+
+float readBound(const XmlElement &e, const char *attribute, float fallback) {
+    float bound = e.number(attribute, fallback);
+    if (bound < 0) e.failAt(attribute, fmt::format("attribute '{}' is {}, which is negative", attribute, bound));
+    return bound;
+}
+
+ScopeCondition readCondition(const XmlElement &e) {
+    ScopeCondition c;
+    c.minWidth = readBound(e, "min_width", c.minWidth);
+    c.maxWidth = readBound(e, "max_width", c.maxWidth);
+    c.minHeight = readBound(e, "min_height", c.minHeight);
+    c.maxHeight = readBound(e, "max_height", c.maxHeight);
+    if (c.minWidth > c.maxWidth) {
+        e.failAt("max_width", fmt::format("max_width {} is less than min_width {}", c.maxWidth, c.minWidth));
+    }
+    if (c.minHeight > c.maxHeight) {
+        e.failAt("max_height", fmt::format("max_height {} is less than min_height {}", c.maxHeight, c.minHeight));
+    }
+    return c;
+}
+
+void readSplitOrRepeat(const XmlElement &e, Branch &branch) {
+    branch.kind = e.name() == "Split" ? Branch::Kind::Split : Branch::Kind::Repeat;
+    branch.axis = readAxis(e);
+    if (branch.kind == Branch::Kind::Repeat) {
+        if (!e.has("size")) e.fail("<Repeat> needs the attribute 'size'");
+        branch.repeatSize = readExtent(e, "size");
+        if (branch.repeatSize.unit == Extent::Unit::Relative) {
+            e.failAt("size", "a repeat's size is absolute ('2') or floating ('~2'), not relative");
+        }
+    }
+    e.checkLeaf();
+}
+
+// The rules of one file and of the files it includes, gathered into one RuleSet.
+class RuleSetReader {
+  public:
+    RuleSetReader(const IsModelName &isModel, const RuleFileLimits &limits) : isModel_(isModel), limits_(limits) {}
+
+    // `file` is the document's own path, for finding include cycles; empty for text.
+    void readTopLevel(const XmlDocument &doc, const std::filesystem::path &file) {
+        if (!file.empty()) openFiles_.push_back({std::filesystem::weakly_canonical(file), doc.name()});
+        readDocument(doc, file.parent_path(), 0);
+    }
+
+    RuleSet finish() &&;
+
+  private:
+    struct OpenFile {
+        std::filesystem::path canonical;
+        std::string name;  // as messages call it
+    };
+
+    void readDocument(const XmlDocument &doc, const std::filesystem::path &baseDirectory, int depth) {
+        XmlElement root(doc, doc.root());
+        if (root.name() != "Rulefile") root.fail(fmt::format("the root element is <{}>, expected <Rulefile>", root.name()));
+        std::string name = root.string("name");
+        if (depth == 0) set_.name = name;
+        // The schema references of seed 000's files are accepted and mean nothing to us.
+        root.string("xmlns:xsi", "");
+        root.string("xsi:noNamespaceSchemaLocation", "");
+        root.checkAllRead();
+        std::vector<XmlElement> includes;
+        for (pugi::xml_node child : childElements(doc.root())) {
+            XmlElement e(doc, child);
+            if (e.name() == "Rule") {
+                addRule(readRule(doc, child));
+            } else if (e.name() == "BuildingSettings") {
+                readSettings(doc, child);
+            } else if (e.name() == "Include") {
+                includes.push_back(e);
+            } else {
+                e.fail(fmt::format("unknown element <{}> in <Rulefile>", e.name()));
+            }
+        }
+        // After the file's own settings, so that the including file's settings win.
+        for (const XmlElement &include : includes) readInclude(include, baseDirectory, depth + 1);
+    }
+
+    void readInclude(const XmlElement &e, const std::filesystem::path &baseDirectory, int depth) {
+        std::filesystem::path file = e.string("file");
+        e.checkLeaf();
+        if (depth > limits_.maxIncludeDepth) {
+            e.fail(fmt::format("includes are nested more than {} deep", limits_.maxIncludeDepth));
+        }
+        if (file.is_relative()) file = baseDirectory / file;
+        std::filesystem::path canonical = std::filesystem::weakly_canonical(file);
+        auto open = std::find_if(openFiles_.begin(), openFiles_.end(),
+                                 [&](const OpenFile &f) { return f.canonical == canonical; });
+        if (open != openFiles_.end()) {
+            std::string cycle;
+            for (auto it = open; it != openFiles_.end(); ++it) cycle += fmt::format("{} → ", it->name);
+            e.failAt("file", fmt::format("the includes form a cycle: {}{}", cycle, file.string()));
+        }
+        XmlDocument doc = openInclude(e, file);
+        openFiles_.push_back({canonical, doc.name()});
+        readDocument(doc, file.parent_path(), depth);
+        openFiles_.pop_back();
+    }
+
+    static XmlDocument openInclude(const XmlElement &e, const std::filesystem::path &file) {
+        try {
+            return XmlDocument::fromFile(file);
+        } catch (const InputError &error) {
+            // A file that cannot be opened has no line of its own: point at the include.
+            if (error.loc().line == 0) e.failAt("file", error.what());
+            throw;
+        }
+    }
+
+    void readSettings(const XmlDocument &doc, pugi::xml_node node) {
+        for (auto &[name, value] : readBuildingSettings(XmlElement(doc, node))) set_.settings.try_emplace(name, value);
+    }
+
+    Rule readRule(const XmlDocument &doc, pugi::xml_node node) {
+        XmlElement e(doc, node);
+        e.checkAllRead();
+        Rule rule;
+        rule.loc = e.loc();
+        bool hasPredecessor = false, hasRules = false;
+        for (pugi::xml_node child : childElements(node)) {
+            XmlElement c(doc, child);
+            if (c.name() == "Predecessor" && !hasPredecessor) {
+                c.checkLeaf();
+                rule.predecessor = symbolName(c);
+                hasPredecessor = true;
+            } else if (c.name() == "Rules" && !hasRules) {
+                c.checkAllRead();
+                rule.branches = readBranches(doc, child);
+                hasRules = true;
+            } else if (c.name() == "Predecessor" || c.name() == "Rules") {
+                c.fail(fmt::format("<Rule> holds a second <{}>", c.name()));
+            } else {
+                c.fail(fmt::format("unknown element <{}> in <Rule>", c.name()));
+            }
+        }
+        if (!hasPredecessor) e.fail("<Rule> needs a <Predecessor>");
+        if (rule.branches.empty()) e.fail(fmt::format("rule '{}' has no <Probability> branch", rule.predecessor));
+        normaliseProbabilities(rule);
+        return rule;
+    }
+
+    std::vector<Branch> readBranches(const XmlDocument &doc, pugi::xml_node node) {
+        std::vector<Branch> branches;
+        for (pugi::xml_node child : childElements(node)) {
+            XmlElement c(doc, child);
+            if (c.name() != "Probability") c.fail(fmt::format("unknown element <{}> in <Rules>", c.name()));
+            branches.push_back(readBranch(doc, child));
+        }
+        return branches;
+    }
+
+    Branch readBranch(const XmlDocument &doc, pugi::xml_node node) {
+        XmlElement e(doc, node);
+        Branch branch;
+        branch.loc = e.loc();
+        branch.probability = readProbability(e);
+        branch.condition = readCondition(e);
+        e.checkAllRead();
+        for (pugi::xml_node child : childElements(node)) {
+            XmlElement c(doc, child);
+            if (c.name() == "Split" || c.name() == "Repeat") {
+                if (branch.kind != Branch::Kind::Substitution || !branch.successors.empty()) {
+                    c.fail(fmt::format("<{}> can only be the first element of <Probability>", c.name()));
+                }
+                readSplitOrRepeat(c, branch);
+            } else if (c.name() == "Symbol") {
+                branch.successors.push_back(readSuccessor(c, branch.kind));
+            } else {
+                c.fail(fmt::format("unknown element <{}> in <Probability>", c.name()));
+            }
+        }
+        if (branch.successors.empty()) e.fail("the branch has no <Symbol>");
+        return branch;
+    }
+
+    Successor readSuccessor(const XmlElement &e, Branch::Kind kind) {
+        Successor s;
+        s.name = symbolName(e);
+        s.loc = e.loc();
+        if (e.has("size")) {
+            Extent size = readExtent(e, "size");
+            if (size.unit == Extent::Unit::Floating) {
+                e.failAt("size", "a floating size ('~') is for <Repeat>, not <Symbol>");
+            }
+            if (kind == Branch::Kind::Split) {
+                s.size = size;
+            } else {
+                warn(e.attributeLoc("size"), "'size' has no effect outside a split; it is ignored");
+            }
+        }
+        s.property = trimmedXmlText(e.string("property", ""));
+        if (e.has("texture")) s.texture = texturePath(trimmedXmlText(e.string("texture")));
+        s.scale = e.vec3("scale", s.scale);
+        s.translate = e.vec3("translate", s.translate);
+        s.uv = readUv(e);
+        s.zScale = readZScale(e);
+        e.checkLeaf();
+        return s;
+    }
+
+    // Branches are drawn by their share of the sum, so the derivation never sees the file's
+    // rounding (3 × 0.333333); a sum that is clearly not 1 is a slip worth a warning.
+    void normaliseProbabilities(Rule &rule) {
+        float sum = 0;
+        for (const Branch &b : rule.branches) sum += b.probability;
+        if (sum == 0) throw InputError(rule.loc, fmt::format("the probabilities of rule '{}' are all 0", rule.predecessor));
+        if (std::abs(sum - 1) > kProbabilitySumTolerance) {
+            warn(rule.loc, fmt::format("the probabilities of rule '{}' sum to {}, not 1; they are scaled to sum to 1",
+                                       rule.predecessor, sum));
+        }
+        for (Branch &b : rule.branches) b.probability /= sum;
+    }
+
+    void addRule(Rule rule) {
+        auto [it, added] = set_.ruleIndex.try_emplace(rule.predecessor, uint32_t(set_.rules.size()));
+        if (!added) {
+            throw InputError(rule.loc, fmt::format("rule '{}' is defined twice: first at {}", rule.predecessor,
+                                                   set_.rules[it->second].loc.toString()));
+        }
+        set_.rules.push_back(std::move(rule));
+    }
+
+    void warn(const FileLoc &loc, const std::string &message) {
+        set_.warnings.push_back(fmt::format("{}: {}", loc.toString(), message));
+    }
+
+    const IsModelName &isModel_;
+    RuleFileLimits limits_;
+    RuleSet set_;
+    std::vector<OpenFile> openFiles_;  // the file being read and those that include it
+};
+
+// Which rules can derive into models alone, and, for those that cannot, why.
+class TerminationCheck {
+  public:
+    TerminationCheck(const RuleSet &set, const IsModelName &isModel)
+        : set_(set), isModel_(isModel), finishes_(set.rules.size(), false) {
+        findFinishingRules();
+    }
+
+    // Throws for the first rule, in file order, that cannot finish and lies on a cycle of
+    // such rules: every rule that cannot finish leads to one, and the cycle is the cause.
+    void check() const {
+        for (uint32_t i = 0; i < set_.rules.size(); ++i) {
+            if (finishes_[i]) continue;
+            std::vector<uint32_t> cycle = cycleThrough(i);
+            if (!cycle.empty()) throw InputError(set_.rules[i].loc, neverFinishes(set_.rules[i], cycle));
+        }
+    }
+
+  private:
+    // A fixed point: a model finishes, and a rule does once one of its branches has only
+    // successors that finish.
+    void findFinishingRules() {
+        bool changed = true;
+        while (changed) {
+            changed = false;
+            for (size_t i = 0; i < set_.rules.size(); ++i) {
+                if (finishes_[i]) continue;
+                finishes_[i] = std::any_of(set_.rules[i].branches.begin(), set_.rules[i].branches.end(),
+                                           [&](const Branch &b) { return allFinish(b); });
+                changed = changed || finishes_[i];
+            }
+        }
+    }
+
+    bool allFinish(const Branch &b) const {
+        return std::all_of(b.successors.begin(), b.successors.end(), [&](const Successor &s) { return finishes(s); });
+    }
+
+    bool finishes(const Successor &s) const {
+        if (isModel_(s.name)) return true;
+        auto it = set_.ruleIndex.find(s.name);
+        return it != set_.ruleIndex.end() && finishes_[it->second];
+    }
+
+    // The rules that rule i derives in any branch and that cannot finish.
+    std::vector<uint32_t> stuckSuccessors(uint32_t i) const {
+        std::vector<uint32_t> stuck;
+        for (const Branch &b : set_.rules[i].branches) {
+            for (const Successor &s : b.successors) {
+                if (!finishes(s)) stuck.push_back(set_.ruleIndex.at(s.name));
+            }
+        }
+        return stuck;
+    }
+
+    // The shortest path from rule `start` back to itself through rules that cannot finish,
+    // start included at both ends; empty if there is none.
+    std::vector<uint32_t> cycleThrough(uint32_t start) const {
+        constexpr uint32_t kUnseen = ~0u;
+        std::vector<uint32_t> previous(set_.rules.size(), kUnseen);
+        std::deque<uint32_t> queue{start};
+        while (!queue.empty()) {
+            uint32_t i = queue.front();
+            queue.pop_front();
+            for (uint32_t next : stuckSuccessors(i)) {
+                if (next == start) {
+                    std::vector<uint32_t> cycle{start};
+                    for (uint32_t k = i; k != start; k = previous[k]) cycle.push_back(k);
+                    cycle.push_back(start);
+                    std::reverse(cycle.begin(), cycle.end());
+                    return cycle;
+                }
+                if (previous[next] == kUnseen) {
+                    previous[next] = i;
+                    queue.push_back(next);
+                }
+            }
+        }
+        return {};
+    }
+
+    std::string neverFinishes(const Rule &rule, const std::vector<uint32_t> &cycle) const {
+        bool selfInEveryBranch = std::all_of(rule.branches.begin(), rule.branches.end(), [&](const Branch &b) {
+            return std::any_of(b.successors.begin(), b.successors.end(),
+                               [&](const Successor &s) { return s.name == rule.predecessor; });
+        });
+        if (selfInEveryBranch) {
+            return fmt::format("rule '{}' can never finish: every branch derives {} again", rule.predecessor,
+                               rule.predecessor);
+        }
+        std::string path = rule.predecessor;
+        for (size_t k = 1; k < cycle.size(); ++k) path += fmt::format(" → {}", set_.rules[cycle[k]].predecessor);
+        return fmt::format("rule '{}' can never finish: every branch derives a rule that cannot finish, round the "
+                           "cycle {}",
+                           rule.predecessor, path);
+    }
+
+    const RuleSet &set_;
+    const IsModelName &isModel_;
+    std::vector<bool> finishes_;
+};
+
+RuleSet RuleSetReader::finish() && {
+    for (const Rule &rule : set_.rules) {
+        for (const Branch &b : rule.branches) {
+            for (const Successor &s : b.successors) {
+                if (!set_.find(s.name) && !isModel_(s.name)) {
+                    throw InputError(s.loc, fmt::format("unknown symbol '{}': no rule derives it and it is not a model",
+                                                        s.name));
+                }
+            }
+        }
+    }
+    TerminationCheck(set_, isModel_).check();
+    return std::move(set_);
+}
+
+}  // namespace
+
+RuleSet readRuleFile(const std::filesystem::path &file, const IsModelName &isModel, const RuleFileLimits &limits) {
+    RuleSetReader reader(isModel, limits);
+    reader.readTopLevel(XmlDocument::fromFile(file), file);
+    return std::move(reader).finish();
+}
+
+RuleSet parseRuleFile(std::string xmlText, std::string name, const IsModelName &isModel,
+                      const RuleFileLimits &limits) {
+    RuleSetReader reader(isModel, limits);
+    reader.readTopLevel(XmlDocument::fromString(std::move(xmlText), std::move(name)), {});
+    return std::move(reader).finish();
+}
+
+}  // namespace veduta
