@@ -141,8 +141,9 @@ TEST(Derivation, FloatingRepeatTakesTheCountWhoseTileIsClosest) {
     auto out = f.derive("Row", {10, 3});
     ASSERT_EQ(out.size(), 5u);  // CGA's example: 10 m at ~2.1 → five tiles of 2 m
     EXPECT_FLOAT_EQ(out[0].size.x, 2);
-    EXPECT_EQ(f.derive("Row", {11.5f, 3}).size(), 5u);  // 2.3 is closer to 2.1 than 1.92
+    EXPECT_EQ(f.derive("Row", {11, 3}).size(), 5u);     // 2.2 is closer to 2.1 than 1.83
     EXPECT_EQ(f.derive("Row", {11.9f, 3}).size(), 6u);  // 1.98 is closer than 2.38
+    EXPECT_EQ(f.derive("Row", {1, 3}).size(), 1u);       // shorter than a tile: one
 }
 
 const char *kTiles = R"(<Rulefile name="t">

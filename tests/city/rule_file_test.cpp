@@ -232,7 +232,7 @@ TEST(RuleFile, BuildingSettingsKeepTheFirstDefinition) {
     const SettingValue &floor = set.settings.at("FloorHeight");
     EXPECT_EQ(floor.number, 3.5f);
     EXPECT_EQ(floor.loc.line, 2);
-    EXPECT_EQ(floor.loc.column, 19);
+    EXPECT_EQ(floor.loc.column, 33);  // the value, which a message about it points at
     const SettingValue &style = set.settings.at("Style");
     EXPECT_EQ(style.text, "Gruenderzeit");
     EXPECT_FALSE(style.number.has_value());
