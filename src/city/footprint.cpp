@@ -1,0 +1,145 @@
+#include "city/footprint.h"
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_2_algorithms.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace veduta {
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_2;
+using Segment = Kernel::Segment_2;
+
+// A constrained Delaunay triangulation whose vertices know their polygon index and whose faces
+// know whether they lie inside the polygon.
+using Cdt = CGAL::Constrained_Delaunay_triangulation_2<
+    Kernel, CGAL::Triangulation_data_structure_2<
+                CGAL::Triangulation_vertex_base_with_info_2<uint32_t, Kernel>,
+                CGAL::Constrained_triangulation_face_base_2<
+                    Kernel, CGAL::Triangulation_face_base_with_info_2<bool, Kernel>>>>;
+
+std::vector<Point> toCgal(std::span<const Vec2f> polygon) {
+    std::vector<Point> points;
+    points.reserve(polygon.size());
+    for (Vec2f p : polygon) points.emplace_back(p.x, p.y);
+    return points;
+}
+
+void checkPoints(const Footprint &footprint, const FileLoc &loc) {
+    const std::vector<Vec2f> &points = footprint.points;
+    if (points.size() < 3) throw InputError(loc, fmt::format("a footprint needs at least 3 points, not {}", points.size()));
+    for (size_t i = 0; i < points.size(); ++i) {
+        if (!std::isfinite(points[i].x) || !std::isfinite(points[i].y)) {
+            throw InputError(loc, fmt::format("footprint point {} is not a finite number", i + 1));
+        }
+        for (size_t j = 0; j < i; ++j) {
+            if (points[j].x == points[i].x && points[j].y == points[i].y) {
+                throw InputError(loc, fmt::format("footprint point {} repeats point {} ({} {})", i + 1, j + 1,
+                                                  points[i].x, points[i].y));
+            }
+        }
+    }
+}
+
+// Reverses the ring and keeps each street flag on its edge: old edge i (p_i → p_i+1) becomes
+// new edge n − 2 − i (mod n), running p_i+1 → p_i.
+void reverseFootprint(Footprint &footprint) {
+    std::reverse(footprint.points.begin(), footprint.points.end());
+    std::reverse(footprint.streetEdges.begin(), footprint.streetEdges.end());
+    std::rotate(footprint.streetEdges.begin(), footprint.streetEdges.begin() + 1, footprint.streetEdges.end());
+}
+
+// Faces the infinite face reaches without crossing the outline lie outside; the rest inside
+// (a simple polygon has no holes to count).
+void markInside(Cdt &cdt) {
+    for (Cdt::Face_handle f : cdt.all_face_handles()) f->info() = true;
+    cdt.infinite_face()->info() = false;
+    std::vector<Cdt::Face_handle> stack{cdt.infinite_face()};
+    while (!stack.empty()) {
+        Cdt::Face_handle f = stack.back();
+        stack.pop_back();
+        for (int i = 0; i < 3; ++i) {
+            Cdt::Face_handle next = f->neighbor(i);
+            if (f->is_constrained(i) || !next->info()) continue;
+            next->info() = false;
+            stack.push_back(next);
+        }
+    }
+}
+
+}  // namespace
+
+float Footprint::edgeLength(size_t edge) const { return length(lift(edgeEnd(edge), 0) - lift(edgeStart(edge), 0)); }
+
+Vec3f Footprint::edgeDirection(size_t edge) const {
+    return normalize(lift(edgeEnd(edge), 0) - lift(edgeStart(edge), 0));
+}
+
+Vec3f Footprint::outwardNormal(size_t edge) const { return cross(edgeDirection(edge), Vec3f{0, 0, 1}); }
+
+bool isSimplePolygon(std::span<const Vec2f> polygon) {
+    std::vector<Point> points = toCgal(polygon);
+    return CGAL::is_simple_2(points.begin(), points.end(), Kernel());
+}
+
+bool isCounterClockwise(std::span<const Vec2f> polygon) {
+    std::vector<Point> points = toCgal(polygon);
+    return CGAL::orientation_2(points.begin(), points.end(), Kernel()) == CGAL::COUNTERCLOCKWISE;
+}
+
+bool liesInside(std::span<const Vec2f> inner, std::span<const Vec2f> outer) {
+    std::vector<Point> in = toCgal(inner), out = toCgal(outer);
+    for (const Point &p : in) {
+        if (CGAL::bounded_side_2(out.begin(), out.end(), p, Kernel()) != CGAL::ON_BOUNDED_SIDE) return false;
+    }
+    for (size_t i = 0; i < in.size(); ++i) {
+        Segment a(in[i], in[(i + 1) % in.size()]);
+        for (size_t j = 0; j < out.size(); ++j) {
+            if (CGAL::do_intersect(a, Segment(out[j], out[(j + 1) % out.size()]))) return false;
+        }
+    }
+    return true;
+}
+
+std::vector<uint32_t> triangulatePolygon(std::span<const Vec2f> polygon) {
+    Cdt cdt;
+    std::vector<Cdt::Vertex_handle> vertices;
+    for (size_t i = 0; i < polygon.size(); ++i) {
+        vertices.push_back(cdt.insert(Point(polygon[i].x, polygon[i].y)));
+        vertices.back()->info() = uint32_t(i);
+    }
+    for (size_t i = 0; i < vertices.size(); ++i) cdt.insert_constraint(vertices[i], vertices[(i + 1) % vertices.size()]);
+    markInside(cdt);
+    std::vector<uint32_t> indices;
+    for (Cdt::Face_handle f : cdt.finite_face_handles()) {
+        if (!f->info()) continue;
+        for (int k = 0; k < 3; ++k) indices.push_back(f->vertex(k)->info());
+    }
+    return indices;
+}
+
+std::optional<std::string> normaliseFootprint(Footprint &footprint, const FileLoc &loc) {
+    checkPoints(footprint, loc);
+    if (footprint.streetEdges.empty()) footprint.streetEdges.assign(footprint.points.size(), false);
+    if (footprint.streetEdges.size() != footprint.points.size()) {
+        throw InputError(loc, fmt::format("a footprint of {} edges has {} street flags", footprint.points.size(),
+                                          footprint.streetEdges.size()));
+    }
+    if (!isSimplePolygon(footprint.points)) {
+        throw InputError(loc, "the footprint's outline crosses or touches itself (or has no area)");
+    }
+    if (isCounterClockwise(footprint.points)) return std::nullopt;
+    reverseFootprint(footprint);
+    return fmt::format("{}: the footprint runs clockwise; it was reversed to run counter-clockwise", loc.toString());
+}
+
+}  // namespace veduta

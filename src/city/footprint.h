@@ -1,0 +1,52 @@
+// A building's ground plan (seed 000's lot footprint, digest-000 §2.1, §11): the polygon that
+// start shapes and roofs are built on.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "core/vecmath.h"
+
+namespace veduta {
+
+// A building's ground plan: a simple polygon, counter-clockwise seen from above, in world x/y
+// metres, at ground height `base`; edge i runs from points[i] to points[(i+1) % n].
+struct Footprint {
+    std::vector<Vec2f> points;
+    std::vector<bool> streetEdges;  // one per edge; true where the edge faces a street
+    float base = 0;
+
+    size_t edgeCount() const { return points.size(); }
+    Vec2f edgeStart(size_t edge) const { return points[edge]; }
+    Vec2f edgeEnd(size_t edge) const { return points[(edge + 1) % points.size()]; }
+    float edgeLength(size_t edge) const;
+    // Horizontal unit vectors: along the edge, and away from the building (to the edge's right,
+    // since the ring runs counter-clockwise).
+    Vec3f edgeDirection(size_t edge) const;
+    Vec3f outwardNormal(size_t edge) const;
+};
+
+// A footprint point at height z.
+inline Vec3f lift(Vec2f p, float z) { return {p.x, p.y, z}; }
+
+// Checks a footprint from user input: ≥ 3 finite points, none repeated, simple (no edge
+// crosses, touches or runs back along another, so no collinear spikes and no zero area). A
+// clockwise one is reversed (with its street flags) and a warning "file:line:col: message"
+// returned. Empty street flags mean no street edges. Throws InputError(loc, …) on the rest.
+std::optional<std::string> normaliseFootprint(Footprint &footprint, const FileLoc &loc);
+
+// Polygon helpers on the same conventions (a closed ring of points, edge i from point i to
+// point i + 1), with CGAL's exact predicates.
+bool isSimplePolygon(std::span<const Vec2f> polygon);
+bool isCounterClockwise(std::span<const Vec2f> polygon);  // of a simple polygon
+// Whether simple polygon `inner` lies inside simple polygon `outer` without touching its outline.
+bool liesInside(std::span<const Vec2f> inner, std::span<const Vec2f> outer);
+// Triangles covering a simple counter-clockwise polygon: n − 2 of them, three indices into the
+// polygon each, counter-clockwise (CGAL's constrained Delaunay triangulation, so no new points).
+std::vector<uint32_t> triangulatePolygon(std::span<const Vec2f> polygon);
+
+}  // namespace veduta
