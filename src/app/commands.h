@@ -21,5 +21,6 @@ int runDiffProgram(int argc, char **argv);
 void addInfoCommand(CLI::App &app, int &exitCode);
 void addCubemapCommand(CLI::App &app, int &exitCode);
 void addMergeCommand(CLI::App &app, int &exitCode);
+void addExportCommand(CLI::App &app, int &exitCode);
 
 }  // namespace veduta

@@ -19,5 +19,6 @@ int main(int argc, char **argv) {
     veduta::addInfoCommand(app, exitCode);
     veduta::addCubemapCommand(app, exitCode);
     veduta::addMergeCommand(app, exitCode);
+    veduta::addExportCommand(app, exitCode);
     return veduta::runApp(app, argc, argv, exitCode);
 }
