@@ -23,5 +23,6 @@ void addCubemapCommand(CLI::App &app, int &exitCode);
 void addMergeCommand(CLI::App &app, int &exitCode);
 void addFacadeCommand(CLI::App &app, int &exitCode);
 void addBuildingCommand(CLI::App &app, int &exitCode);
+void addExportCommand(CLI::App &app, int &exitCode);
 
 }  // namespace veduta

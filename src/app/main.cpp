@@ -21,5 +21,6 @@ int main(int argc, char **argv) {
     veduta::addMergeCommand(app, exitCode);
     veduta::addFacadeCommand(app, exitCode);
     veduta::addBuildingCommand(app, exitCode);
+    veduta::addExportCommand(app, exitCode);
     return veduta::runApp(app, argc, argv, exitCode);
 }
