@@ -10,6 +10,7 @@
 #include "app/commands.h"
 #include "app/run_guarded.h"
 #include "app/scene_loading.h"
+#include "app/study_scene.h"
 #include "io/scene_export.h"
 #include "scene/build_scene.h"
 
@@ -19,12 +20,17 @@ namespace {
 
 struct ExportArgs {
     std::string scene;
+    StudyOptions building;  // with --rules: one building instead of a scene
+    BuildingOptions plan;
     std::string output;
     bool quiet = false;
 };
 
-// What is exported: the scene file built as `veduta render` builds it.
-RenderScene sceneToExport(const ExportArgs &args) { return buildRenderScene(loadSceneDescription(args.scene)); }
+// What is exported: the scene file built as `veduta render` builds it, or one building.
+RenderScene sceneToExport(const ExportArgs &args) {
+    if (args.building.rules.empty()) return buildSceneWithWarnings(loadSceneDescription(args.scene));
+    return buildSceneWithWarnings(buildingScene(args.building, args.plan));
+}
 
 void runExport(const ExportArgs &args) {
     auto start = std::chrono::steady_clock::now();
@@ -47,9 +53,15 @@ std::string checkExportFile(const std::string &text) {
 
 void addExportCommand(CLI::App &app, int &exitCode) {
     auto args = std::make_shared<ExportArgs>();
-    CLI::App *cmd = app.add_subcommand(
-        "export", "Write a scene's geometry and materials as OBJ (Z up, instances copied) or glTF (Y up, instanced)");
+    CLI::App *cmd = app.add_subcommand("export",
+                                       "Write a scene's, or with --rules one building's, geometry and materials as OBJ "
+                                       "(Z up, instances copied) or glTF (Y up, instanced)");
     addSceneArgument(*cmd, args->scene);
+    addStudyOptions(*cmd, args->building, true);
+    addFootprintOptions(*cmd, args->plan, false);
+    CLI::Option *rules = cmd->get_option("--rules");
+    cmd->get_option("--footprint")->needs(rules);
+    rules->needs("--footprint")->excludes("scene");
     cmd->add_option("-o,--output", args->output, "OBJ (with an .mtl), glTF (with a .bin) or GLB file to write")
         ->required()
         ->check(CLI::Validator(checkExportFile, "FILE.obj|.gltf|.glb"));

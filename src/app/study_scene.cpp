@@ -24,7 +24,7 @@ SettingsMap settingsFrom(const std::vector<std::string> &assignments) {
     return settings;
 }
 
-// The scene around the study: materials, ground, sun, sky, the group with its rules.
+// The scene around the study: materials, sky, the group with its rules.
 SceneDescription studyBase(const StudyOptions &options) {
     SceneDescription scene;
     scene.source = options.rules;
@@ -76,9 +76,9 @@ float fitDistance(float width, float height, float aspect) {
 
 }  // namespace
 
-void addStudyOptions(CLI::App &command, StudyOptions &options) {
-    command.add_option("RULEFILE", options.rules, "Rule file (seed 000's XML, docs/rules.md)")
-        ->required()
+void addStudyOptions(CLI::App &command, StudyOptions &options, bool rulesAsOption) {
+    command.add_option(rulesAsOption ? "--rules" : "RULEFILE", options.rules, "Rule file (seed 000's XML, docs/rules.md)")
+        ->required(!rulesAsOption)
         ->check(CLI::ExistingFile);
     command.add_option("--seed", options.seed, "Seed of the random choices [0]");
     command.add_option("--id", options.id, "Building id: with the seed, which branches the rules take [1]")
@@ -95,11 +95,11 @@ void addStudyOptions(CLI::App &command, StudyOptions &options) {
         ->check(CLI::ExistingFile);
 }
 
-void addFootprintOptions(CLI::App &command, BuildingOptions &options) {
+void addFootprintOptions(CLI::App &command, BuildingOptions &options, bool required) {
     command
         .add_option("--footprint", options.footprint,
                     "Ground plan: x y pairs in metres, e.g. --footprint 0 0 14 0 14 12 0 12 (either orientation)")
-        ->required()
+        ->required(required)
         ->expected(6, 2000);
     command.add_option("--street", options.street,
                        "Footprint edges on the street (edge i runs from point i to i+1) [none: the longest edge]");
@@ -124,7 +124,7 @@ SceneDescription facadeStudy(const StudyOptions &options, const std::string &sta
     return scene;
 }
 
-SceneDescription buildingStudy(const StudyOptions &options, const BuildingOptions &plan) {
+SceneDescription buildingScene(const StudyOptions &options, const BuildingOptions &plan) {
     SceneDescription scene = studyBase(options);
     const std::vector<float> &xy = plan.footprint;
     if (xy.size() % 2 != 0)
@@ -141,6 +141,12 @@ SceneDescription buildingStudy(const StudyOptions &options, const BuildingOption
         building.streetEdges.push_back(edge);
     }
     scene.buildingGroups[0].buildings.push_back(building);
+    return scene;
+}
+
+SceneDescription buildingStudy(const StudyOptions &options, const BuildingOptions &plan) {
+    SceneDescription scene = buildingScene(options, plan);
+    const BuildingDesc &building = scene.buildingGroups[0].buildings[0];
 
     // Frame the building from the front (the first street edge, else the longest), turned 35°.
     const auto &p = building.footprint;
@@ -165,8 +171,8 @@ SceneDescription buildingStudy(const StudyOptions &options, const BuildingOption
     Vec3f towards = normalize(outward * std::cos(turn) - along * std::sin(turn) + Vec3f(0, 0, 0.45f));
     float height = 20;  // about a Gründerzeit building with its roof
     float aspect = 16.0f / 10;
-    centroid.z = height * 0.45f;
-    scene.camera = frame(centroid, towards, fitDistance(extent * 1.1f, height, aspect) * 1.1f, aspect);
+    centroid.z = height * 0.4f;
+    scene.camera = frame(centroid, towards, fitDistance(extent * 1.1f, height, aspect) * 1.4f, aspect);
     Vec3f sunFrom = normalize(outward * std::cos(-0.8f) - along * std::sin(-0.8f));
     float azimuth = std::atan2(sunFrom.x, sunFrom.y) * 180 / 3.14159265f;
     scene.sun.direction = Sun::directionFromAzimuthElevation(azimuth, 38);

@@ -25,12 +25,15 @@ struct BuildingOptions {
     std::vector<uint32_t> street;  // street edges
 };
 
-// RULEFILE, --seed, --id, --set, --materials.
-void addStudyOptions(CLI::App &command, StudyOptions &options);
-// --footprint, --street.
-void addFootprintOptions(CLI::App &command, BuildingOptions &options);
+// RULEFILE (or, with `asOption`, --rules RULEFILE), --seed, --id, --set, --materials.
+void addStudyOptions(CLI::App &command, StudyOptions &options, bool rulesAsOption = false);
+// --footprint (required unless told otherwise), --street.
+void addFootprintOptions(CLI::App &command, BuildingOptions &options, bool required = true);
 
 SceneDescription facadeStudy(const StudyOptions &options, const std::string &start, float width, float height);
+// The building alone: its rules, settings and materials, no ground, camera or sun.
+SceneDescription buildingScene(const StudyOptions &options, const BuildingOptions &building);
+// The building with a ground, a sun from the front left and a camera framing it.
 SceneDescription buildingStudy(const StudyOptions &options, const BuildingOptions &building);
 
 }  // namespace veduta
