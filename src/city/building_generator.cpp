@@ -118,7 +118,7 @@ BuildingStats BuildingGenerator::generate(const BuildingSpec &spec, std::vector<
         emitFacade(building, start, perimeterAt[start.edge], baked, stats, warnings);
     addRoof(spec, spec.footprint.base + building.heights.building, building.heights.roof, building.materials, baked);
     stats.bakedTriangles = baked.triangleCount();
-    builder_.addMesh(baked, Transform{}, spec.objectId, spec.id);
+    builder_.addWorldMesh(std::move(baked), spec.objectId, spec.id);
     return stats;
 }
 
@@ -129,7 +129,7 @@ BuildingStats BuildingGenerator::generateFacade(const FacadeSpec &spec, std::vec
     Mesh baked;
     emitFacade(building, start, 0, baked, stats, warnings);
     stats.bakedTriangles = baked.triangleCount();
-    if (baked.triangleCount() > 0) builder_.addMesh(baked, Transform{}, spec.objectId, spec.id);
+    if (baked.triangleCount() > 0) builder_.addWorldMesh(std::move(baked), spec.objectId, spec.id);
     return stats;
 }
 

@@ -36,6 +36,14 @@ void RenderSceneBuilder::addMesh(const Mesh &mesh, const Transform &objectToWorl
     scene_.meshes.push_back(std::move(baked));
 }
 
+void RenderSceneBuilder::addWorldMesh(Mesh mesh, ObjectId objectId, uint32_t buildingId) {
+    BakedMesh baked;
+    baked.mesh = std::move(mesh);
+    baked.objectId = objectId;
+    baked.buildingId = buildingId;
+    scene_.meshes.push_back(std::move(baked));
+}
+
 PrototypeId RenderSceneBuilder::addPrototype(Mesh mesh) {
     scene_.prototypes.push_back(std::move(mesh));
     return PrototypeId(scene_.prototypes.size() - 1);
@@ -60,6 +68,7 @@ RenderScene RenderSceneBuilder::build() && {
         }
     }
     std::vector<Instance> kept;
+    kept.reserve(scene_.instances.size());
     for (const Instance &instance : scene_.instances) {
         if (uses[instance.prototype] > 1) {
             Instance moved = instance;

@@ -65,6 +65,8 @@ class RenderSceneBuilder {
 
     void addMesh(const Mesh &mesh, const Transform &objectToWorld, ObjectId objectId, uint32_t buildingId = 0,
                  uint32_t instanceId = 0);
+    // A mesh already in world space, taken over without a copy.
+    void addWorldMesh(Mesh mesh, ObjectId objectId, uint32_t buildingId = 0);
     PrototypeId addPrototype(Mesh mesh);
     void addInstance(const Instance &instance);
 
