@@ -1,0 +1,98 @@
+// <buildings> in scene files: read, generated into the render scene, and their errors at
+// their place.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "scene/build_scene.h"
+
+namespace veduta {
+namespace {
+
+std::string rules() { return VEDUTA_SOURCE_DIR "/rules/gruenderzeit/FacadeStructure.xml"; }
+
+std::string scene(const std::string &buildings) {
+    return "<scene version=\"1\">\n<buildings rules=\"" + rules() + "\">\n" + buildings + "</buildings>\n</scene>\n";
+}
+
+RenderScene build(const std::string &xml, std::vector<std::string> *warnings = nullptr) {
+    return buildRenderScene(readSceneText(xml, "test.xml", VEDUTA_TEST_DATA), warnings);
+}
+
+std::string errorOf(const std::string &xml) {
+    try {
+        build(xml);
+    } catch (const InputError &e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+TEST(GenerateBuildings, BuildingsAndFacadesBecomeGeometryWithTheirIds) {
+    std::vector<std::string> warnings;
+    RenderScene s = build(scene("<building footprint=\"0 0 14 0 14 12 0 12\" street=\"0\"/>\n"
+                                "<building id=\"9\" footprint=\"14 0 30 0 30 12 14 12\" street=\"0\">"
+                                "<BuildingSettings><BuildingHeight>20</BuildingHeight></BuildingSettings></building>\n"
+                                "<facade start=\"FrontFacade\" width=\"10\" height=\"14\" translate=\"0 -30 0\"/>\n"),
+                          &warnings);
+    ASSERT_EQ(s.meshes.size(), 3u);
+    EXPECT_EQ(s.meshes[0].buildingId, 1u);  // unnumbered: the smallest free ids in file order
+    EXPECT_EQ(s.meshes[1].buildingId, 9u);
+    EXPECT_EQ(s.meshes[2].buildingId, 2u);
+    float top = 0;
+    for (const Vec3f &p : s.meshes[1].mesh.positions) top = std::max(top, p.z);
+    EXPECT_GT(top, 20 + 3);  // the lot's own height, with its roof
+    EXPECT_FALSE(s.instances.empty());
+    ASSERT_EQ(warnings.size(), 1u);  // seed 000's own rule whose probabilities sum to 0.5
+    EXPECT_NE(warnings[0].find("sum to 0.5"), std::string::npos) << warnings[0];
+}
+
+TEST(GenerateBuildings, AClockwiseFootprintIsTurnedRoundWithAWarning) {
+    std::vector<std::string> warnings;
+    build(scene("<building footprint=\"0 12 14 12 14 0 0 0\" street=\"2\"/>\n"), &warnings);
+    ASSERT_EQ(warnings.size(), 2u);
+    EXPECT_NE(warnings[1].find("test.xml:3:"), std::string::npos) << warnings[1];
+}
+
+TEST(GenerateBuildings, ErrorsAreAtTheirPlace) {
+    EXPECT_NE(errorOf(scene("<building footprint=\"0 0 14 0 14\"/>\n")).find("test.xml:3:22: a footprint is at least "
+                                                                               "three x y pairs"),
+              std::string::npos);
+    EXPECT_NE(errorOf(scene("<building footprint=\"0 0 14 0 14 12 0 12\" street=\"4\"/>\n"))
+                  .find("test.xml:3:51: street edges are numbers of footprint edges, 0 to 3"),
+              std::string::npos);
+    EXPECT_NE(errorOf(scene("<building footprint=\"0 0 14 0 0 12 14 12\"/>\n")).find("test.xml:3:"),
+              std::string::npos);  // crosses itself
+    EXPECT_NE(errorOf(scene("<building id=\"2\" footprint=\"0 0 1 0 1 1\"/>\n<building id=\"2\" "
+                            "footprint=\"0 0 1 0 1 1\"/>\n"))
+                  .find("test.xml:4:1: building id 2 is already used at test.xml:3:1"),
+              std::string::npos);
+    EXPECT_NE(errorOf(scene("<house/>\n")).find("test.xml:3:1: <house> cannot stand inside <buildings>"),
+              std::string::npos);
+    EXPECT_NE(errorOf(scene("<facade start=\"Nowhere\" width=\"5\" height=\"5\"/>\n"))
+                  .find("test.xml:3:1: the rule file has no rule for the start symbol 'Nowhere'"),
+              std::string::npos);
+    EXPECT_NE(errorOf(scene("<building footprint=\"0 0 9 0 9 9 0 9\"><BuildingSettings><FloorHeight>tall"
+                            "</FloorHeight></BuildingSettings></building>\n"))
+                  .find("setting FloorHeight must be a number, not 'tall'"),
+              std::string::npos);
+    std::string missing = "<scene version=\"1\"><buildings rules=\"nowhere.xml\"/></scene>";
+    EXPECT_NE(errorOf(missing).find("test.xml:1:38: cannot read the rule file"), std::string::npos) << errorOf(missing);
+}
+
+TEST(GenerateBuildings, ABadRuleFileIsAnErrorInThatFile) {
+    std::filesystem::path file = std::filesystem::temp_directory_path() / "veduta_bad_rules.xml";
+    std::ofstream(file) << "<Rulefile name=\"bad\">\n<Rule><Predecessor>FrontFacade</Predecessor><Rules>\n"
+                           "<Probability value=\"1\"><Symbol>Nothing</Symbol></Probability>\n</Rules></Rule>\n"
+                           "</Rulefile>\n";
+    std::string xml = "<scene version=\"1\"><buildings rules=\"" + file.string() +
+                      "\"><building footprint=\"0 0 9 0 9 9 0 9\"/></buildings></scene>";
+    std::string error = errorOf(xml);
+    EXPECT_NE(error.find(file.string() + ":3:"), std::string::npos) << error;
+    EXPECT_NE(error.find("unknown symbol 'Nothing'"), std::string::npos) << error;
+    std::filesystem::remove(file);
+}
+
+}  // namespace
+}  // namespace veduta
