@@ -9,6 +9,7 @@
 
 #include "city/building_settings.h"
 #include "city/derivation.h"
+#include "city/listing_2_2.h"
 #include "city/rule_file.h"
 
 namespace veduta {
@@ -57,41 +58,6 @@ struct Fixture {
 };
 
 Vec3f centre(const Terminal &t) { return t.shapeToFacade.applyPoint({0, 0, 0}); }
-
-const char *kListing22 = R"(<?xml version="1.0" encoding="utf-8"?>
-<Rulefile name="SimpleBuildingVar" xmlns:xsi="http://www.w3.org/2001/
-  XMLSchema-instance" xsi:noNamespaceSchemaLocation="Rules.xsd">
-  <Rule>
-    <Predecessor>FassadeStart</Predecessor>
-    <Rules>
-      <Probability value="0.5"><Symbol>Fassade1</Symbol></Probability>
-      <Probability value="0.5"><Symbol>Fassade2</Symbol></Probability>
-    </Rules>
-  </Rule>
-  <Rule>
-    <Predecessor>Fassade1</Predecessor>
-    <Rules>
-      <Probability value="1.0">
-        <Split axis="u"/>
-        <Symbol size="4" texture="Bodenetage.jpg">
-          Bodenetage.wrl
-        </Symbol>
-        <Symbol size="1r">WeitereEtagen</Symbol>
-      </Probability>
-    </Rules>
-  </Rule>
-  <Rule>
-    <Predecessor>Fassade2</Predecessor>
-    <Rules>
-      <Probability value="1.0">
-        <Repeat axis="r" size="1"/>
-        <Symbol property="FassadenelementBreite">
-          Fassadenelement
-        </Symbol>
-      </Probability>
-    </Rules>
-  </Rule>
-</Rulefile>)";
 
 TEST(Derivation, T1SplitGivesAbsoluteSizesFirstAndSharesTheRest) {
     Fixture f(kListing22);
@@ -338,7 +304,7 @@ TEST(Derivation, AMissingPropertyIsAnErrorAtTheSymbol) {
         f.derive("Fassade2", {10, 15});
         FAIL() << "no error";
     } catch (const InputError &e) {
-        EXPECT_NE(std::string(e.what()).find("test.xml:28:"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("test.xml:46:"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("FassadenelementBreite"), std::string::npos) << e.what();
     }
 }
