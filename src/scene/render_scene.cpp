@@ -67,21 +67,22 @@ RenderScene RenderSceneBuilder::build() && {
             shared.push_back(std::move(scene_.prototypes[p]));
         }
     }
-    std::vector<Instance> kept;
-    kept.reserve(scene_.instances.size());
-    for (const Instance &instance : scene_.instances) {
+    // The kept instances move to the front in place: a city's instance list is large, and a
+    // second one would double its memory for a moment.
+    size_t kept = 0;
+    for (size_t i = 0; i < scene_.instances.size(); ++i) {
+        Instance instance = scene_.instances[i];
         if (uses[instance.prototype] > 1) {
-            Instance moved = instance;
-            moved.prototype = newId[instance.prototype];
-            kept.push_back(moved);
+            instance.prototype = newId[instance.prototype];
+            scene_.instances[kept++] = instance;
             continue;
         }
         Mesh mesh = scene_.prototypes[instance.prototype];
         if (instance.materialOverride != kNoMaterial) mesh.setMaterial(instance.materialOverride);
         addMesh(mesh, instance.objectToWorld, instance.objectId, instance.buildingId, instance.instanceId);
     }
+    scene_.instances.resize(kept);
     scene_.prototypes = std::move(shared);
-    scene_.instances = std::move(kept);
     // Normal maps need tangents, and only they: other scenes keep the memory.
     bool normalMapped = std::any_of(scene_.materials.begin(), scene_.materials.end(),
                                     [](const Material &m) { return m.normalMap != kNoTexture; });
