@@ -14,9 +14,14 @@ SceneDescription loadSceneDescription(const std::string &path) {
 
 RenderScene buildSceneWithWarnings(const SceneDescription &description) {
     std::vector<std::string> warnings;
-    RenderScene scene = buildRenderScene(description, &warnings);
-    printWarnings(warnings);
-    return scene;
+    try {
+        RenderScene scene = buildRenderScene(description, &warnings);
+        printWarnings(warnings);
+        return scene;
+    } catch (...) {
+        printWarnings(warnings);  // they may say why
+        throw;
+    }
 }
 
 void printWarnings(const std::vector<std::string> &warnings) {

@@ -23,10 +23,10 @@ const AssetLibrary &AssetLibrary::builtIn() {
     return library;
 }
 
-std::optional<uint32_t> AssetLibrary::find(std::string_view symbol) const {
+std::optional<uint32_t> AssetLibrary::find(std::string_view name) const {
     constexpr std::string_view kModelSuffix = ".wrl";
-    if (symbol.ends_with(kModelSuffix)) symbol.remove_suffix(kModelSuffix.size());
-    auto it = index_.find(symbol);
+    if (name.ends_with(kModelSuffix)) name.remove_suffix(kModelSuffix.size());
+    auto it = index_.find(name);
     if (it == index_.end()) return std::nullopt;
     return it->second;
 }

@@ -53,11 +53,17 @@ class AssetLibrary {
     // Generated on first use, then shared by every caller and thread.
     static const AssetLibrary &builtIn();
 
-    // The asset a terminal symbol names, with or without its ".wrl".
-    std::optional<uint32_t> find(std::string_view symbol) const;
+    // The asset a name means, with or without its ".wrl".
+    std::optional<uint32_t> find(std::string_view name) const;
+    // The asset a rule file's terminal symbol names: in seed 000's rules a terminal is a model's
+    // name with ".wrl" (L418); without it the name is a rule's (the thesis has a rule
+    // `Entrance1` that places the model `Entrance1.wrl`).
+    std::optional<uint32_t> findTerminal(std::string_view symbol) const {
+        return symbol.ends_with(".wrl") ? find(symbol) : std::nullopt;
+    }
+    bool isModelName(std::string_view symbol) const { return findTerminal(symbol).has_value(); }
     const Asset &operator[](uint32_t index) const { return assets_[index]; }
     size_t size() const { return assets_.size(); }
-    bool isModelName(std::string_view symbol) const { return find(symbol).has_value(); }
 
   private:
     AssetLibrary();

@@ -1,6 +1,9 @@
 #include "city/building_generator.h"
 
 #include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
 
 #include "city/asset_fitting.h"
 #include "city/roofs.h"
@@ -17,7 +20,12 @@ size_t BuildingGenerator::PrototypeKeyHash::operator()(const PrototypeKey &key) 
 
 BuildingGenerator::BuildingGenerator(const Grammar &grammar, const AssetLibrary &assets, RenderSceneBuilder &builder,
                                      uint32_t seed, const DerivationLimits &limits)
-    : grammar_(grammar), assets_(assets), builder_(builder), palette_(builder), seed_(seed), limits_(limits) {}
+    : grammar_(grammar), assets_(assets), builder_(builder), palette_(builder), seed_(seed), limits_(limits),
+      plainWall_(*assets.find("Wall0")) {
+    for (size_t a = 0; a < assets.size(); ++a)
+        if (assets[uint32_t(a)].surfaces.size() > kMaxSurfaces)
+            throw std::logic_error(fmt::format("the model {} has more surfaces than a prototype key holds", assets[uint32_t(a)].name));
+}
 
 PrototypeId BuildingGenerator::prototypeFor(const PrototypeKey &key) {
     auto it = prototypes_.find(key);
@@ -33,7 +41,7 @@ BuildingGenerator::PrototypeKey BuildingGenerator::keyFor(const Terminal &termin
     const Asset &model = assets_[terminal.model];
     PrototypeKey key;
     key.model = terminal.model;
-    for (size_t s = 0; s < model.surfaces.size() && s < kMaxSurfaces; ++s)
+    for (size_t s = 0; s < model.surfaces.size(); ++s)
         key.materials[s] = materials[model.surfaces[s]];
     if (terminal.texture) {
         auto [it, added] = textureChoices_.try_emplace(terminal.texture);
@@ -63,7 +71,9 @@ void BuildingGenerator::addWallPiece(const Asset &model, const Transform &modelT
 void BuildingGenerator::addRoof(const BuildingSpec &building, float eaves, float roofHeight,
                                 const MaterialSet &materials, Mesh &baked) const {
     Mesh roof;
-    if (chooseRoofKind(building.footprint) == RoofKind::Gable) {
+    if (roofHeight <= 0) {
+        roof = mansardRoof(building.footprint, eaves, 0, 0).mesh;  // flat
+    } else if (chooseRoofKind(building.footprint) == RoofKind::Gable) {
         roof = gableRoof(building.footprint, eaves, roofHeight);
     } else {
         float inset = building.settings.number("RoofInset").value_or(1.5f);
@@ -72,6 +82,17 @@ void BuildingGenerator::addRoof(const BuildingSpec &building, float eaves, float
     for (MaterialId &m : roof.triangleMaterials)
         m = m == RoofGableWall ? materials[MaterialCategory::Wall] : materials[MaterialCategory::Roof];
     baked.append(roof, Transform{});
+}
+
+// The mesh a building's walls and roof are collected in: one buffer reused from building to
+// building (welding copies it out without spare room), so that it does not grow afresh each time.
+Mesh &BuildingGenerator::startBakedMesh() {
+    for (auto *v : {&baked_.positions, &baked_.normals, &baked_.tangents}) v->clear();
+    baked_.uvs.clear();
+    baked_.bitangentSigns.clear();
+    baked_.indices.clear();
+    baked_.triangleMaterials.clear();
+    return baked_;
 }
 
 BuildingGenerator::BuildingContext BuildingGenerator::contextFor(uint32_t id, ObjectId objectId,
@@ -83,8 +104,21 @@ BuildingGenerator::BuildingContext BuildingGenerator::contextFor(uint32_t id, Ob
 void BuildingGenerator::emitFacade(const BuildingContext &building, const StartShape &start, float alongPerimeter,
                                    Mesh &baked, BuildingStats &stats, std::vector<std::string> &warnings) {
     terminals_.clear();
-    deriveFacade(grammar_, start.symbol, {start.width, start.height}, building.properties, {seed_, building.id},
-                 terminals_, warnings, limits_);
+    if (grammar_.findRule(start.symbol)) {
+        deriveFacade(grammar_, start.symbol, {start.width, start.height}, building.properties, {seed_, building.id},
+                     terminals_, warnings, limits_);
+    } else {
+        // A rule set made for one kind of facade still builds whole buildings: the walls it has
+        // no rule for are plain.
+        const std::vector<Rule> &rules = grammar_.rules().rules;
+        warnings.push_back(fmt::format("{}: the rule file has no rule for '{}'; those walls are plain",
+                                       rules.empty() ? grammar_.rules().name : rules.front().loc.file, start.symbol));
+        Terminal wall;
+        wall.model = plainWall_;
+        wall.shapeToFacade = Transform::translate({start.width / 2, start.height / 2, 0});
+        wall.size = {start.width, start.height};
+        terminals_.push_back(wall);
+    }
     stats.terminals += terminals_.size();
     for (const Terminal &terminal : terminals_) {
         const Asset &model = assets_[terminal.model];
@@ -106,19 +140,13 @@ void BuildingGenerator::emitFacade(const BuildingContext &building, const StartS
 
 BuildingStats BuildingGenerator::generate(const BuildingSpec &spec, std::vector<std::string> &warnings) {
     BuildingContext building = contextFor(spec.id, spec.objectId, spec.settings);
-    const std::vector<Vec2f> &points = spec.footprint.points;
-    std::vector<float> perimeterAt(points.size() + 1, 0.0f);
-    for (size_t i = 0; i < points.size(); ++i) {
-        const Vec2f &a = points[i], &b = points[(i + 1) % points.size()];
-        perimeterAt[i + 1] = perimeterAt[i] + std::hypot(b.x - a.x, b.y - a.y);
-    }
     BuildingStats stats;
-    Mesh baked;
+    Mesh &baked = startBakedMesh();
     for (const StartShape &start : makeStartShapes(spec.footprint, building.heights.building))
-        emitFacade(building, start, perimeterAt[start.edge], baked, stats, warnings);
-    addRoof(spec, spec.footprint.base + building.heights.building, building.heights.roof, building.materials, baked);
+        emitFacade(building, start, spec.footprint.perimeterBefore(start.edge), baked, stats, warnings);
+    addRoof(spec, building.heights.building, building.heights.roof, building.materials, baked);
     stats.bakedTriangles = baked.triangleCount();
-    builder_.addWorldMesh(std::move(baked), spec.objectId, spec.id);
+    builder_.addWorldMesh(weldVertices(baked), spec.objectId, spec.id);
     return stats;
 }
 
@@ -126,10 +154,10 @@ BuildingStats BuildingGenerator::generateFacade(const FacadeSpec &spec, std::vec
     BuildingContext building = contextFor(spec.id, spec.objectId, spec.settings);
     StartShape start{spec.startSymbol, 0, spec.width, spec.height, spec.facadeToWorld};
     BuildingStats stats;
-    Mesh baked;
+    Mesh &baked = startBakedMesh();
     emitFacade(building, start, 0, baked, stats, warnings);
     stats.bakedTriangles = baked.triangleCount();
-    if (baked.triangleCount() > 0) builder_.addWorldMesh(std::move(baked), spec.objectId, spec.id);
+    if (baked.triangleCount() > 0) builder_.addWorldMesh(weldVertices(baked), spec.objectId, spec.id);
     return stats;
 }
 

@@ -55,7 +55,7 @@ class BuildingGenerator {
     BuildingStats generateFacade(const FacadeSpec &facade, std::vector<std::string> &warnings);
 
   private:
-    static constexpr size_t kMaxSurfaces = 4;
+    static constexpr size_t kMaxSurfaces = 4;  // checked against the library when constructed
     struct PrototypeKey {
         uint32_t model = 0;
         std::array<MaterialId, kMaxSurfaces> materials{};
@@ -76,6 +76,7 @@ class BuildingGenerator {
     BuildingContext contextFor(uint32_t id, ObjectId objectId, const SettingsStack &settings) const;
     void emitFacade(const BuildingContext &building, const StartShape &start, float alongPerimeter, Mesh &baked,
                     BuildingStats &stats, std::vector<std::string> &warnings);
+    Mesh &startBakedMesh();
     PrototypeId prototypeFor(const PrototypeKey &key);
     PrototypeKey keyFor(const Terminal &terminal, const MaterialSet &materials);
     void addWallPiece(const Asset &model, const Transform &modelToFacade, const Transform &facadeToWorld,
@@ -89,9 +90,11 @@ class BuildingGenerator {
     MaterialPalette palette_;
     uint32_t seed_;
     DerivationLimits limits_;
+    uint32_t plainWall_;  // Wall0, for walls the rules have no start rule for
     std::unordered_map<PrototypeKey, PrototypeId, PrototypeKeyHash> prototypes_;
     std::unordered_map<const std::string *, MaterialPalette::TextureChoice> textureChoices_;
     std::vector<Terminal> terminals_;  // reused from building to building
+    Mesh baked_;                       // likewise
 };
 
 }  // namespace veduta

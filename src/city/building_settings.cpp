@@ -73,20 +73,30 @@ const SettingsMap &defaultBuildingSettings() {
 
 namespace {
 
-float randomised(const SettingsStack &settings, const std::string &name, uint32_t seed, uint32_t buildingId,
-                 uint32_t which) {
-    float base = settings.number(name).value_or(0);
-    float deviation = settings.number(name + "Var").value_or(0);
+// A setting that must be positive, or zero or more; an error at the setting when it is not.
+float checkedNumber(const SettingsStack &settings, const std::string &name, bool positive) {
+    float value = settings.number(name).value_or(0);
+    if (positive ? value > 0 : value >= 0) return value;
+    const SettingValue *given = settings.find(name);
+    throw InputError(given ? given->loc : FileLoc{},
+                     fmt::format("{} must be {}, not {}", name, positive ? "positive" : "zero or more", value));
+}
+
+float randomised(const SettingsStack &settings, const std::string &name, bool positive, uint32_t seed,
+                 uint32_t buildingId, uint32_t which) {
+    float base = checkedNumber(settings, name, positive);
+    float deviation = checkedNumber(settings, name + "Var", false);
     float u = bitsToUnitFloat(hashValues({seed, buildingId, 0x48454947u, which}));
+    // A deviation larger than the value must not turn a storey or a building upside down.
     return std::max(base + (2 * u - 1) * deviation, 0.1f * base);
 }
 
 }  // namespace
 
 BuildingHeights randomiseHeights(const SettingsStack &settings, uint32_t seed, uint32_t buildingId) {
-    return {randomised(settings, "BuildingHeight", seed, buildingId, 0),
-            randomised(settings, "FloorHeight", seed, buildingId, 1),
-            randomised(settings, "RoofHeight", seed, buildingId, 2)};
+    return {randomised(settings, "BuildingHeight", true, seed, buildingId, 0),
+            randomised(settings, "FloorHeight", true, seed, buildingId, 1),
+            randomised(settings, "RoofHeight", false, seed, buildingId, 2)};
 }
 
 BuildingProperties::BuildingProperties(const SettingsStack &settings, const BuildingHeights &heights)

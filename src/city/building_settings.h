@@ -43,7 +43,8 @@ const SettingsMap &defaultBuildingSettings();
 
 // One building's heights after randomisation: each is its setting plus a deviation drawn
 // uniformly from [-Var, +Var] (the thesis names no distribution), never below a tenth of the
-// setting.
+// setting. BuildingHeight and FloorHeight must be positive, RoofHeight (0: a flat roof) and the
+// deviations zero or more; InputError at the setting otherwise.
 struct BuildingHeights {
     float building = 15;  // the walls: eaves above the footprint's base
     float floor = 3;

@@ -1,6 +1,7 @@
 #include "city/derivation.h"
 
 #include <cmath>
+#include <stdexcept>
 #include <unordered_set>
 
 #include <fmt/format.h>
@@ -12,22 +13,20 @@ namespace veduta {
 Grammar::Grammar(const RuleSet &rules, const ModelIndex &modelIndex) : rules_(&rules) {
     targets_.resize(rules.rules.size());
     probabilities_.resize(rules.rules.size());
+    ruleKeys_.resize(rules.rules.size());
     for (uint32_t r = 0; r < rules.rules.size(); ++r) {
         const Rule &rule = rules.rules[r];
-        float sum = 0;
-        for (const Branch &branch : rule.branches) sum += branch.probability;
+        ruleKeys_[r] = hashString(rule.predecessor);
         for (const Branch &branch : rule.branches) {
-            probabilities_[r].push_back(sum > 0 ? branch.probability / sum : 1.0f / float(rule.branches.size()));
+            probabilities_[r].push_back(branch.probability);  // the reader has made them sum to 1
             auto &targets = targets_[r].emplace_back();
             for (const Successor &successor : branch.successors) {
                 if (auto ruleIndex = findRule(successor.name))
                     targets.push_back({false, *ruleIndex});
                 else if (auto model = modelIndex(successor.name))
                     targets.push_back({true, *model});
-                else
-                    throw InputError(successor.loc,
-                                     fmt::format("unknown symbol '{}': no rule derives it and it is not a model",
-                                                 successor.name));
+                else  // readRuleFile reports these at their place
+                    throw std::logic_error(fmt::format("the rule set was not checked: '{}' is unknown", successor.name));
             }
         }
     }
@@ -44,8 +43,10 @@ std::optional<uint32_t> Grammar::findRule(const std::string &predecessor) const 
 
 namespace {
 
-float branchVariate(const DerivationSeed &seed, uint32_t rule) {
-    return bitsToUnitFloat(hashValues({seed.seed, seed.buildingId, 0x52554c45u, rule}));
+// Keyed by the rule's name, not its place in the file: adding or moving a rule leaves the
+// other rules' choices as they were.
+float branchVariate(const DerivationSeed &seed, uint32_t ruleKey) {
+    return bitsToUnitFloat(hashValues({seed.seed, seed.buildingId, 0x52554c45u, ruleKey}));
 }
 
 // Picks by the cumulative probabilities of the eligible branches; kNone when none is eligible.
@@ -89,8 +90,8 @@ class Derivation {
     void deriveRule(uint32_t rule, const Shape &shape, int depth);
 
   private:
-    void deriveSuccessor(const Grammar::Target &target, const Successor &successor, const Shape &parent,
-                         Vec2f offset, Vec2f size, int depth);
+    void deriveSuccessor(uint32_t rule, const Grammar::Target &target, const Successor &successor,
+                         const Shape &parent, Vec2f offset, Vec2f size, int depth);
     void split(uint32_t rule, uint32_t branch, const Shape &shape, int depth);
     void repeat(uint32_t rule, uint32_t branch, const Shape &shape, int depth);
     float property(const Successor &successor) const;
@@ -130,7 +131,7 @@ void Derivation::deriveRule(uint32_t rule, const Shape &shape, int depth) {
     if (depth > limits_.maxDepth) failLimit(rule, fmt::format("goes deeper than {} rules", limits_.maxDepth));
     if (++shapes_ > limits_.maxShapes) failLimit(rule, fmt::format("makes more than {} shapes", limits_.maxShapes));
     const Rule &r = grammar_.rules().rules[rule];
-    uint32_t b = pickBranch(grammar_.probabilities(rule), branchVariate(seed_, rule), [&](uint32_t i) {
+    uint32_t b = pickBranch(grammar_.probabilities(rule), branchVariate(seed_, grammar_.ruleKey(rule)), [&](uint32_t i) {
         return r.branches[i].condition.holdsFor(shape.size.x, shape.size.y);
     });
     if (b == kNone) return;  // no branch fits this scope: the shape stays empty
@@ -138,7 +139,7 @@ void Derivation::deriveRule(uint32_t rule, const Shape &shape, int depth) {
     switch (branch.kind) {
     case Branch::Kind::Substitution:
         for (uint32_t s = 0; s < branch.successors.size(); ++s)
-            deriveSuccessor(grammar_.target(rule, b, s), branch.successors[s], shape, {0, 0}, shape.size, depth);
+            deriveSuccessor(rule, grammar_.target(rule, b, s), branch.successors[s], shape, {0, 0}, shape.size, depth);
         break;
     case Branch::Kind::Split: split(rule, b, shape, depth); break;
     case Branch::Kind::Repeat: repeat(rule, b, shape, depth); break;
@@ -147,8 +148,8 @@ void Derivation::deriveRule(uint32_t rule, const Shape &shape, int depth) {
 
 // Places a successor's scope at `offset` (of its centre from the parent's centre) with `size`,
 // applies its translate and scale, and derives it or emits it as a terminal.
-void Derivation::deriveSuccessor(const Grammar::Target &target, const Successor &successor, const Shape &parent,
-                                 Vec2f offset, Vec2f size, int depth) {
+void Derivation::deriveSuccessor(uint32_t rule, const Grammar::Target &target, const Successor &successor,
+                                 const Shape &parent, Vec2f offset, Vec2f size, int depth) {
     if (size.x <= 0 || size.y <= 0) return;
     Shape child;
     Vec3f translation = Vec3f(offset.x, offset.y, 0) + successor.translate;
@@ -158,6 +159,7 @@ void Derivation::deriveSuccessor(const Grammar::Target &target, const Successor 
     child.uv = successor.uv ? *successor.uv : parent.uv;
     child.zScale = successor.zScale != ZScale::NotSet ? successor.zScale : parent.zScale;
     if (target.isModel) {
+        if (++shapes_ > limits_.maxShapes) failLimit(rule, fmt::format("makes more than {} shapes", limits_.maxShapes));
         out_.push_back({target.index, child.toFacade, child.size, child.texture, child.uv, child.zScale});
         return;
     }
@@ -190,12 +192,13 @@ void Derivation::split(uint32_t rule, uint32_t b, const Shape &shape, int depth)
         along(size, branch.axis) = extent;
         along(offset, branch.axis) = -length / 2 + position + extent / 2;
         position += extent;
-        deriveSuccessor(grammar_.target(rule, b, s), successor, shape, offset, size, depth);
+        deriveSuccessor(rule, grammar_.target(rule, b, s), successor, shape, offset, size, depth);
     }
 }
 
 // count = ⌊L/g⌋ tiles of L/count (L434); a scope shorter than one tile holds one tile of its
 // own length. A floating size takes the count whose tile comes closest to g.
+// The ratio has been checked against the shape limit, so the counts fit an int.
 int repeatCount(float length, float tile, Extent::Unit unit) {
     float ratio = length / tile;
     if (unit != Extent::Unit::Floating) return std::max(1, int(std::floor(ratio + 1e-4f)));
@@ -210,6 +213,9 @@ void Derivation::repeat(uint32_t rule, uint32_t b, const Shape &shape, int depth
     float tile = branch.repeatSize.value * property(branch.successors.front());
     if (!(tile > 0))
         throw InputError(branch.loc, fmt::format("the repeat's tile size is {} m; it must be positive", tile));
+    if (length / tile > float(limits_.maxShapes))
+        throw InputError(branch.loc, fmt::format("a {:.3g} m tile repeated over {:.3g} m makes more than {} shapes",
+                                                 tile, length, limits_.maxShapes));
     int count = repeatCount(length, tile, branch.repeatSize.unit);
     float extent = length / float(count);
     for (int i = 0; i < count; ++i) {
@@ -217,14 +223,15 @@ void Derivation::repeat(uint32_t rule, uint32_t b, const Shape &shape, int depth
         along(size, branch.axis) = extent;
         along(offset, branch.axis) = -length / 2 + (float(i) + 0.5f) * extent;
         for (uint32_t s = 0; s < branch.successors.size(); ++s)
-            deriveSuccessor(grammar_.target(rule, b, s), branch.successors[s], shape, offset, size, depth);
+            deriveSuccessor(rule, grammar_.target(rule, b, s), branch.successors[s], shape, offset, size, depth);
     }
 }
 
 }  // namespace
 
-uint32_t chooseBranch(const std::vector<float> &probabilities, const DerivationSeed &seed, uint32_t rule) {
-    return pickBranch(probabilities, branchVariate(seed, rule), [](uint32_t) { return true; });
+uint32_t chooseBranch(const Grammar &grammar, const DerivationSeed &seed, uint32_t rule) {
+    return pickBranch(grammar.probabilities(rule), branchVariate(seed, grammar.ruleKey(rule)),
+                      [](uint32_t) { return true; });
 }
 
 void deriveFacade(const Grammar &grammar, const std::string &startSymbol, Vec2f size,

@@ -19,10 +19,12 @@ namespace veduta {
 // probabilities normalised, ready to derive many buildings from (shared between threads).
 class Grammar {
   public:
-    // `modelIndex` maps a terminal's name to its model; the rule set has been checked, so every
-    // successor names a rule or a model.
+    // `modelIndex` maps a terminal's name to its model; the rule set has been checked
+    // (readRuleFile), so every successor names a rule or a model. The grammar keeps a pointer
+    // to `rules`, which must outlive it.
     using ModelIndex = std::function<std::optional<uint32_t>(std::string_view)>;
     Grammar(const RuleSet &rules, const ModelIndex &modelIndex);
+    Grammar(RuleSet &&, const ModelIndex &) = delete;
 
     struct Target {
         bool isModel = false;
@@ -32,12 +34,15 @@ class Grammar {
     const Target &target(uint32_t rule, uint32_t branch, uint32_t successor) const;
     // The branch probabilities of a rule, summing to 1.
     const std::vector<float> &probabilities(uint32_t rule) const { return probabilities_[rule]; }
+    // A hash of the rule's name: what its random choices are keyed by.
+    uint32_t ruleKey(uint32_t rule) const { return ruleKeys_[rule]; }
     std::optional<uint32_t> findRule(const std::string &predecessor) const;
 
   private:
     const RuleSet *rules_;
     std::vector<std::vector<std::vector<Target>>> targets_;  // [rule][branch][successor]
     std::vector<std::vector<float>> probabilities_;
+    std::vector<uint32_t> ruleKeys_;
 };
 
 // A terminal shape: a model to fit into a scope.
@@ -55,7 +60,7 @@ struct Terminal {
 
 struct DerivationLimits {
     int maxDepth = 64;
-    size_t maxShapes = 200000;  // per start shape
+    size_t maxShapes = 200000;  // rules applied and terminals made, per start shape
 };
 
 // Where the random choices come from: a branch is a pure function of the seed, the building
@@ -73,7 +78,8 @@ void deriveFacade(const Grammar &grammar, const std::string &startSymbol, Vec2f 
                   const BuildingProperties &properties, const DerivationSeed &seed, std::vector<Terminal> &out,
                   std::vector<std::string> &warnings, const DerivationLimits &limits = {});
 
-// The branch a rule takes for a building: exposed for tests of the branch frequencies.
-uint32_t chooseBranch(const std::vector<float> &probabilities, const DerivationSeed &seed, uint32_t rule);
+// The branch a rule takes for a building when all its branches are eligible: exposed for tests
+// of the branch frequencies.
+uint32_t chooseBranch(const Grammar &grammar, const DerivationSeed &seed, uint32_t rule);
 
 }  // namespace veduta

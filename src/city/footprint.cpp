@@ -80,6 +80,12 @@ void markInside(Cdt &cdt) {
 
 float Footprint::edgeLength(size_t edge) const { return length(lift(edgeEnd(edge), 0) - lift(edgeStart(edge), 0)); }
 
+float Footprint::perimeterBefore(size_t edge) const {
+    float distance = 0;
+    for (size_t e = 0; e < edge; ++e) distance += edgeLength(e);
+    return distance;
+}
+
 Vec3f Footprint::edgeDirection(size_t edge) const {
     return normalize(lift(edgeEnd(edge), 0) - lift(edgeStart(edge), 0));
 }

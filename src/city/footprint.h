@@ -24,6 +24,9 @@ struct Footprint {
     Vec2f edgeStart(size_t edge) const { return points[edge]; }
     Vec2f edgeEnd(size_t edge) const { return points[(edge + 1) % points.size()]; }
     float edgeLength(size_t edge) const;
+    // Metres along the outline from point 0 to the start of `edge`: the u of the walls' texture
+    // there, so that it runs on around the corners (and up into the gables).
+    float perimeterBefore(size_t edge) const;
     // Horizontal unit vectors: along the edge, and away from the building (to the edge's right,
     // since the ring runs counter-clockwise).
     Vec3f edgeDirection(size_t edge) const;

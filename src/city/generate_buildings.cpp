@@ -1,6 +1,7 @@
 #include "city/generate_buildings.h"
 
 #include <filesystem>
+#include <unordered_set>
 
 #include <fmt/format.h>
 
@@ -22,15 +23,20 @@ Footprint footprintOf(const BuildingDesc &building, std::vector<std::string> &wa
     return footprint;
 }
 
-}  // namespace
+// The same rule warns in every building it is used in: each warning is passed on once.
+void appendOnce(std::vector<std::string> &warnings, std::vector<std::string> &out) {
+    std::unordered_set<std::string> seen(out.begin(), out.end());
+    for (std::string &w : warnings)
+        if (seen.insert(w).second) out.push_back(std::move(w));
+}
 
-void generateBuildings(const BuildingGroupDesc &group, RenderSceneBuilder &builder, std::vector<std::string> &warnings) {
+void generateGroup(const BuildingGroupDesc &group, RenderSceneBuilder &builder, std::vector<std::string> &warnings) {
     if (!std::filesystem::is_regular_file(group.rules))
         throw InputError(group.rulesLoc, fmt::format("cannot read the rule file {}", group.rules.string()));
     const AssetLibrary &assets = AssetLibrary::builtIn();
     RuleSet rules = readRuleFile(group.rules, [&](std::string_view name) { return assets.isModelName(name); });
     warnings.insert(warnings.end(), rules.warnings.begin(), rules.warnings.end());
-    Grammar grammar(rules, [&](std::string_view name) { return assets.find(name); });
+    Grammar grammar(rules, [&](std::string_view name) { return assets.findTerminal(name); });
     BuildingGenerator generator(grammar, assets, builder, group.seed);
     for (const BuildingDesc &desc : group.buildings) {
         BuildingSpec spec;
@@ -55,6 +61,19 @@ void generateBuildings(const BuildingGroupDesc &group, RenderSceneBuilder &build
             throw InputError(desc.loc, fmt::format("the rule file has no rule for the start symbol '{}'", desc.start));
         generator.generateFacade(spec, warnings);
     }
+}
+
+}  // namespace
+
+void generateBuildings(const BuildingGroupDesc &group, RenderSceneBuilder &builder, std::vector<std::string> &out) {
+    std::vector<std::string> warnings;
+    try {
+        generateGroup(group, builder, warnings);
+    } catch (const InputError &) {
+        appendOnce(warnings, out);  // they may say why
+        throw;
+    }
+    appendOnce(warnings, out);
 }
 
 }  // namespace veduta

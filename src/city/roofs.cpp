@@ -141,10 +141,13 @@ Mesh gableRoof(const Footprint &footprint, float eavesHeight, float roofHeight) 
     Mesh m;
     addSlope(m, {p[0], p[1], ridge2, ridge1});
     addSlope(m, {p[2], p[3], ridge1, ridge2});
-    // The gable ends carry on their facades' walls: the facade frame's right and up in metres.
+    // The gable ends carry on their facades' walls: metres along the perimeter and up, as the
+    // walls' texture runs (building_generator.h).
     for (size_t k : {size_t(1), size_t(3)}) {
         size_t edge = (street + k) % 4;
-        UvPlane wall{lift(footprint.edgeStart(edge), footprint.base), footprint.edgeDirection(edge), {0, 0, 1}};
+        Vec3f along = footprint.edgeDirection(edge);
+        UvPlane wall{lift(footprint.edgeStart(edge), footprint.base) - along * footprint.perimeterBefore(edge), along,
+                     {0, 0, 1}};
         addFace(m, {p[k], p[(k + 1) % 4], k == 1 ? ridge2 : ridge1}, wall, RoofGableWall);
     }
     return m;

@@ -235,6 +235,10 @@ class RuleSetReader {
             if (c.name() == "Predecessor" && !hasPredecessor) {
                 c.checkLeaf();
                 rule.predecessor = symbolName(c);
+                // A rule cannot take a model's name: which of the two a successor means would be
+                // anyone's guess.
+                if (isModel_(rule.predecessor))
+                    c.fail(fmt::format("'{}' is a model's name; a rule needs a name of its own", rule.predecessor));
                 hasPredecessor = true;
             } else if (c.name() == "Rules" && !hasRules) {
                 c.checkAllRead();
@@ -304,6 +308,10 @@ class RuleSetReader {
         s.property = trimmedXmlText(e.string("property", ""));
         if (e.has("texture")) s.texture = texturePath(trimmedXmlText(e.string("texture")));
         s.scale = e.vec3("scale", s.scale);
+        // A negative scale mirrors; a zero one would flatten the shape into nothing and leave its
+        // normals undefined.
+        if (std::abs(s.scale.x) < 1e-6f || std::abs(s.scale.y) < 1e-6f || std::abs(s.scale.z) < 1e-6f)
+            e.failAt("scale", "a scale of 0 flattens the shape to nothing; use a small number");
         s.translate = e.vec3("translate", s.translate);
         s.uv = readUv(e);
         s.zScale = readZScale(e);

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <initializer_list>
+#include <string_view>
 
 namespace veduta {
 
@@ -32,6 +33,13 @@ inline uint32_t hashValues(std::initializer_list<uint32_t> values) {
     uint32_t h = 0x9e3779b9u;
     for (uint32_t v : values) h = mix32(h ^ mix32(v + 0x632be5abu));
     return h;
+}
+
+// FNV-1a of a string: a stable key for things known by name (rules), the same on every run.
+inline uint32_t hashString(std::string_view text) {
+    uint32_t h = 0x811c9dc5u;
+    for (unsigned char c : text) h = (h ^ c) * 0x01000193u;
+    return mix32(h);
 }
 
 // Maps 32 random bits to a float in [0, 1); never returns 1.

@@ -1,6 +1,8 @@
 #include "scene/mesh.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 
 namespace veduta {
 
@@ -76,5 +78,65 @@ void Mesh::append(const Mesh &other, const Transform &transform) {
 }
 
 void Mesh::setMaterial(MaterialId material) { triangleMaterials.assign(triangleCount(), material); }
+
+namespace {
+
+// A vertex on a grid fine enough that only vertices meant to be one fall together.
+struct WeldKey {
+    std::array<int64_t, 3> position{};
+    std::array<int32_t, 3> normal{};
+    std::array<int32_t, 2> uv{};
+    auto operator<=>(const WeldKey &) const = default;
+};
+
+int64_t onGrid(float x, float step) { return int64_t(std::floor(double(x) / step + 0.5)); }
+
+WeldKey weldKey(const Mesh &m, size_t v, bool withNormals, bool withUvs) {
+    WeldKey key;
+    for (int k = 0; k < 3; ++k) key.position[k] = onGrid(m.positions[v][k], 1e-4f);
+    if (withNormals)
+        for (int k = 0; k < 3; ++k) key.normal[k] = int32_t(onGrid(m.normals[v][k], 1e-3f));
+    if (withUvs) key.uv = {int32_t(onGrid(m.uvs[v].x, 1e-4f)), int32_t(onGrid(m.uvs[v].y, 1e-4f))};
+    return key;
+}
+
+}  // namespace
+
+Mesh weldVertices(const Mesh &mesh) {
+    size_t count = mesh.positions.size();
+    bool withNormals = hasNormals(mesh), withUvs = mesh.uvs.size() == count && count > 0;
+    std::vector<WeldKey> keys(count);
+    std::vector<uint32_t> order(count), first(count), remap(count);
+    for (size_t v = 0; v < count; ++v) keys[v] = weldKey(mesh, v, withNormals, withUvs);
+    // Sorting by key, then by index, puts each group together with its first vertex in front.
+    for (size_t v = 0; v < count; ++v) order[v] = uint32_t(v);
+    std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+        auto c = keys[a] <=> keys[b];
+        return c != 0 ? c < 0 : a < b;
+    });
+    for (size_t i = 0; i < count; ++i)
+        first[order[i]] = i > 0 && keys[order[i]] == keys[order[i - 1]] ? first[order[i - 1]] : order[i];
+
+    Mesh welded;
+    size_t kept = 0;
+    for (size_t v = 0; v < count; ++v) kept += first[v] == v;
+    welded.positions.reserve(kept);
+    if (withNormals) welded.normals.reserve(kept);
+    if (withUvs) welded.uvs.reserve(kept);
+    for (size_t v = 0; v < count; ++v) {
+        if (first[v] != v) {
+            remap[v] = remap[first[v]];
+            continue;
+        }
+        remap[v] = uint32_t(welded.positions.size());
+        welded.positions.push_back(mesh.positions[v]);
+        if (withNormals) welded.normals.push_back(mesh.normals[v]);
+        if (withUvs) welded.uvs.push_back(mesh.uvs[v]);
+    }
+    welded.indices.reserve(mesh.indices.size());
+    for (uint32_t i : mesh.indices) welded.indices.push_back(remap[i]);
+    welded.triangleMaterials = mesh.triangleMaterials;
+    return welded;
+}
 
 }  // namespace veduta

@@ -32,4 +32,10 @@ struct Mesh {
     void setMaterial(MaterialId material);
 };
 
+// `mesh` with the vertices that agree in position (to 0.1 mm), normal and texture coordinates
+// merged, so that pieces laid edge to edge share their corners; the first of each group is
+// kept and the order of first appearance too. Without tangents (computeTangents on the
+// result); its storage has no spare room.
+Mesh weldVertices(const Mesh &mesh);
+
 }  // namespace veduta

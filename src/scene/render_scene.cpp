@@ -82,6 +82,7 @@ RenderScene RenderSceneBuilder::build() && {
         addMesh(mesh, instance.objectToWorld, instance.objectId, instance.buildingId, instance.instanceId);
     }
     scene_.instances.resize(kept);
+    scene_.instances.shrink_to_fit();
     scene_.prototypes = std::move(shared);
     // Normal maps need tangents, and only they: other scenes keep the memory.
     bool normalMapped = std::any_of(scene_.materials.begin(), scene_.materials.end(),

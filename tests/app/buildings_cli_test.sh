@@ -60,6 +60,12 @@ run facade "$work/negative.xml" -o "$work/negative.png"
 check "a negative size exits 1" rc_is 1
 check "it is named at its place" err_has "negative.xml:4:"
 
+sed 's/scale="1 x 1"//; s/Wall0.wrl/Nothing/' "$work/vectors.xml" >"$work/unknown.xml"
+run facade "$work/unknown.xml" -o "$work/unknown.png"
+check "an unknown symbol exits 1" rc_is 1
+check "it is named at its place" err_has "unknown.xml:4:"
+check "and said what it is" err_has "unknown symbol 'Nothing'"
+
 run building "$rules" --footprint 0 0 10 0 0 10 10 10 -o "$work/crossed.png"
 check "a footprint that crosses itself exits 1" rc_is 1
 check "no image for it" test ! -e "$work/crossed.png"

@@ -95,6 +95,8 @@ TEST(Assets, EveryModelIsFoundWithAndWithoutItsExtension) {
         EXPECT_EQ(bare, withExtension) << name;
         EXPECT_EQ(library[*bare].name, name);
         EXPECT_TRUE(library.isModelName(name + ".wrl"));
+        EXPECT_FALSE(library.isModelName(name)) << "a rule file's terminals end in .wrl";
+        EXPECT_EQ(library.findTerminal(name + ".wrl"), bare);
     }
 }
 

@@ -9,6 +9,7 @@
 #include "city/asset_fitting.h"
 #include "city/building_generator.h"
 #include "city/rule_file.h"
+#include "core/error.h"
 
 namespace veduta {
 namespace {
@@ -17,7 +18,7 @@ struct Gruenderzeit {
     const AssetLibrary &assets = AssetLibrary::builtIn();
     RuleSet rules = readRuleFile(VEDUTA_SOURCE_DIR "/rules/gruenderzeit/FacadeStructure.xml",
                                  [this](std::string_view n) { return assets.isModelName(n); });
-    Grammar grammar{rules, [this](std::string_view n) { return assets.find(n); }};
+    Grammar grammar{rules, [this](std::string_view n) { return assets.findTerminal(n); }};
 
     BuildingSpec building(uint32_t id, float width = 16, float depth = 14) const {
         BuildingSpec spec;
@@ -111,13 +112,36 @@ TEST(BuildingGenerator, ModelsAreInstancesOfSharedPrototypes) {
     EXPECT_EQ(buildings.size(), 20u);
 }
 
+bool sameInstances(const RenderScene &a, const RenderScene &b) {
+    if (a.instances.size() != b.instances.size()) return false;
+    for (size_t i = 0; i < a.instances.size(); ++i) {
+        const Instance &x = a.instances[i], &y = b.instances[i];
+        if (!(x.objectToWorld == y.objectToWorld) || x.prototype != y.prototype ||
+            x.materialOverride != y.materialOverride || x.objectId != y.objectId || x.buildingId != y.buildingId)
+            return false;
+    }
+    return true;
+}
+
+bool sameMeshes(const RenderScene &a, const RenderScene &b) {
+    if (a.meshes.size() != b.meshes.size()) return false;
+    for (size_t m = 0; m < a.meshes.size(); ++m) {
+        const Mesh &x = a.meshes[m].mesh, &y = b.meshes[m].mesh;
+        if (x.indices != y.indices || x.triangleMaterials != y.triangleMaterials ||
+            x.positions.size() != y.positions.size())
+            return false;
+        for (size_t v = 0; v < x.positions.size(); ++v)
+            if (!(x.positions[v] == y.positions[v]) || x.uvs[v].x != y.uvs[v].x || x.uvs[v].y != y.uvs[v].y)
+                return false;
+    }
+    return true;
+}
+
 TEST(BuildingGenerator, TheSameBuildingComesOutTheSameAndOthersDiffer) {
     auto a = gruenderzeit().generate({gruenderzeit().building(3)});
     auto b = gruenderzeit().generate({gruenderzeit().building(3)});
-    ASSERT_EQ(a.instances.size(), b.instances.size());
-    for (size_t i = 0; i < a.instances.size(); ++i)
-        ASSERT_EQ(a.instances[i].objectToWorld, b.instances[i].objectToWorld);
-    EXPECT_EQ(a.meshes[0].mesh.positions.size(), b.meshes[0].mesh.positions.size());
+    EXPECT_TRUE(sameInstances(a, b));
+    EXPECT_TRUE(sameMeshes(a, b));
 
     std::set<size_t> counts;
     std::set<MaterialId> walls;
@@ -129,8 +153,70 @@ TEST(BuildingGenerator, TheSameBuildingComesOutTheSameAndOthersDiffer) {
     EXPECT_GT(counts.size(), 3u);  // the buildings take different branches
     EXPECT_EQ(walls.size(), 3u);   // and pick their wall colour from the three
     auto reseeded = gruenderzeit().generate({gruenderzeit().building(3)}, 99);
-    EXPECT_NE(reseeded.instances.size() * 1000 + reseeded.meshes[0].mesh.positions.size(),
-              a.instances.size() * 1000 + a.meshes[0].mesh.positions.size());
+    EXPECT_FALSE(sameInstances(a, reseeded) && sameMeshes(a, reseeded));
+}
+
+TEST(BuildingGenerator, WallsAndRoofStandOnTheBase) {
+    BuildingSpec raised = gruenderzeit().building(5, 16, 14);
+    raised.footprint.base = 2.5f;
+    RenderScene scene = gruenderzeit().generate({raised});
+    const Mesh &mesh = scene.meshes.front().mesh;
+    float lowest = 1e9f, lowestRoof = 1e9f;
+    for (const Vec3f &p : mesh.positions) lowest = std::min(lowest, p.z);
+    // The roof covering is the one part whose material is none of the three walls' (ids 1-3).
+    for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+        if (mesh.triangleMaterials[t] >= 1 && mesh.triangleMaterials[t] <= 3) continue;
+        for (int k = 0; k < 3; ++k) lowestRoof = std::min(lowestRoof, mesh.positions[mesh.indices[3 * t + size_t(k)]].z);
+    }
+    EXPECT_NEAR(lowest, 2.5f, 1e-4f);
+    EXPECT_NEAR(lowestRoof, 2.5f + 15, 1e-4f);  // the eaves, on the walls, not above them
+}
+
+TEST(BuildingGenerator, HeightsAreChecked) {
+    const Gruenderzeit &g = gruenderzeit();
+    auto withSetting = [&](const char *name, float value) {
+        SettingsMap lot{{name, SettingValue{"", value, FileLoc{"lot.xml", 7, 3}}}};
+        BuildingSpec spec = g.building(1);
+        spec.settings = SettingsStack({&lot, &g.rules.settings, &defaultBuildingSettings()});
+        RenderSceneBuilder builder;
+        BuildingGenerator generator(g.grammar, g.assets, builder, 0);
+        std::vector<std::string> warnings;
+        generator.generate(spec, warnings);
+        return std::move(builder).build();
+    };
+    for (auto [name, value] : {std::pair{"BuildingHeight", 0.0f}, {"FloorHeight", -3.0f}, {"RoofHeight", -1.0f},
+                               {"BuildingHeightVar", -1.0f}}) {
+        try {
+            withSetting(name, value);
+            ADD_FAILURE() << name << " " << value << " was accepted";
+        } catch (const InputError &e) {
+            EXPECT_NE(std::string(e.what()).find("lot.xml:7:3: "), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+        }
+    }
+    // A roof height of 0 is a flat roof at the eaves.
+    RenderScene flat = withSetting("RoofHeight", 0);
+    float top = 0;
+    for (const Vec3f &p : flat.meshes.front().mesh.positions) top = std::max(top, p.z);
+    EXPECT_NEAR(top, 15, 0.6f);  // what stands out of the wall at the top, not a roof
+}
+
+TEST(BuildingGenerator, WallsWithoutAStartRuleArePlain) {
+    const AssetLibrary &assets = AssetLibrary::builtIn();
+    RuleSet rules = parseRuleFile(R"(<Rulefile name="fronts only"><Rule><Predecessor>FrontFacade</Predecessor>
+      <Rules><Probability value="1"><Symbol>Window1.wrl</Symbol></Probability></Rules></Rule></Rulefile>)",
+                                  "fronts.xml", [&](std::string_view n) { return assets.isModelName(n); });
+    Grammar grammar(rules, [&](std::string_view n) { return assets.findTerminal(n); });
+    RenderSceneBuilder builder;
+    BuildingGenerator generator(grammar, assets, builder, 0);
+    BuildingSpec spec = gruenderzeit().building(1);
+    spec.settings = SettingsStack({&defaultBuildingSettings()});
+    std::vector<std::string> warnings;
+    BuildingStats stats = generator.generate(spec, warnings);
+    EXPECT_EQ(stats.instances, 1u);  // the front's one window
+    EXPECT_EQ(stats.terminals, 4u);  // and three plain walls
+    ASSERT_EQ(warnings.size(), 3u);
+    EXPECT_EQ(warnings[0], "fronts.xml: the rule file has no rule for 'SideFacade'; those walls are plain");
 }
 
 TEST(BuildingGenerator, TheBuildingStandsOnItsFootprintUnderItsRoof) {

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <unistd.h>
+
 #include "scene/build_scene.h"
 
 namespace veduta {
@@ -48,6 +50,23 @@ TEST(GenerateBuildings, BuildingsAndFacadesBecomeGeometryWithTheirIds) {
     EXPECT_NE(warnings[0].find("sum to 0.5"), std::string::npos) << warnings[0];
 }
 
+TEST(GenerateBuildings, SettingsOfTheGroupComeBetweenTheBuildingsAndTheDefaults) {
+    // The defaults say 15 m walls and a 4 m roof; the group 12 m; the second building 18 m.
+    std::string xml = "<scene version=\"1\">\n<buildings rules=\"" + rules() +
+                      "\">\n<BuildingSettings><BuildingHeight>12</BuildingHeight></BuildingSettings>\n"
+                      "<building footprint=\"0 0 14 0 14 12 0 12\" street=\"0\"/>\n"
+                      "<building footprint=\"20 0 34 0 34 12 20 12\" street=\"0\"><BuildingSettings>"
+                      "<BuildingHeight>18</BuildingHeight></BuildingSettings></building>\n</buildings>\n</scene>\n";
+    RenderScene s = build(xml);
+    auto top = [&](size_t mesh) {
+        float z = 0;
+        for (const Vec3f &p : s.meshes[mesh].mesh.positions) z = std::max(z, p.z);
+        return z;
+    };
+    EXPECT_NEAR(top(0), 12 + 4, 1e-3);  // the ridge of the gable
+    EXPECT_NEAR(top(1), 18 + 4, 1e-3);
+}
+
 TEST(GenerateBuildings, AClockwiseFootprintIsTurnedRoundWithAWarning) {
     std::vector<std::string> warnings;
     build(scene("<building footprint=\"0 12 14 12 14 0 0 0\" street=\"2\"/>\n"), &warnings);
@@ -82,7 +101,8 @@ TEST(GenerateBuildings, ErrorsAreAtTheirPlace) {
 }
 
 TEST(GenerateBuildings, ABadRuleFileIsAnErrorInThatFile) {
-    std::filesystem::path file = std::filesystem::temp_directory_path() / "veduta_bad_rules.xml";
+    std::filesystem::path file =
+        std::filesystem::temp_directory_path() / ("veduta_bad_rules_" + std::to_string(::getpid()) + ".xml");
     std::ofstream(file) << "<Rulefile name=\"bad\">\n<Rule><Predecessor>FrontFacade</Predecessor><Rules>\n"
                            "<Probability value=\"1\"><Symbol>Nothing</Symbol></Probability>\n</Rules></Rule>\n"
                            "</Rulefile>\n";

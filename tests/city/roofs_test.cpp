@@ -112,12 +112,12 @@ TEST(Roofs, GableUvs) {
             EXPECT_NEAR(uvArea(m, t), area(m, t), 1e-3f) << "triangle " << t;
             continue;
         }
-        // The gables continue their walls' facade frames: u along the edge from its left end
-        // seen from outside, v the height above the base.
+        // The gables continue their walls' texture: u in metres along the perimeter from point
+        // 0 (the east wall starts 20 m along it, the west wall 52 m), v the height above the base.
         for (int k = 0; k < 3; ++k) {
             uint32_t v = m.indices[3 * t + size_t(k)];
             Vec3f p = m.positions[v];
-            float u = p.x == 20 ? p.y : 12 - p.y;  // east wall runs north, west wall south
+            float u = p.x == 20 ? 20 + p.y : 52 + 12 - p.y;  // east wall runs north, west wall south
             EXPECT_FLOAT_EQ(m.uvs[v].x, u);
             EXPECT_FLOAT_EQ(m.uvs[v].y, p.z);
         }
