@@ -23,7 +23,8 @@ class XmlElement;
 // a number or a string. A setting given twice is an error.
 SettingsMap readBuildingSettings(const XmlElement &element);
 
-// Layers looked up front to back: the first layer that defines a name wins.
+// Layers looked up front to back: the first layer that defines a name wins. The layers are
+// pointers: the maps must outlive the stack.
 class SettingsStack {
   public:
     SettingsStack() = default;
@@ -56,7 +57,9 @@ BuildingHeights randomiseHeights(const SettingsStack &, uint32_t seed, uint32_t 
 // FloorHeight and RoofHeight (and seed 000's Actual… names for them) give the randomised values.
 class BuildingProperties {
   public:
+    // Keeps a pointer to `settings`, which must outlive it.
     BuildingProperties(const SettingsStack &settings, const BuildingHeights &heights);
+    BuildingProperties(SettingsStack &&, const BuildingHeights &) = delete;
     std::optional<float> number(const std::string &name) const;
 
   private:
