@@ -58,7 +58,7 @@ Asset cylinder() {
     appendArc(circle, {0.5f, 0}, 0.5f, 0, 360 - 360.0f / 16, 15);
     AssetBuilder b;
     b.prism(circle, PrismAxis::Y, -0.5f, 0.5f, MaterialCategory::Reflection);
-    return std::move(b).finish("Cylinder", ModelType::NoType);
+    return std::move(b).finish("Cylinder", ModelType::Vertical);
 }
 
 }  // namespace

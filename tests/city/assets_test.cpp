@@ -42,7 +42,7 @@ const std::map<std::string, ModelType> kModels = {
     {"BalconyDoor2", ModelType::Door},
     {"gutterElement", ModelType::Horizontal},
     {"gutterEnd", ModelType::Horizontal},
-    {"Cylinder", ModelType::NoType},
+    {"Cylinder", ModelType::Vertical},
 };
 
 const Asset &asset(const std::string &name) {

@@ -219,6 +219,29 @@ TEST(BuildingGenerator, WallsWithoutAStartRuleArePlain) {
     EXPECT_EQ(warnings[0], "fronts.xml: the rule file has no rule for 'SideFacade'; those walls are plain");
 }
 
+TEST(BuildingGenerator, NoModelStandsFarOutOfItsWall) {
+    // Every branch of the rule set shows up in some of these buildings.
+    std::vector<BuildingSpec> street;
+    for (uint32_t id = 1; id <= 40; ++id) {
+        BuildingSpec spec = gruenderzeit().building(id);
+        for (Vec2f &p : spec.footprint.points) p.x += 30.0f * float(id);
+        street.push_back(spec);
+    }
+    RenderScene scene = gruenderzeit().generate(street);
+    for (const Instance &instance : scene.instances) {
+        const Mesh &model = scene.prototypes[instance.prototype];
+        float x0 = 30.0f * float(instance.buildingId);
+        for (const Vec3f &p : model.positions) {
+            Vec3f at = instance.objectToWorld.applyPoint(p);
+            // Balconies reach out some 1.5 m; nothing else comes near 2.5 m.
+            ASSERT_GT(at.x, x0 - 2.5f) << "building " << instance.buildingId;
+            ASSERT_LT(at.x, x0 + 16 + 2.5f) << "building " << instance.buildingId;
+            ASSERT_GT(at.y, -2.5f) << "building " << instance.buildingId;
+            ASSERT_LT(at.y, 14 + 2.5f) << "building " << instance.buildingId;
+        }
+    }
+}
+
 TEST(BuildingGenerator, TheBuildingStandsOnItsFootprintUnderItsRoof) {
     RenderScene scene = gruenderzeit().generate({gruenderzeit().building(5, 16, 14)});
     Vec3f lo(1e9f), hi(-1e9f);
