@@ -1,0 +1,215 @@
+#include "city/street_geometry.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <CGAL/Boolean_set_operations_2.h>
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Polygon_set_2.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+
+namespace veduta {
+
+namespace {
+
+// Exact constructions: the unions and differences of many overlapping ribbons must not fail.
+using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
+using Point = Kernel::Point_2;
+using Polygon = CGAL::Polygon_2<Kernel>;
+using PolygonWithHoles = CGAL::Polygon_with_holes_2<Kernel>;
+using PolygonSet = CGAL::Polygon_set_2<Kernel>;
+
+// Faces know how deeply they are nested in the constraints: odd depths lie inside the region.
+struct FaceInfo {
+    int nesting = -1;
+    bool inside() const { return nesting % 2 == 1; }
+};
+using Cdt = CGAL::Constrained_Delaunay_triangulation_2<
+    Kernel, CGAL::Triangulation_data_structure_2<
+                CGAL::Triangulation_vertex_base_2<Kernel>,
+                CGAL::Constrained_triangulation_face_base_2<Kernel,
+                                                            CGAL::Triangulation_face_base_with_info_2<FaceInfo, Kernel>>>>;
+
+constexpr int kNodeSides = 16;
+
+Polygon ribbon(Vec2f a, Vec2f b, float halfWidth) {
+    float dx = b.x - a.x, dy = b.y - a.y, length = std::hypot(dx, dy);
+    float nx = -dy / length * halfWidth, ny = dx / length * halfWidth;
+    Polygon p;
+    p.push_back(Point(a.x - nx, a.y - ny));
+    p.push_back(Point(b.x - nx, b.y - ny));
+    p.push_back(Point(b.x + nx, b.y + ny));
+    p.push_back(Point(a.x + nx, a.y + ny));
+    return p;
+}
+
+// A round joint at a node, so that streets meeting at any angle leave no notch.
+Polygon joint(Vec2f centre, float radius) {
+    Polygon p;
+    // The polygon circumscribes the circle, so that it covers the ribbons' corners.
+    float r = radius / std::cos(float(M_PI) / kNodeSides);
+    for (int k = 0; k < kNodeSides; ++k) {
+        float a = 2 * float(M_PI) * float(k) / kNodeSides;
+        p.push_back(Point(centre.x + r * std::cos(a), centre.y + r * std::sin(a)));
+    }
+    return p;
+}
+
+// The union of every street's ribbon and joint, each widened by `extra` on either side.
+PolygonSet streetArea(const StreetNetwork &network, float extra) {
+    PolygonSet area;
+    std::vector<float> jointRadius(network.nodes.size(), 0.0f);
+    for (const StreetNetwork::Street &s : network.streets) {
+        Vec2f a = network.nodes[s.from], b = network.nodes[s.to];
+        if (a.x == b.x && a.y == b.y) continue;
+        float half = s.width / 2 + extra;
+        area.join(ribbon(a, b, half));
+        jointRadius[s.from] = std::max(jointRadius[s.from], half);
+        jointRadius[s.to] = std::max(jointRadius[s.to], half);
+    }
+    for (size_t n = 0; n < network.nodes.size(); ++n)
+        if (jointRadius[n] > 0) area.join(joint(network.nodes[n], jointRadius[n]));
+    return area;
+}
+
+void markNesting(Cdt &cdt) {
+    for (Cdt::Face_handle f : cdt.all_face_handles()) f->info().nesting = -1;
+    std::vector<Cdt::Edge> border;
+    auto flood = [&](Cdt::Face_handle start, int depth) {
+        std::vector<Cdt::Face_handle> queue{start};
+        while (!queue.empty()) {
+            Cdt::Face_handle f = queue.back();
+            queue.pop_back();
+            if (f->info().nesting != -1) continue;
+            f->info().nesting = depth;
+            for (int i = 0; i < 3; ++i) {
+                Cdt::Face_handle n = f->neighbor(i);
+                if (n->info().nesting != -1) continue;
+                if (cdt.is_constrained(Cdt::Edge(f, i)))
+                    border.emplace_back(f, i);
+                else
+                    queue.push_back(n);
+            }
+        }
+    };
+    flood(cdt.infinite_face(), 0);
+    while (!border.empty()) {
+        Cdt::Edge e = border.back();
+        border.pop_back();
+        Cdt::Face_handle n = e.first->neighbor(e.second);
+        if (n->info().nesting == -1) flood(n, e.first->info().nesting + 1);
+    }
+}
+
+Vec3f lifted(const Point &p, float z) { return {float(CGAL::to_double(p.x())), float(CGAL::to_double(p.y())), z}; }
+
+// The region's triangles, facing up, at height z.
+void addRegion(Mesh &mesh, const PolygonSet &region, float z, StreetSurface surface) {
+    std::vector<PolygonWithHoles> parts;
+    region.polygons_with_holes(std::back_inserter(parts));
+    for (const PolygonWithHoles &part : parts) {
+        Cdt cdt;
+        auto constrain = [&](const Polygon &ring) {
+            for (auto e = ring.edges_begin(); e != ring.edges_end(); ++e) cdt.insert_constraint(e->source(), e->target());
+        };
+        constrain(part.outer_boundary());
+        for (const Polygon &hole : part.holes()) constrain(hole);
+        markNesting(cdt);
+        for (Cdt::Face_handle f : cdt.finite_face_handles()) {
+            if (!f->info().inside()) continue;
+            auto base = uint32_t(mesh.positions.size());
+            for (int k = 0; k < 3; ++k) {
+                Vec3f p = lifted(f->vertex(k)->point(), z);
+                mesh.positions.push_back(p);
+                mesh.normals.push_back({0, 0, 1});
+                mesh.uvs.push_back({p.x, p.y});
+            }
+            // CGAL's faces run counter-clockwise, seen from above.
+            mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2});
+            mesh.triangleMaterials.push_back(surface);
+        }
+    }
+}
+
+// Vertical quads along the carriageway's boundary from its surface up to the sidewalk's.
+void addKerbs(Mesh &mesh, const PolygonSet &carriageway, float low, float high) {
+    std::vector<PolygonWithHoles> parts;
+    carriageway.polygons_with_holes(std::back_inserter(parts));
+    auto ring = [&](const Polygon &polygon) {
+        for (auto e = polygon.edges_begin(); e != polygon.edges_end(); ++e) {
+            Vec3f a = lifted(e->source(), low), b = lifted(e->target(), low);
+            Vec3f along = b - a;
+            if (length(along) <= 0) continue;
+            // The region lies left of its boundary's edges (outer ring CCW, holes CW): the kerb
+            // faces left, into the road.
+            Vec3f inward = normalize(Vec3f(-along.y, along.x, 0));
+            auto base = uint32_t(mesh.positions.size());
+            float u0 = 0, u1 = length(along);
+            Vec3f corners[4] = {a, b, b + Vec3f(0, 0, high - low), a + Vec3f(0, 0, high - low)};
+            Vec2f uvs[4] = {{u0, 0}, {u1, 0}, {u1, high - low}, {u0, high - low}};
+            for (int k = 0; k < 4; ++k) {
+                mesh.positions.push_back(corners[k]);
+                mesh.normals.push_back(inward);
+                mesh.uvs.push_back(uvs[k]);
+            }
+            // Seen from the road (from `inward`), b is on the left of a: wind a, top-a, top-b, b.
+            mesh.indices.insert(mesh.indices.end(), {base, base + 3, base + 2, base, base + 2, base + 1});
+            mesh.triangleMaterials.insert(mesh.triangleMaterials.end(), {StreetKerb, StreetKerb});
+        }
+    };
+    for (const PolygonWithHoles &part : parts) {
+        ring(part.outer_boundary());
+        for (const Polygon &hole : part.holes()) ring(hole);
+    }
+}
+
+Polygon toPolygon(const std::vector<Vec2f> &ring) {
+    Polygon p;
+    for (Vec2f v : ring) p.push_back(Point(v.x, v.y));
+    return p;
+}
+
+}  // namespace
+
+std::vector<BuildableArea> buildableAreas(const std::vector<Vec2f> &block, const StreetNetwork &network,
+                                          const StreetStyle &style) {
+    PolygonSet streets = streetArea(network, style.sidewalkWidth);
+    PolygonSet left(toPolygon(block));
+    left.difference(streets);
+    std::vector<PolygonWithHoles> parts;
+    left.polygons_with_holes(std::back_inserter(parts));
+    std::vector<BuildableArea> areas;
+    for (const PolygonWithHoles &part : parts) {
+        BuildableArea area;
+        const Polygon &outer = part.outer_boundary();
+        for (auto v = outer.vertices_begin(); v != outer.vertices_end(); ++v) {
+            Vec3f p = lifted(*v, 0);
+            area.outline.push_back({p.x, p.y});
+        }
+        size_t n = area.outline.size();
+        for (size_t i = 0; i < n; ++i) {
+            Vec2f a = area.outline[i], b = area.outline[(i + 1) % n];
+            float dx = b.x - a.x, dy = b.y - a.y, length = std::hypot(dx, dy);
+            // Half a metre outward from the edge's middle: on a sidewalk if the edge faces a street.
+            Point probe((a.x + b.x) / 2 + dy / length * 0.5f, (a.y + b.y) / 2 - dx / length * 0.5f);
+            area.streetEdges.push_back(streets.oriented_side(probe) != CGAL::ON_NEGATIVE_SIDE);
+        }
+        areas.push_back(std::move(area));
+    }
+    return areas;
+}
+
+Mesh streetGeometry(const StreetNetwork &network, const StreetStyle &style) {
+    Mesh mesh;
+    PolygonSet carriageway = streetArea(network, 0);
+    PolygonSet sidewalks = streetArea(network, style.sidewalkWidth);
+    sidewalks.difference(carriageway);
+    float road = network.height + style.lift, pavement = road + style.kerbHeight;
+    addRegion(mesh, carriageway, road, StreetCarriageway);
+    addRegion(mesh, sidewalks, pavement, StreetSidewalk);
+    addKerbs(mesh, carriageway, road, pavement);
+    return mesh;
+}
+
+}  // namespace veduta

@@ -1,0 +1,49 @@
+// Street surfaces from a street network (issue 7; seed 000 drew flat single-colour rectangles,
+// digest-000 §1): carriageways as ribbons of each street's width joined at the nodes into one
+// surface, sidewalks as a band around it raised by a kerb, and the kerb faces between them.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/vecmath.h"
+#include "scene/mesh.h"
+
+namespace veduta {
+
+struct StreetNetwork {
+    struct Street {
+        uint32_t from = 0, to = 0;  // node indices
+        float width = 5;            // carriageway, metres
+    };
+    std::vector<Vec2f> nodes;
+    std::vector<Street> streets;
+    float height = 0;  // the ground the streets lie on
+};
+
+struct StreetStyle {
+    float sidewalkWidth = 2.5f;
+    float kerbHeight = 0.12f;
+    float lift = 0.01f;  // the carriageway above the ground, so that it does not fight a ground plane
+};
+
+// Surfaces the street meshes' triangleMaterials hold.
+enum StreetSurface : MaterialId { StreetCarriageway = 0, StreetSidewalk = 1, StreetKerb = 2 };
+
+// One mesh: the carriageway at height + lift, the sidewalks at height + lift + kerbHeight, the
+// kerbs between; normals up (kerbs: towards the road), texture coordinates in metres (x, y).
+// Streets of zero length are skipped.
+Mesh streetGeometry(const StreetNetwork &network, const StreetStyle &style = {});
+
+// What is left of a block's outline (counter-clockwise, x/y) once the streets and their
+// sidewalks are taken away: the pieces' outlines, counter-clockwise, each with the edges that
+// face a street flagged (their outward side lies on a sidewalk). Where seed 000's blocks run
+// along the streets' centrelines, buildings stand at the back of the sidewalk.
+struct BuildableArea {
+    std::vector<Vec2f> outline;
+    std::vector<bool> streetEdges;
+};
+std::vector<BuildableArea> buildableAreas(const std::vector<Vec2f> &block, const StreetNetwork &network,
+                                          const StreetStyle &style = {});
+
+}  // namespace veduta

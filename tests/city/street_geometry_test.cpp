@@ -1,0 +1,104 @@
+// Street surfaces: carriageways joined at their nodes, sidewalks around them, kerbs between,
+// and what a block keeps for its buildings.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "city/street_geometry.h"
+
+namespace veduta {
+namespace {
+
+float area(const Mesh &m, StreetSurface surface) {
+    float sum = 0;
+    for (size_t t = 0; t < m.triangleCount(); ++t) {
+        if (m.triangleMaterials[t] != surface) continue;
+        const Vec3f &a = m.positions[m.indices[3 * t]], &b = m.positions[m.indices[3 * t + 1]],
+                    &c = m.positions[m.indices[3 * t + 2]];
+        sum += 0.5f * length(cross(b - a, c - a));
+    }
+    return sum;
+}
+
+TEST(StreetGeometry, OneStreetIsARibbonWithRoundEndsAndSidewalks) {
+    StreetNetwork network{{{0, 0}, {100, 0}}, {{0, 1, 8}}, 0};
+    Mesh m = streetGeometry(network);
+    float joint = float(M_PI) * 16 / std::cos(float(M_PI) / 16);  // the 16-gons round about r = 4
+    EXPECT_GT(area(m, StreetCarriageway), 800 + 0.95f * float(M_PI) * 16);
+    EXPECT_LT(area(m, StreetCarriageway), 800 + joint * 1.01f);
+    // 2.5 m on either side along the street, and round the ends.
+    EXPECT_GT(area(m, StreetSidewalk), 2 * 2.5f * 100);
+    EXPECT_LT(area(m, StreetSidewalk), 2 * 2.5f * 100 + float(M_PI) * 6.5f * 6.5f * 1.03f);
+    for (size_t t = 0; t < m.triangleCount(); ++t) {
+        const Vec3f &a = m.positions[m.indices[3 * t]], &b = m.positions[m.indices[3 * t + 1]],
+                    &c = m.positions[m.indices[3 * t + 2]];
+        Vec3f n = cross(b - a, c - a);
+        ASSERT_GT(length(n), 0) << "degenerate triangle " << t;
+        if (m.triangleMaterials[t] == StreetKerb) {
+            EXPECT_NEAR(n.z, 0, 1e-6f * length(n));
+            EXPECT_NEAR(a.z + b.z + c.z, 2 * 0.01f + 0.13f, 0.2f);  // between road and pavement
+            EXPECT_GT(dot(n, m.normals[m.indices[3 * t]]), 0) << "winding agrees with the normal";
+        } else {
+            EXPECT_GT(n.z, 0) << "faces up";
+            EXPECT_FLOAT_EQ(a.z, m.triangleMaterials[t] == StreetCarriageway ? 0.01f : 0.13f);
+        }
+    }
+}
+
+TEST(StreetGeometry, StreetsMeetInOneSurfaceWithoutOverlaps) {
+    // A crossroads: four streets from one node.
+    StreetNetwork network{{{0, 0}, {50, 0}, {-50, 0}, {0, 50}, {0, -50}}, {{0, 1, 8}, {0, 2, 8}, {0, 3, 8}, {0, 4, 8}}, 0};
+    Mesh m = streetGeometry(network);
+    // Four 50 m arms of 8 m overlap in the middle: the union counts the middle once.
+    float carriageway = area(m, StreetCarriageway);
+    EXPECT_LT(carriageway, 4 * 50 * 8 + 4 * float(M_PI) * 16);
+    EXPECT_GT(carriageway, 4 * 50 * 8 - 4 * 4 * 8 + 2 * float(M_PI) * 16 * 0.9f);
+    // The sidewalks are the widened union minus the carriageway: no surface is counted twice.
+    StreetStyle style;
+    StreetNetwork wide = network;
+    for (auto &s : wide.streets) s.width += 2 * style.sidewalkWidth;
+    StreetStyle none;
+    none.sidewalkWidth = 0.001f;
+    float outer = area(streetGeometry(wide, none), StreetCarriageway);
+    EXPECT_NEAR(carriageway + area(m, StreetSidewalk), outer, outer * 1e-3f);
+}
+
+TEST(StreetGeometry, AStreetOfNoLengthIsSkipped) {
+    StreetNetwork network{{{0, 0}, {0, 0}, {10, 0}}, {{0, 1, 6}, {1, 2, 6}}, 2};
+    Mesh m = streetGeometry(network);
+    EXPECT_GT(m.triangleCount(), 0u);
+    for (const Vec3f &p : m.positions) EXPECT_GE(p.z, 2);
+}
+
+TEST(StreetGeometry, ABlockOnTheStreetsCentrelinesKeepsWhatTheSidewalksLeave) {
+    // A 60 × 40 block whose outline is the centreline of 8 m streets on all four sides.
+    std::vector<Vec2f> block{{0, 0}, {60, 0}, {60, 40}, {0, 40}};
+    StreetNetwork network{block, {{0, 1, 8}, {1, 2, 8}, {2, 3, 8}, {3, 0, 8}}, 0};
+    std::vector<BuildableArea> areas = buildableAreas(block, network);
+    ASSERT_EQ(areas.size(), 1u);
+    const BuildableArea &area = areas[0];
+    float minX = 1e9f, maxX = -1e9f, minY = 1e9f, maxY = -1e9f;
+    for (Vec2f p : area.outline) {
+        minX = std::min(minX, p.x);
+        maxX = std::max(maxX, p.x);
+        minY = std::min(minY, p.y);
+        maxY = std::max(maxY, p.y);
+    }
+    EXPECT_NEAR(minX, 6.5f, 1e-3f);  // half the street and the sidewalk
+    EXPECT_NEAR(maxX, 53.5f, 1e-3f);
+    EXPECT_NEAR(minY, 6.5f, 1e-3f);
+    EXPECT_NEAR(maxY, 33.5f, 1e-3f);
+    for (bool street : area.streetEdges) EXPECT_TRUE(street);
+
+    // A street along one side only: the other edges are not street edges.
+    StreetNetwork one{block, {{0, 1, 8}}, 0};
+    std::vector<BuildableArea> rest = buildableAreas(block, one);
+    ASSERT_EQ(rest.size(), 1u);
+    int streetEdges = 0;
+    for (bool street : rest[0].streetEdges) streetEdges += street;
+    EXPECT_GE(streetEdges, 1);
+    EXPECT_LE(streetEdges, 3);  // the long edge, and perhaps the short bevels of the round end
+}
+
+}  // namespace
+}  // namespace veduta
