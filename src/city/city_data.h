@@ -1,0 +1,67 @@
+// Seed 000's CityData scene files (digest-000 §2.1, Listing 2.1): points, streets, blocks,
+// lots with their street edges, building settings at three levels and the rule files. Read and
+// checked here; nothing is generated. docs/citydata.md documents the format and the checks.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "city/building_settings.h"
+#include "core/error.h"
+#include "core/vecmath.h"
+
+namespace veduta {
+
+struct CityPoint {
+    uint32_t id = 0;
+    double e = 0, n = 0, u = 0;  // metres, east, north, up
+    FileLoc loc;
+};
+
+struct CityStreet {
+    uint32_t id = 0;
+    uint32_t start = 0, end = 0;  // indices into CityData::points
+    std::optional<float> width;   // unset: the network's <Width>
+    FileLoc loc;
+};
+
+// A lot: counter-clockwise, with the edges on a street flagged (edge i runs from point i to i+1).
+struct CityLot {
+    std::vector<Vec2f> points;
+    std::vector<bool> streetEdges;
+    float base = 0;  // the points' common u
+    SettingsMap settings;
+    FileLoc loc;
+};
+
+struct CityBlock {
+    std::vector<Vec2f> points;  // counter-clockwise
+    float base = 0;
+    std::vector<CityLot> lots;
+    SettingsMap settings;
+    FileLoc loc;
+};
+
+struct CityData {
+    std::vector<CityPoint> points;
+    std::vector<CityStreet> streets;
+    float streetWidth = 5;  // <StreetNetwork><Width>, for streets without their own
+    std::vector<CityBlock> blocks;
+    SettingsMap settings;
+    std::vector<std::filesystem::path> ruleFiles;  // resolved against the file's folder
+    std::vector<std::string> warnings;             // "file:line:col: message"
+};
+
+CityData readCityData(const std::filesystem::path &file);
+// The same for text in memory: `name` is what messages call it; rule files resolve against
+// `baseDirectory`.
+CityData parseCityData(std::string xml, std::string name, const std::filesystem::path &baseDirectory);
+
+// Seed 000's precedence: lot > block > city > the rule file's settings > built-in defaults.
+// The stack points at the maps, which must outlive it.
+SettingsStack settingsFor(const CityData &city, const CityBlock &block, const CityLot *lot,
+                          const SettingsMap &ruleFileSettings);
+
+}  // namespace veduta
