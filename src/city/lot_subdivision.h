@@ -1,0 +1,93 @@
+// Lot subdivision of city blocks (seed 000's two algorithms, digest-000 §2.2, thesis L362–406):
+// a block polygon is cut into building footprints that each face a street. docs/lots.md
+// describes both algorithms and the choices where the thesis leaves gaps.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "city/footprint.h"
+#include "core/error.h"
+#include "core/vecmath.h"
+
+namespace veduta {
+
+class SettingsStack;
+
+// seed 000's BuildingSettings for lots, in metres, square metres and degrees. The thesis gives
+// no defaults; these suit Gründerzeit blocks (frontages of 10–22 m, wings 12 m deep).
+struct LotSettings {
+    float minBuildingLength = 10, maxBuildingLength = 22;  // frontage along the street
+    float minBuildingDepth = 12;                           // inset of the perimeter ring
+    float minBuildingInnerLength = 4;                      // a lot's side facing the courtyard
+    float maxLotArea = 600, minLotArea = 40;               // recursive subdivision
+    float minLotAngleDegrees = 30;
+    float housingDensity = 1;  // probability a lot is kept
+};
+
+// Reads MinBuildingLength, MaxBuildingLength, MinBuildingDepth, MinBuildingInnerLength,
+// MaxLotArea, MinLotArea, MinLotAngle and HousingDensity; the defaults above where one is not
+// set. InputError at the setting when a value is out of its range (see checkLotSettings).
+LotSettings lotSettingsFrom(const SettingsStack &settings);
+
+// Throws a LotError (InputError at `loc` when given) unless 0 < MinBuildingLength ≤
+// MaxBuildingLength, MinBuildingDepth, MaxLotArea > 0, MinBuildingInnerLength, MinLotArea ≥ 0,
+// 0 ≤ MinLotAngle < 180 and 0 ≤ HousingDensity ≤ 1.
+void checkLotSettings(const LotSettings &settings, const std::optional<FileLoc> &loc = std::nullopt);
+
+// A city block: a simple counter-clockwise polygon (edge i from points[i] to points[i + 1]),
+// one street flag per edge, at ground height `base`. Blocks from user input go through
+// normaliseFootprint first, which turns clockwise ones round.
+struct Block {
+    std::vector<Vec2f> points;
+    std::vector<bool> streetEdges;
+    float base = 0;
+};
+
+// What a subdivision throws when a block is not a simple counter-clockwise polygon with one street
+// flag per edge, when settings are out of range, or at the limits below (an InputError instead
+// when the caller gives the block's place in its file).
+class LotError : public std::runtime_error {
+  public:
+    using std::runtime_error::runtime_error;
+};
+
+// The limits: a block cut into more lots, or recursion deeper, is refused.
+inline constexpr size_t kMaxLotsPerBlock = 10000;
+inline constexpr int kMaxLotRecursion = 32;
+
+// Perimeter development ("Blockrandbebauung", the thesis' subdivideLotRectangular): the ring
+// between the block and its inset by MinBuildingDepth, along the street edges, cut
+// perpendicular to the street at frontages drawn from [MinBuildingLength, MaxBuildingLength];
+// lots meeting at a corner of two street edges are one corner lot. The inset (the courtyard)
+// stays empty. No lots when the block has no street edge or cannot be inset.
+std::vector<Footprint> perimeterLots(const Block &block, const LotSettings &settings, uint32_t seed,
+                                     uint32_t blockId, const std::optional<FileLoc> &loc = std::nullopt);
+
+// Recursive subdivision (the thesis' subdivideLot-Mueller, after Müller 2001): pieces larger
+// than MaxLotArea are split perpendicular to one of their two longest edges near its middle;
+// pieces without a street edge are dropped and not split further.
+std::vector<Footprint> recursiveLots(const Block &block, const LotSettings &settings, uint32_t seed,
+                                     uint32_t blockId, const std::optional<FileLoc> &loc = std::nullopt);
+
+// Both algorithms' final filters (thesis L370–374): the lots with area > MinLotArea and every
+// interior angle > MinLotAngle, each of those kept with probability HousingDensity (a pure
+// function of seed, blockId and the lot's index in `lots`).
+std::vector<Footprint> filterLots(std::vector<Footprint> lots, const LotSettings &settings, uint32_t seed,
+                                  uint32_t blockId);
+
+// Shared by the algorithms.
+namespace lots {
+[[noreturn]] void fail(const std::optional<FileLoc> &loc, const std::string &message);
+// Checks the block's shape and flags (LotError or InputError).
+void checkBlock(const Block &block, const std::optional<FileLoc> &loc);
+// A draw from a normal distribution centred in [lo, hi] with σ = (hi − lo) / 6, clamped to
+// the range (the thesis says "normally distributed in the range" and gives no σ); a pure
+// function of the hash `key`.
+float normalBetween(float lo, float hi, uint32_t key);
+float polygonArea(const std::vector<Vec2f> &polygon);  // signed: positive counter-clockwise
+}  // namespace lots
+
+}  // namespace veduta

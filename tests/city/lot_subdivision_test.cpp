@@ -1,0 +1,327 @@
+#include <gtest/gtest.h>
+
+#include <CGAL/Boolean_set_operations_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_2.h>
+#include <CGAL/Polygon_with_holes_2.h>
+#include <CGAL/create_offset_polygons_2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "city/building_settings.h"
+#include "city/lot_subdivision.h"
+
+namespace veduta {
+namespace {
+
+using Exact = CGAL::Exact_predicates_exact_constructions_kernel;
+using ExactPolygon = CGAL::Polygon_2<Exact>;
+using ExactPolygonWithHoles = CGAL::Polygon_with_holes_2<Exact>;
+
+constexpr double kAreaTolerance = 1e-3;  // m²
+constexpr double kLengthTolerance = 1e-3;  // m
+const uint32_t kSeeds[] = {1, 1871, 90210};
+
+struct NamedBlock {
+    const char *name;
+    Block block;
+};
+
+const std::vector<NamedBlock> &testBlocks() {
+    static const std::vector<NamedBlock> blocks{
+        {"rectangle", {{{0, 0}, {100, 0}, {100, 80}, {0, 80}}, {true, true, true, true}, 0}},
+        {"L", {{{0, 0}, {90, 0}, {90, 40}, {45, 40}, {45, 90}, {0, 90}}, std::vector<bool>(6, true), 0}},
+        {"trapezoid", {{{0, 0}, {110, 0}, {85, 70}, {15, 70}}, {true, true, true, true}, 0}},
+        {"one street", {{{0, 0}, {70, 0}, {70, 50}, {0, 50}}, {true, false, false, false}, 0}},
+    };
+    return blocks;
+}
+
+ExactPolygon exact(const std::vector<Vec2f> &points) {
+    ExactPolygon polygon;
+    for (Vec2f p : points) polygon.push_back(Exact::Point_2(p.x, p.y));
+    return polygon;
+}
+
+double area(const ExactPolygon &polygon) { return CGAL::to_double(polygon.area()); }
+
+double area(const std::vector<ExactPolygonWithHoles> &polygons) {
+    double sum = 0;
+    for (const ExactPolygonWithHoles &p : polygons) {
+        sum += area(p.outer_boundary());
+        for (const ExactPolygon &hole : p.holes()) sum += area(hole);  // holes run clockwise
+    }
+    return sum;
+}
+
+double intersectionArea(const ExactPolygon &a, const ExactPolygon &b) {
+    std::vector<ExactPolygonWithHoles> parts;
+    CGAL::intersection(a, b, std::back_inserter(parts));
+    return area(parts);
+}
+
+// The block's inset by `depth` from CGAL's straight skeleton: the courtyard, computed apart from
+// the code under test.
+std::vector<ExactPolygon> courtyard(const Block &block, float depth) {
+    using Inexact = CGAL::Exact_predicates_inexact_constructions_kernel;
+    CGAL::Polygon_2<Inexact> outline;
+    for (Vec2f p : block.points) outline.push_back(Inexact::Point_2(p.x, p.y));
+    std::vector<ExactPolygon> insets;
+    for (const auto &inset : CGAL::create_interior_skeleton_and_offset_polygons_2(double(depth), outline)) {
+        ExactPolygon polygon;
+        for (const Inexact::Point_2 &p : inset->vertices()) polygon.push_back(Exact::Point_2(p.x(), p.y()));
+        insets.push_back(polygon);
+    }
+    return insets;
+}
+
+double distanceToSegment(Vec2f p, Vec2f a, Vec2f b) {
+    double abx = b.x - a.x, aby = b.y - a.y, apx = p.x - a.x, apy = p.y - a.y;
+    double t = std::clamp((apx * abx + apy * aby) / (abx * abx + aby * aby), 0.0, 1.0);
+    return std::hypot(apx - t * abx, apy - t * aby);
+}
+
+double distanceToOutline(Vec2f p, const Block &block) {
+    double nearest = INFINITY;
+    for (size_t e = 0; e < block.points.size(); ++e) {
+        nearest = std::min(nearest, distanceToSegment(p, block.points[e], block.points[(e + 1) % block.points.size()]));
+    }
+    return nearest;
+}
+
+bool onStreetEdge(Vec2f a, Vec2f b, const Block &block) {
+    for (size_t e = 0; e < block.points.size(); ++e) {
+        Vec2f s = block.points[e], t = block.points[(e + 1) % block.points.size()];
+        if (block.streetEdges[e] && distanceToSegment(a, s, t) < kLengthTolerance &&
+            distanceToSegment(b, s, t) < kLengthTolerance) {
+            return true;
+        }
+    }
+    return false;
+}
+
+bool nearBlockPoint(Vec2f p, const Block &block) {
+    for (Vec2f q : block.points) {
+        if (std::hypot(p.x - q.x, p.y - q.y) < kLengthTolerance) return true;
+    }
+    return false;
+}
+
+// What every lot of both algorithms must be: a simple counter-clockwise polygon inside the
+// block, apart from the others, with a flagged edge, every flagged edge on a street edge.
+void expectValidLots(const Block &block, const std::vector<Footprint> &lots) {
+    ASSERT_FALSE(lots.empty());
+    ExactPolygon outline = exact(block.points);
+    std::vector<ExactPolygon> exactLots;
+    double sum = 0;
+    for (size_t i = 0; i < lots.size(); ++i) {
+        const Footprint &lot = lots[i];
+        SCOPED_TRACE(testing::Message() << "lot " << i);
+        ASSERT_GE(lot.points.size(), 3u);
+        ASSERT_EQ(lot.streetEdges.size(), lot.points.size());
+        ASSERT_TRUE(isSimplePolygon(lot.points));
+        ASSERT_TRUE(isCounterClockwise(lot.points));
+        ExactPolygon polygon = exact(lot.points);
+        EXPECT_NEAR(intersectionArea(polygon, outline), area(polygon), kAreaTolerance);
+        bool street = false;
+        for (size_t e = 0; e < lot.edgeCount(); ++e) {
+            if (!lot.streetEdges[e]) continue;
+            street = true;
+            EXPECT_TRUE(onStreetEdge(lot.edgeStart(e), lot.edgeEnd(e), block)) << "edge " << e;
+        }
+        EXPECT_TRUE(street);
+        sum += area(polygon);
+        exactLots.push_back(polygon);
+    }
+    // The union is smaller than the sum by at least any pair's overlap.
+    std::vector<ExactPolygonWithHoles> joined;
+    CGAL::join(exactLots.begin(), exactLots.end(), std::back_inserter(joined));
+    EXPECT_LT(sum - area(joined), kAreaTolerance);
+}
+
+double frontage(const Footprint &lot) {
+    double length = 0;
+    for (size_t e = 0; e < lot.edgeCount(); ++e) {
+        if (lot.streetEdges[e]) length += lot.edgeLength(e);
+    }
+    return length;
+}
+
+// A lot between two cuts on one street edge, away from the block's corners: not a corner lot,
+// nor the lot that took up an edge's remainder.
+bool isMidEdgeLot(const Footprint &lot, const Block &block) {
+    if (lot.points.size() != 4 || std::count(lot.streetEdges.begin(), lot.streetEdges.end(), true) != 1) return false;
+    for (Vec2f p : lot.points) {
+        if (nearBlockPoint(p, block)) return false;
+    }
+    return true;
+}
+
+TEST(Lots, PerimeterLotsTileTheRingAlongTheStreets) {
+    LotSettings settings;
+    for (const NamedBlock &named : testBlocks()) {
+        std::vector<ExactPolygon> yard = courtyard(named.block, settings.minBuildingDepth);
+        ASSERT_EQ(yard.size(), 1u) << named.name;
+        for (uint32_t seed : kSeeds) {
+            SCOPED_TRACE(testing::Message() << named.name << ", seed " << seed);
+            std::vector<Footprint> lots = perimeterLots(named.block, settings, seed, 7);
+            expectValidLots(named.block, lots);
+            size_t midEdge = 0;
+            for (const Footprint &lot : lots) {
+                EXPECT_LT(intersectionArea(exact(lot.points), yard[0]), kAreaTolerance);
+                for (Vec2f p : lot.points) {
+                    // Points off the outline are on the courtyard side.
+                    double depth = distanceToOutline(p, named.block);
+                    if (depth > kLengthTolerance) {
+                        EXPECT_GE(depth, settings.minBuildingDepth - kLengthTolerance);
+                    }
+                }
+                if (!isMidEdgeLot(lot, named.block)) continue;
+                ++midEdge;
+                EXPECT_GE(frontage(lot), settings.minBuildingLength - kLengthTolerance);
+                EXPECT_LE(frontage(lot), settings.maxBuildingLength + kLengthTolerance);
+            }
+            EXPECT_GT(midEdge, 0u);
+        }
+    }
+}
+
+TEST(Lots, PerimeterCornerLotsTurnTheCorner) {
+    const Block &rectangle = testBlocks()[0].block;
+    std::vector<Footprint> lots = perimeterLots(rectangle, LotSettings{}, 1871, 7);
+    size_t corners = 0;
+    for (const Footprint &lot : lots) {
+        if (std::count(lot.streetEdges.begin(), lot.streetEdges.end(), true) == 2) ++corners;
+    }
+    // Up to four; the thesis builds none where a cut leaves too short a courtyard side (step 9).
+    EXPECT_GT(corners, 0u);
+    EXPECT_LE(corners, 4u);
+}
+
+TEST(Lots, RecursiveLotsAreBetweenMinAndMaxArea) {
+    LotSettings settings;
+    for (const NamedBlock &named : testBlocks()) {
+        for (uint32_t seed : kSeeds) {
+            SCOPED_TRACE(testing::Message() << named.name << ", seed " << seed);
+            std::vector<Footprint> lots = recursiveLots(named.block, settings, seed, 7);
+            expectValidLots(named.block, lots);
+            for (const Footprint &lot : lots) {
+                double lotArea = area(exact(lot.points));
+                EXPECT_LE(lotArea, settings.maxLotArea + kAreaTolerance);
+                EXPECT_GE(lotArea, settings.minLotArea);
+            }
+        }
+    }
+}
+
+bool sameLots(const std::vector<Footprint> &a, const std::vector<Footprint> &b) {
+    if (a.size() != b.size()) return false;
+    for (size_t i = 0; i < a.size(); ++i) {
+        if (a[i].points.size() != b[i].points.size() || a[i].streetEdges != b[i].streetEdges) return false;
+        for (size_t k = 0; k < a[i].points.size(); ++k) {
+            if (a[i].points[k].x != b[i].points[k].x || a[i].points[k].y != b[i].points[k].y) return false;
+        }
+    }
+    return true;
+}
+
+TEST(Lots, SameInputsGiveTheSameLotsAndTheSeedChangesThem) {
+    const Block &block = testBlocks()[1].block;
+    LotSettings settings;
+    EXPECT_TRUE(sameLots(perimeterLots(block, settings, 5, 3), perimeterLots(block, settings, 5, 3)));
+    EXPECT_TRUE(sameLots(recursiveLots(block, settings, 5, 3), recursiveLots(block, settings, 5, 3)));
+    EXPECT_FALSE(sameLots(perimeterLots(block, settings, 5, 3), perimeterLots(block, settings, 6, 3)));
+    EXPECT_FALSE(sameLots(recursiveLots(block, settings, 5, 3), recursiveLots(block, settings, 5, 4)));
+}
+
+TEST(Lots, HousingDensityKeepsAboutThatShare) {
+    const Block &block = testBlocks()[0].block;
+    LotSettings all, half;
+    half.housingDensity = 0.5f;
+    size_t total = 0, kept = 0;
+    for (uint32_t blockId = 0; blockId < 30; ++blockId) {
+        total += recursiveLots(block, all, 11, blockId).size();
+        kept += recursiveLots(block, half, 11, blockId).size();
+    }
+    ASSERT_GT(total, 300u);
+    EXPECT_NEAR(double(kept) / double(total), 0.5, 0.08) << kept << " of " << total;
+}
+
+TEST(Lots, FiltersDropSmallAndSharpLots) {
+    Footprint square{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {true, false, false, false}, 0};
+    Footprint sliver{{{0, 0}, {40, 0}, {0, 10}}, {true, false, false}, 0};  // 14° at (40, 0)
+    LotSettings settings;
+    settings.minLotAngleDegrees = 10;
+    settings.minLotArea = 50;
+    EXPECT_EQ(filterLots({square, sliver}, settings, 1, 1).size(), 2u);
+    settings.minLotArea = 150;  // the square has 100 m², the sliver 200 m²
+    EXPECT_EQ(filterLots({square, sliver}, settings, 1, 1).size(), 1u);
+    settings.minLotArea = 0;
+    settings.minLotAngleDegrees = 15;
+    EXPECT_EQ(filterLots({square, sliver}, settings, 1, 1).size(), 1u);
+    settings.housingDensity = 0;
+    EXPECT_TRUE(filterLots({square, sliver}, settings, 1, 1).empty());
+}
+
+TEST(Lots, NoLotsWithoutStreetOrRoomForTheRing) {
+    Block inner{{{0, 0}, {60, 0}, {60, 50}, {0, 50}}, {false, false, false, false}, 0};
+    EXPECT_TRUE(perimeterLots(inner, LotSettings{}, 1, 1).empty());
+    EXPECT_TRUE(recursiveLots(inner, LotSettings{}, 1, 1).empty());
+    // 20 m wide: an inset of 12 m from both sides turns round.
+    Block narrow{{{0, 0}, {60, 0}, {60, 20}, {0, 20}}, {true, true, true, true}, 0};
+    EXPECT_TRUE(perimeterLots(narrow, LotSettings{}, 1, 1).empty());
+}
+
+std::string errorOf(const std::function<void()> &call) {
+    try {
+        call();
+    } catch (const std::runtime_error &e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(Lots, LimitsStopWithAClearMessage) {
+    const Block &block = testBlocks()[0].block;
+    LotSettings tiny;
+    tiny.minBuildingLength = 0.01f;
+    tiny.maxBuildingLength = 0.02f;
+    EXPECT_THROW(perimeterLots(block, tiny, 1, 1), LotError);
+    EXPECT_NE(errorOf([&] { perimeterLots(block, tiny, 1, 1); }).find("more than 10000"), std::string::npos);
+    LotSettings deep;
+    deep.maxLotArea = 1e-6f;
+    EXPECT_THROW(recursiveLots(block, deep, 1, 1), LotError);
+    std::string message = errorOf([&] { recursiveLots(block, deep, 1, 1, FileLoc{"city.xml", 3, 5}); });
+    EXPECT_EQ(message.rfind("city.xml:3:5: ", 0), 0u) << message;
+    EXPECT_NE(message.find("more than 32"), std::string::npos) << message;
+}
+
+TEST(Lots, BadBlocksAndSettingsAreRefused) {
+    Block clockwise{{{0, 0}, {0, 80}, {100, 80}, {100, 0}}, {true, true, true, true}, 0};
+    EXPECT_NE(errorOf([&] { perimeterLots(clockwise, LotSettings{}, 1, 1); }).find("clockwise"), std::string::npos);
+    Block unflagged{{{0, 0}, {100, 0}, {100, 80}}, {true}, 0};
+    EXPECT_THROW(recursiveLots(unflagged, LotSettings{}, 1, 1), LotError);
+    LotSettings reversed;
+    reversed.minBuildingLength = 30;
+    EXPECT_NE(errorOf([&] { checkLotSettings(reversed); }).find("MaxBuildingLength"), std::string::npos);
+}
+
+TEST(Lots, SettingsAreReadFromTheStack) {
+    SettingsMap block{{"MinBuildingLength", {"8", 8.0f, {"city.xml", 2, 3}}},
+                      {"MinLotAngle", {"20", 20.0f, {"city.xml", 4, 3}}}};
+    LotSettings settings = lotSettingsFrom(SettingsStack({&block}));
+    EXPECT_EQ(settings.minBuildingLength, 8);
+    EXPECT_EQ(settings.minLotAngleDegrees, 20);
+    EXPECT_EQ(settings.maxBuildingLength, LotSettings{}.maxBuildingLength);
+    SettingsMap dense{{"HousingDensity", {"1.5", 1.5f, {"city.xml", 9, 1}}}};
+    std::string message = errorOf([&] { lotSettingsFrom(SettingsStack({&dense})); });
+    EXPECT_EQ(message.rfind("city.xml:9:1: HousingDensity", 0), 0u) << message;
+}
+
+}  // namespace
+}  // namespace veduta
