@@ -1,13 +1,13 @@
 #include "city/generate_buildings.h"
 
 #include <filesystem>
-#include <unordered_set>
 
 #include <fmt/format.h>
 
 #include "city/assets.h"
 #include "city/building_generator.h"
 #include "city/rule_file.h"
+#include "city/warning_list.h"
 
 namespace veduta {
 
@@ -21,13 +21,6 @@ Footprint footprintOf(const BuildingDesc &building, std::vector<std::string> &wa
     footprint.base = building.base;
     if (auto warning = normaliseFootprint(footprint, building.footprintLoc)) warnings.push_back(*warning);
     return footprint;
-}
-
-// The same rule warns in every building it is used in: each warning is passed on once.
-void appendOnce(std::vector<std::string> &warnings, std::vector<std::string> &out) {
-    std::unordered_set<std::string> seen(out.begin(), out.end());
-    for (std::string &w : warnings)
-        if (seen.insert(w).second) out.push_back(std::move(w));
 }
 
 void generateGroup(const BuildingGroupDesc &group, RenderSceneBuilder &builder, std::vector<std::string> &warnings) {

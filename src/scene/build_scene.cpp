@@ -1,11 +1,13 @@
 #include "scene/build_scene.h"
 
+#include <algorithm>
 #include <map>
 #include <string>
 
 #include <fmt/format.h>
 
 #include "city/generate_buildings.h"
+#include "city/generate_city.h"
 #include "io/image_library.h"
 #include "io/mesh_import.h"
 #include "scene/build_environment.h"
@@ -53,10 +55,24 @@ class SceneAssembler {
                 {inst.transform, it->second, override, inst.objectId, inst.buildingId, uint32_t(i + 1)});
         }
         for (const BuildingGroupDesc &group : d_.buildingGroups) generateBuildings(group, builder_, warnings_);
+        // A city's buildings take the ids after those the scene file gives out.
+        uint32_t nextBuildingId = firstFreeBuildingId();
+        for (const CityDesc &city : d_.cities) nextBuildingId += generateCity(city, nextBuildingId, builder_, warnings_);
         return std::move(builder_).build();
     }
 
   private:
+    uint32_t firstFreeBuildingId() const {
+        uint32_t last = 0;
+        for (const BuildingGroupDesc &group : d_.buildingGroups) {
+            for (const BuildingDesc &b : group.buildings) last = std::max(last, b.buildingId);
+            for (const FacadeDesc &f : group.facades) last = std::max(last, f.buildingId);
+        }
+        for (const InstanceDesc &i : d_.instances) last = std::max(last, i.buildingId);
+        for (const GeometryDesc &g : d_.geometry) last = std::max(last, g.buildingId);
+        return last + 1;
+    }
+
     // The material with its maps registered as textures.
     Material withTextures(const MaterialDesc &d) {
         Material m = d.material;

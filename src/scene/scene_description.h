@@ -126,6 +126,16 @@ struct BuildingGroupDesc {
     std::vector<FacadeDesc> facades;
 };
 
+// A <city> element: a CityData file (seed 000's Listing 2.1, docs/citydata.md) whose blocks are
+// cut into lots where they have none and whose lots are built with the rule files it names.
+struct CityDesc {
+    FileLoc loc;
+    std::filesystem::path file;  // resolved against the scene's folder
+    FileLoc fileLoc;
+    uint32_t seed = 0;  // with each building's id, every random choice of lots and buildings
+    uint32_t objectId = 0;
+};
+
 struct SceneDescription {
     std::string source;  // file name, or a name for built-in text
     Camera camera;
@@ -139,6 +149,7 @@ struct SceneDescription {
     std::vector<PrototypeDesc> prototypes;
     std::vector<InstanceDesc> instances;
     std::vector<BuildingGroupDesc> buildingGroups;
+    std::vector<CityDesc> cities;
 };
 
 // Parse a scene file; throws InputError with file:line:column on any problem.

@@ -64,6 +64,8 @@ class SceneFileReader {
             readInstance(e);
         } else if (n == "buildings") {
             readBuildings(e);
+        } else if (n == "city") {
+            readCity(e);
         } else if (isGeometry(n)) {
             scene_.geometry.push_back(readGeometry(e, true));
         } else {
@@ -291,6 +293,18 @@ class SceneFileReader {
         scene_.instances.push_back(std::move(inst));
     }
 
+    void readCity(const XmlElement &e) {
+        CityDesc city;
+        city.loc = e.loc();
+        std::filesystem::path file = e.string("file");
+        city.file = file.is_absolute() ? file : baseDirectory_ / file;
+        city.fileLoc = e.attributeLoc("file");
+        city.seed = e.unsignedInteger("seed", 0);
+        readObjectId(e, city.loc);
+        e.checkLeaf();
+        scene_.cities.push_back(std::move(city));
+    }
+
     void readBuildings(const XmlElement &e) {
         BuildingGroupDesc group;
         group.loc = e.loc();
@@ -463,11 +477,11 @@ class SceneFileReader {
         std::map<std::pair<int, int>, uint32_t *> byPlace;
         for (GeometryDesc &g : scene_.geometry) byPlace[{g.loc.line, g.loc.column}] = &g.objectId;
         for (InstanceDesc &i : scene_.instances) byPlace[{i.loc.line, i.loc.column}] = &i.objectId;
-        for (BuildingGroupDesc &group : scene_.buildingGroups)
-        {
+        for (BuildingGroupDesc &group : scene_.buildingGroups) {
             for (BuildingDesc &b : group.buildings) byPlace[{b.loc.line, b.loc.column}] = &b.objectId;
             for (FacadeDesc &f : group.facades) byPlace[{f.loc.line, f.loc.column}] = &f.objectId;
         }
+        for (CityDesc &c : scene_.cities) byPlace[{c.loc.line, c.loc.column}] = &c.objectId;
         uint32_t next = 1;
         for (auto &[place, id] : byPlace) {
             auto given = idsByPlace_.find(place);
