@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <unordered_map>
 
 #include <fmt/format.h>
 
@@ -10,6 +11,7 @@
 #include "city/city_data.h"
 #include "city/lot_subdivision.h"
 #include "city/rule_file.h"
+#include "city/street_geometry.h"
 #include "city/warning_list.h"
 #include "core/hash.h"
 
@@ -42,16 +44,51 @@ std::vector<std::unique_ptr<RuleFileBuilder>> readRuleFiles(const CityDesc &city
     return builders;
 }
 
-// The lots of a block: its own, or perimeter lots cut from it (seed 000's Blockrandbebauung).
-std::vector<Footprint> lotsOf(const CityBlock &block, const SettingsStack &blockSettings, uint32_t seed,
-                              uint32_t blockIndex) {
+// The city's streets as a network of its points (metres, x east, y north).
+StreetNetwork streetNetwork(const CityData &data) {
+    StreetNetwork network;
+    std::unordered_map<uint32_t, uint32_t> index;
+    for (const CityPoint &p : data.points) {
+        index[p.id] = uint32_t(network.nodes.size());
+        network.nodes.push_back({float(p.e), float(p.n)});
+    }
+    for (const CityStreet &s : data.streets)
+        network.streets.push_back({index.at(s.start), index.at(s.end), s.width.value_or(data.streetWidth)});
+    if (!data.points.empty()) network.height = float(data.points.front().u);
+    return network;
+}
+
+// The lots of a block: its own, or perimeter lots (seed 000's Blockrandbebauung) cut from what
+// the streets and sidewalks leave of it.
+std::vector<Footprint> lotsOf(const CityBlock &block, const StreetNetwork &streets, const SettingsStack &blockSettings,
+                              uint32_t seed, uint32_t blockIndex) {
     std::vector<Footprint> lots;
     if (!block.lots.empty()) {
         for (const CityLot &lot : block.lots) lots.push_back({lot.points, lot.streetEdges, lot.base});
         return lots;
     }
-    Block outline{block.points, block.streetEdges, block.base};
-    return perimeterLots(outline, lotSettingsFrom(blockSettings), seed, blockIndex);
+    LotSettings settings = lotSettingsFrom(blockSettings);
+    for (const BuildableArea &area : buildableAreas(block.points, streets)) {
+        Block piece{area.outline, area.streetEdges, block.base};
+        for (Footprint &lot : perimeterLots(piece, settings, seed, blockIndex)) lots.push_back(std::move(lot));
+    }
+    return lots;
+}
+
+// The street surfaces, in the scene's materials "street/asphalt", "street/pavement" and
+// "street/kerb" when it has them.
+void addStreets(const StreetNetwork &streets, uint32_t objectId, RenderSceneBuilder &builder) {
+    if (streets.streets.empty()) return;
+    Mesh mesh = streetGeometry(streets);
+    const std::pair<const char *, Vec3f> kinds[] = {
+        {"street/asphalt", {0.16f, 0.16f, 0.17f}}, {"street/pavement", {0.45f, 0.43f, 0.4f}}, {"street/kerb", {0.55f, 0.54f, 0.52f}}};
+    MaterialId materials[3];
+    for (int k = 0; k < 3; ++k) {
+        materials[k] = builder.findMaterial(kinds[k].first);
+        if (materials[k] == kNoMaterial) materials[k] = builder.addMaterial(Material::lambertian(kinds[k].first, kinds[k].second));
+    }
+    for (MaterialId &m : mesh.triangleMaterials) m = materials[m];
+    builder.addWorldMesh(std::move(mesh), objectId);
 }
 
 uint32_t buildCity(const CityDesc &city, uint32_t firstBuildingId, RenderSceneBuilder &builder,
@@ -62,11 +99,13 @@ uint32_t buildCity(const CityDesc &city, uint32_t firstBuildingId, RenderSceneBu
     warnings.insert(warnings.end(), data.warnings.begin(), data.warnings.end());
     auto ruleFiles = readRuleFiles(city, data, builder, warnings);
 
+    StreetNetwork streets = streetNetwork(data);
+    addStreets(streets, city.objectId, builder);
     uint32_t id = firstBuildingId;
     for (uint32_t b = 0; b < data.blocks.size(); ++b) {
         const CityBlock &block = data.blocks[b];
         SettingsStack blockSettings = settingsFor(data, block, nullptr, ruleFiles.front()->rules.settings);
-        std::vector<Footprint> lots = lotsOf(block, blockSettings, city.seed, b);
+        std::vector<Footprint> lots = lotsOf(block, streets, blockSettings, city.seed, b);
         for (size_t l = 0; l < lots.size(); ++l, ++id) {
             // Seed 000 picks one of several rule files at random (L1276).
             RuleFileBuilder &rules = *ruleFiles[hashValues({city.seed, id, 0x52554c46u}) % ruleFiles.size()];
