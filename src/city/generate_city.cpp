@@ -59,7 +59,8 @@ StreetNetwork streetNetwork(const CityData &data) {
 }
 
 // The lots of a block: its own, or perimeter lots (seed 000's Blockrandbebauung) cut from what
-// the streets and sidewalks leave of it.
+// the streets and sidewalks leave of it; a piece too small for a ring of houses round a
+// courtyard is cut recursively instead (Müller's subdivision, seed 000's other algorithm).
 std::vector<Footprint> lotsOf(const CityBlock &block, const StreetNetwork &streets, const SettingsStack &blockSettings,
                               uint32_t seed, uint32_t blockIndex) {
     std::vector<Footprint> lots;
@@ -70,7 +71,9 @@ std::vector<Footprint> lotsOf(const CityBlock &block, const StreetNetwork &stree
     LotSettings settings = lotSettingsFrom(blockSettings);
     for (const BuildableArea &area : buildableAreas(block.points, streets)) {
         Block piece{area.outline, area.streetEdges, block.base};
-        for (Footprint &lot : perimeterLots(piece, settings, seed, blockIndex)) lots.push_back(std::move(lot));
+        std::vector<Footprint> cut = perimeterLots(piece, settings, seed, blockIndex);
+        if (cut.empty()) cut = recursiveLots(piece, settings, seed, blockIndex);
+        for (Footprint &lot : cut) lots.push_back(std::move(lot));
     }
     return lots;
 }
