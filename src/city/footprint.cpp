@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include <fmt/format.h>
 
@@ -58,20 +59,25 @@ void reverseFootprint(Footprint &footprint) {
     std::rotate(footprint.streetEdges.begin(), footprint.streetEdges.begin() + 1, footprint.streetEdges.end());
 }
 
-// Faces the infinite face reaches without crossing the outline lie outside; the rest inside
-// (a simple polygon has no holes to count).
+// A face lies inside when reaching it from the infinite face crosses the outlines an odd number
+// of times: the outline's interior is inside, a hole's interior outside again. Flood fill region
+// by region, each across the constraints of the one before.
 void markInside(Cdt &cdt) {
-    for (Cdt::Face_handle f : cdt.all_face_handles()) f->info() = true;
-    cdt.infinite_face()->info() = false;
-    std::vector<Cdt::Face_handle> stack{cdt.infinite_face()};
-    while (!stack.empty()) {
-        Cdt::Face_handle f = stack.back();
-        stack.pop_back();
-        for (int i = 0; i < 3; ++i) {
-            Cdt::Face_handle next = f->neighbor(i);
-            if (f->is_constrained(i) || !next->info()) continue;
-            next->info() = false;
-            stack.push_back(next);
+    for (Cdt::Face_handle f : cdt.all_face_handles()) f->info() = false;
+    std::vector<Cdt::Face_handle> frontier{cdt.infinite_face()}, next;
+    std::set<Cdt::Face_handle> visited{cdt.infinite_face()};
+    for (bool inside = false; !frontier.empty(); inside = !inside, frontier.swap(next), next.clear()) {
+        std::vector<Cdt::Face_handle> stack = frontier;
+        while (!stack.empty()) {
+            Cdt::Face_handle f = stack.back();
+            stack.pop_back();
+            f->info() = inside;
+            for (int i = 0; i < 3; ++i) {
+                Cdt::Face_handle neighbour = f->neighbor(i);
+                if (visited.count(neighbour)) continue;
+                visited.insert(neighbour);
+                (f->is_constrained(i) ? next : stack).push_back(neighbour);
+            }
         }
     }
 }
@@ -116,14 +122,50 @@ bool liesInside(std::span<const Vec2f> inner, std::span<const Vec2f> outer) {
     return true;
 }
 
-std::vector<uint32_t> triangulatePolygon(std::span<const Vec2f> polygon) {
-    Cdt cdt;
-    std::vector<Cdt::Vertex_handle> vertices;
-    for (size_t i = 0; i < polygon.size(); ++i) {
-        vertices.push_back(cdt.insert(Point(polygon[i].x, polygon[i].y)));
-        vertices.back()->info() = uint32_t(i);
+std::vector<Vec2f> offsetPolygon(std::span<const Vec2f> ring, float distance) {
+    std::vector<Vec2f> moved;
+    size_t n = ring.size();
+    auto rightNormal = [&](size_t edge) {
+        Vec3f along = normalize(lift(ring[(edge + 1) % n], 0) - lift(ring[edge], 0));
+        return cross(along, Vec3f{0, 0, 1});
+    };
+    for (size_t i = 0; i < n; ++i) {
+        Vec3f a = rightNormal((i + n - 1) % n), b = rightNormal(i);
+        Vec3f corner = lift(ring[i], 0) + (a + b) * (distance / (1 + dot(a, b)));
+        moved.push_back({corner.x, corner.y});
     }
-    for (size_t i = 0; i < vertices.size(); ++i) cdt.insert_constraint(vertices[i], vertices[(i + 1) % vertices.size()]);
+    return moved;
+}
+
+bool areDisjoint(std::span<const Vec2f> a, std::span<const Vec2f> b) {
+    std::vector<Point> pa = toCgal(a), pb = toCgal(b);
+    for (size_t i = 0; i < pa.size(); ++i) {
+        Segment edge(pa[i], pa[(i + 1) % pa.size()]);
+        for (size_t j = 0; j < pb.size(); ++j) {
+            if (CGAL::do_intersect(edge, Segment(pb[j], pb[(j + 1) % pb.size()]))) return false;
+        }
+    }
+    // With no crossings, one lies inside the other exactly when its first point does.
+    return CGAL::bounded_side_2(pb.begin(), pb.end(), pa[0], Kernel()) == CGAL::ON_UNBOUNDED_SIDE &&
+           CGAL::bounded_side_2(pa.begin(), pa.end(), pb[0], Kernel()) == CGAL::ON_UNBOUNDED_SIDE;
+}
+
+std::vector<uint32_t> triangulatePolygon(std::span<const Vec2f> polygon) {
+    std::vector<Vec2f> ring(polygon.begin(), polygon.end());
+    return triangulatePolygonWithHoles(std::span(&ring, 1));
+}
+
+std::vector<uint32_t> triangulatePolygonWithHoles(std::span<const std::vector<Vec2f>> rings) {
+    Cdt cdt;
+    uint32_t index = 0;
+    for (const std::vector<Vec2f> &ring : rings) {
+        std::vector<Cdt::Vertex_handle> vertices;
+        for (Vec2f p : ring) {
+            vertices.push_back(cdt.insert(Point(p.x, p.y)));
+            vertices.back()->info() = index++;
+        }
+        for (size_t i = 0; i < vertices.size(); ++i) cdt.insert_constraint(vertices[i], vertices[(i + 1) % vertices.size()]);
+    }
     markInside(cdt);
     std::vector<uint32_t> indices;
     for (Cdt::Face_handle f : cdt.finite_face_handles()) {

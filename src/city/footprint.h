@@ -48,8 +48,19 @@ bool isSimplePolygon(std::span<const Vec2f> polygon);
 bool isCounterClockwise(std::span<const Vec2f> polygon);  // of a simple polygon
 // Whether simple polygon `inner` lies inside simple polygon `outer` without touching its outline.
 bool liesInside(std::span<const Vec2f> inner, std::span<const Vec2f> outer);
+// Each edge of a ring moved `distance` to its right (outwards on a counter-clockwise ring;
+// negative: to its left) and neighbouring moved lines intersected: corner i moves by
+// distance · (a + b) / (1 + a·b), a and b the right-hand normals of the edges meeting there,
+// which lies on both moved lines (and is distance · a where the edges run straight on). The
+// result may cross itself where the ring cannot take the distance.
+std::vector<Vec2f> offsetPolygon(std::span<const Vec2f> ring, float distance);
+// Whether simple polygons `a` and `b` neither touch nor lie one inside the other.
+bool areDisjoint(std::span<const Vec2f> a, std::span<const Vec2f> b);
 // Triangles covering a simple counter-clockwise polygon: n − 2 of them, three indices into the
 // polygon each, counter-clockwise (CGAL's constrained Delaunay triangulation, so no new points).
 std::vector<uint32_t> triangulatePolygon(std::span<const Vec2f> polygon);
+// The same for a polygon with holes: rings[0] the outline, the rest holes inside it, apart from
+// each other; indices count through the rings in order (ring 1 starts after ring 0's points).
+std::vector<uint32_t> triangulatePolygonWithHoles(std::span<const std::vector<Vec2f>> rings);
 
 }  // namespace veduta

@@ -1,8 +1,9 @@
 #include "city/roofs.h"
 
+#include "city/roof_faces.h"
+
 #include <algorithm>
 #include <cmath>
-#include <initializer_list>
 #include <stdexcept>
 
 namespace veduta {
@@ -13,46 +14,7 @@ namespace {
 // narrower than a centimetre is float noise, not a roof.
 constexpr float kMinTopEdgeLength = 0.01f;
 
-// Texture coordinates in metres on a plane: distances from `origin` along two unit axes.
-struct UvPlane {
-    Vec3f origin, u, v;
-    Vec2f at(const Vec3f &p) const { return {dot(p - origin, u), dot(p - origin, v)}; }
-};
-
-// The unit normal of a planar polygon, counter-clockwise seen from its front: Newell's sum,
-// taken relative to the first corner so that buildings far from the origin keep their precision.
-Vec3f faceNormal(std::initializer_list<Vec3f> corners) {
-    Vec3f sum{0.0f};
-    const Vec3f *c = corners.begin();
-    for (size_t i = 1; i + 1 < corners.size(); ++i) sum += cross(c[i] - c[0], c[i + 1] - c[0]);
-    return normalize(sum);
-}
-
-// A roof covering's texture runs one tile per metre along its eaves (its first edge) and one
-// per metre up the slant, not per metre of height, so that tiles keep their size on any pitch.
-UvPlane slopeUvPlane(std::initializer_list<Vec3f> corners) {
-    const Vec3f *c = corners.begin();
-    Vec3f along = normalize(c[1] - c[0]);
-    return {c[0], along, cross(faceNormal(corners), along)};
-}
-
-// A convex face, counter-clockwise seen from outside, with its own vertices, so that its normal
-// is the face's.
-void addFace(Mesh &m, std::initializer_list<Vec3f> corners, const UvPlane &uv, RoofSurface surface) {
-    auto base = uint32_t(m.positions.size());
-    Vec3f normal = faceNormal(corners);
-    for (const Vec3f &p : corners) {
-        m.positions.push_back(p);
-        m.normals.push_back(normal);
-        m.uvs.push_back(uv.at(p));
-    }
-    for (uint32_t k = 1; k + 1 < corners.size(); ++k) {
-        m.indices.insert(m.indices.end(), {base, base + k, base + k + 1});
-        m.triangleMaterials.push_back(surface);
-    }
-}
-
-void addSlope(Mesh &m, std::initializer_list<Vec3f> corners) {
+void addSlope(Mesh &m, const std::vector<Vec3f> &corners) {
     addFace(m, corners, slopeUvPlane(corners), RoofCovering);
 }
 
@@ -68,32 +30,9 @@ void addFlatTop(Mesh &m, const std::vector<Vec2f> &outline, float z) {
     m.triangleMaterials.resize(m.triangleCount(), RoofCovering);
 }
 
-bool isRightAngled(const Footprint &footprint) {
-    float tolerance = std::sin(radians(kRightAngleToleranceDegrees));
-    for (size_t e = 0; e < footprint.edgeCount(); ++e) {
-        float cosine = dot(footprint.edgeDirection(e), footprint.edgeDirection((e + 1) % footprint.edgeCount()));
-        if (std::abs(cosine) > tolerance) return false;
-    }
-    return true;
-}
-
 size_t firstStreetEdge(const Footprint &footprint) {
     auto street = std::find(footprint.streetEdges.begin(), footprint.streetEdges.end(), true);
     return street == footprint.streetEdges.end() ? 0 : size_t(street - footprint.streetEdges.begin());
-}
-
-// Each edge moved `inset` inwards and neighbouring lines intersected: corner i moves by
-// inset · (a + b) / (1 + a·b), a and b the inward normals of the edges meeting there, which lies
-// on both moved lines (and is inset · a where the edges run straight on).
-std::vector<Vec2f> insetOutline(const Footprint &footprint, float inset) {
-    std::vector<Vec2f> outline;
-    size_t n = footprint.edgeCount();
-    for (size_t i = 0; i < n; ++i) {
-        Vec3f a = -footprint.outwardNormal((i + n - 1) % n), b = -footprint.outwardNormal(i);
-        Vec3f corner = lift(footprint.points[i], 0) + (a + b) * (inset / (1 + dot(a, b)));
-        outline.push_back({corner.x, corner.y});
-    }
-    return outline;
 }
 
 // An inset outline is a roof top when every edge still runs the way its footprint edge does,
@@ -120,6 +59,15 @@ MansardRoof slopedMansard(const Footprint &footprint, std::vector<Vec2f> top, fl
 
 }  // namespace
 
+bool isRightAngled(const Footprint &footprint) {
+    float tolerance = std::sin(radians(kRightAngleToleranceDegrees));
+    for (size_t e = 0; e < footprint.edgeCount(); ++e) {
+        float cosine = dot(footprint.edgeDirection(e), footprint.edgeDirection((e + 1) % footprint.edgeCount()));
+        if (std::abs(cosine) > tolerance) return false;
+    }
+    return true;
+}
+
 RoofKind chooseRoofKind(const Footprint &footprint) {
     bool gable = footprint.edgeCount() == 4 &&
                  std::count(footprint.streetEdges.begin(), footprint.streetEdges.end(), true) == 1 &&
@@ -145,9 +93,8 @@ Mesh gableRoof(const Footprint &footprint, float eavesHeight, float roofHeight) 
     // walls' texture runs (building_generator.h).
     for (size_t k : {size_t(1), size_t(3)}) {
         size_t edge = (street + k) % 4;
-        Vec3f along = footprint.edgeDirection(edge);
-        UvPlane wall{lift(footprint.edgeStart(edge), footprint.base) - along * footprint.perimeterBefore(edge), along,
-                     {0, 0, 1}};
+        UvPlane wall = wallUvPlane(footprint.edgeStart(edge), footprint.edgeDirection(edge),
+                                   footprint.perimeterBefore(edge), footprint.base);
         addFace(m, {p[k], p[(k + 1) % 4], k == 1 ? ridge2 : ridge1}, wall, RoofGableWall);
     }
     return m;
@@ -156,7 +103,7 @@ Mesh gableRoof(const Footprint &footprint, float eavesHeight, float roofHeight) 
 MansardRoof mansardRoof(const Footprint &footprint, float eavesHeight, float roofHeight, float inset) {
     float eavesZ = footprint.base + eavesHeight;
     for (int halvings = 0; inset > 0 && halvings <= kMansardInsetHalvings; ++halvings, inset /= 2) {
-        std::vector<Vec2f> top = insetOutline(footprint, inset);
+        std::vector<Vec2f> top = offsetPolygon(footprint.points, -inset);
         if (isValidTop(footprint, top)) return slopedMansard(footprint, std::move(top), inset, eavesZ, eavesZ + roofHeight);
     }
     MansardRoof flat{{}, 0, footprint.points};

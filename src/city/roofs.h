@@ -16,6 +16,8 @@ enum class RoofKind { Gable, Mansard };
 // right angles (within kRightAngleToleranceDegrees); a mansard otherwise.
 inline constexpr float kRightAngleToleranceDegrees = 1;
 RoofKind chooseRoofKind(const Footprint &footprint);
+// Whether every corner of the footprint is a right angle within kRightAngleToleranceDegrees.
+bool isRightAngled(const Footprint &footprint);
 
 // Roof meshes are in world coordinates, with flat per-face normals pointing out and up, UVs
 // in metres, and triangleMaterials holding RoofSurface values. Heights are above the

@@ -1,0 +1,385 @@
+#include "city/roof_shapes.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_2_algorithms.h>
+#include <CGAL/Polygon_with_holes_2.h>
+#include <CGAL/create_straight_skeleton_from_polygon_with_holes_2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <stdexcept>
+#include <variant>
+
+#include <fmt/format.h>
+
+#include "city/roof_faces.h"
+
+namespace veduta {
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Ring = std::vector<Vec2f>;
+
+// A builder's result: the roof, or why the footprint cannot take its type.
+using Attempt = std::variant<Mesh, std::string>;
+
+const Vec3f kUp{0, 0, 1};
+
+std::vector<Ring> ringsOf(const RoofFootprint &footprint) {
+    std::vector<Ring> rings{footprint.outer};
+    rings.insert(rings.end(), footprint.holes.begin(), footprint.holes.end());
+    return rings;
+}
+
+Vec3f direction(Vec2f from, Vec2f to) { return normalize(lift(to, 0) - lift(from, 0)); }
+
+// Horizontal, away from the building: it lies to the left of every edge.
+Vec3f outwardNormal(Vec2f from, Vec2f to) { return cross(direction(from, to), kUp); }
+
+// Calls visit(a, b, metres along the ring before a) for every edge of every ring.
+void forEachEdge(const RoofFootprint &footprint, const std::function<void(Vec2f, Vec2f, float)> &visit) {
+    for (const Ring &ring : ringsOf(footprint)) {
+        float before = 0;
+        for (size_t i = 0; i < ring.size(); ++i) {
+            Vec2f a = ring[i], b = ring[(i + 1) % ring.size()];
+            visit(a, b, before);
+            before += length(lift(b, 0) - lift(a, 0));
+        }
+    }
+}
+
+bool isFinite(const Ring &ring) {
+    return std::all_of(ring.begin(), ring.end(), [](Vec2f p) { return std::isfinite(p.x) && std::isfinite(p.y); });
+}
+
+bool isValid(const RoofFootprint &footprint) {
+    const Ring &outer = footprint.outer;
+    if (outer.size() < 3 || !isFinite(outer) || !isSimplePolygon(outer) || !isCounterClockwise(outer)) return false;
+    for (size_t h = 0; h < footprint.holes.size(); ++h) {
+        const Ring &hole = footprint.holes[h];
+        if (hole.size() < 3 || !isFinite(hole) || !isSimplePolygon(hole) || isCounterClockwise(hole)) return false;
+        if (!liesInside(hole, outer)) return false;
+        for (size_t other = 0; other < h; ++other) {
+            if (!areDisjoint(hole, footprint.holes[other])) return false;
+        }
+    }
+    return true;
+}
+
+RoofFootprint offsetFootprint(const RoofFootprint &footprint, float distance) {
+    RoofFootprint moved{offsetPolygon(footprint.outer, distance), {}, footprint.base};
+    for (const Ring &hole : footprint.holes) moved.holes.push_back(offsetPolygon(hole, distance));
+    return moved;
+}
+
+bool keepsDirections(const Ring &original, const Ring &moved) {
+    for (size_t e = 0; e < original.size(); ++e) {
+        Vec2f a = original[e], b = original[(e + 1) % original.size()];
+        Vec2f movedA = moved[e], movedB = moved[(e + 1) % moved.size()];
+        if (dot(lift(movedB, 0) - lift(movedA, 0), direction(a, b)) <= 0) return false;
+    }
+    return true;
+}
+
+// Whether `moved` is `original` offset by `distance` as it should be: a valid footprint whose
+// every edge runs as before, each ring strictly beyond (distance > 0) or within its original.
+bool isCleanOffset(const RoofFootprint &original, const RoofFootprint &moved, float distance) {
+    if (!isValid(moved)) return false;
+    std::vector<Ring> before = ringsOf(original), after = ringsOf(moved);
+    for (size_t r = 0; r < before.size(); ++r) {
+        if (!keepsDirections(before[r], after[r])) return false;
+        // The outline grows outwards, a hole shrinks: the smaller ring lies in the larger.
+        bool grows = (r == 0) == (distance > 0);
+        if (!(grows ? liesInside(before[r], after[r]) : liesInside(after[r], before[r]))) return false;
+    }
+    return true;
+}
+
+// A horizontal or sloping cover over the footprint, corners at heightAt above `eavesZ`.
+void addCover(Mesh &m, const RoofFootprint &footprint, float eavesZ, const std::function<float(Vec2f)> &heightAt,
+              const Vec3f &normal, const UvPlane &uv) {
+    std::vector<std::vector<Vec3f>> rings;
+    for (const Ring &ring : ringsOf(footprint)) {
+        rings.emplace_back();
+        for (Vec2f p : ring) rings.back().push_back(lift(p, eavesZ + heightAt(p)));
+    }
+    addProjectedFace(m, rings, normal, uv, RoofCovering);
+}
+
+void addFlatCover(Mesh &m, const RoofFootprint &footprint, float z) {
+    addCover(m, footprint, z, [](Vec2f) { return 0.0f; }, kUp, UvPlane{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+}
+
+// The parapet's inner outline: the footprint moved in by the parapet's thickness, halved until
+// it fits; none when the footprint cannot take even the last.
+std::optional<RoofFootprint> parapetInside(const RoofFootprint &footprint) {
+    float thickness = kParapetThickness;
+    for (int halvings = 0; halvings <= kParapetHalvings; ++halvings, thickness /= 2) {
+        RoofFootprint inside = offsetFootprint(footprint, -thickness);
+        if (isCleanOffset(footprint, inside, -thickness)) return inside;
+    }
+    return std::nullopt;
+}
+
+// The deck at the eaves, inside a parapet: outer walls up from the eaves, a flat top, inner
+// walls down to the deck. Without a parapet (or room for one), the footprint flat at the eaves.
+Mesh flatRoof(const RoofFootprint &footprint, float eavesAboveBase, float parapetHeight) {
+    float eavesZ = footprint.base + eavesAboveBase, topZ = eavesZ + parapetHeight;
+    Mesh m;
+    std::optional<RoofFootprint> inside = parapetHeight > 0 ? parapetInside(footprint) : std::nullopt;
+    if (!inside) {
+        addFlatCover(m, footprint, eavesZ);
+        return m;
+    }
+    std::vector<Ring> outerRings = ringsOf(footprint), innerRings = ringsOf(*inside);
+    const UvPlane groundUv{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    for (size_t r = 0; r < outerRings.size(); ++r) {
+        const Ring &outer = outerRings[r], &inner = innerRings[r];
+        float before = 0;
+        for (size_t i = 0; i < outer.size(); ++i) {
+            size_t j = (i + 1) % outer.size();
+            Vec2f a = outer[i], b = outer[j], innerA = inner[i], innerB = inner[j];
+            Vec3f along = direction(a, b);
+            addFace(m, {lift(a, eavesZ), lift(b, eavesZ), lift(b, topZ), lift(a, topZ)},
+                    wallUvPlane(a, along, before, footprint.base), RoofGableWall);
+            addProjectedFace(m, {{lift(a, topZ), lift(b, topZ), lift(innerB, topZ), lift(innerA, topZ)}}, kUp, groundUv,
+                             RoofGableWall);
+            addFace(m, {lift(innerB, eavesZ), lift(innerA, eavesZ), lift(innerA, topZ), lift(innerB, topZ)},
+                    wallUvPlane(innerB, -along, 0, footprint.base), RoofGableWall);
+            before += length(lift(b, 0) - lift(a, 0));
+        }
+    }
+    addFlatCover(m, *inside, eavesZ);
+    return m;
+}
+
+CGAL::Polygon_2<Kernel> toCgalPolygon(const Ring &ring) {
+    CGAL::Polygon_2<Kernel> polygon;
+    for (Vec2f p : ring) polygon.push_back(Kernel::Point_2(p.x, p.y));
+    return polygon;
+}
+
+// Every skeleton face belongs to one footprint edge (its halfedge(), running along the
+// footprint), and its points lie in the plane rising from that edge at the pitch: a point
+// reached at offset time t stands t · slope above the eaves.
+Attempt hipRoof(const RoofFootprint &footprint, float eavesAboveBase, float slope) {
+    CGAL::Polygon_with_holes_2<Kernel> polygon(toCgalPolygon(footprint.outer));
+    for (const Ring &hole : footprint.holes) polygon.add_hole(toCgalPolygon(hole));
+    auto skeleton = CGAL::create_interior_straight_skeleton_2(polygon, Kernel());
+    if (!skeleton) return std::string("CGAL could not build the footprint's straight skeleton");
+    float eavesZ = footprint.base + eavesAboveBase;
+    Mesh m;
+    for (auto face = skeleton->faces_begin(); face != skeleton->faces_end(); ++face) {
+        std::vector<Vec3f> corners;
+        auto edge = face->halfedge(), h = edge;
+        do {
+            const auto &p = h->vertex()->point();
+            corners.push_back({float(p.x()), float(p.y()), eavesZ + float(h->vertex()->time()) * slope});
+            h = h->next();
+        } while (h != edge);
+        // The loop began at the footprint edge's end; its start closes it. Put it first.
+        std::rotate(corners.begin(), corners.end() - 1, corners.end());
+        Vec2f a{corners[0].x, corners[0].y}, b{corners[1].x, corners[1].y};
+        Vec3f normal = normalize(outwardNormal(a, b) * slope + kUp);
+        size_t trianglesBefore = m.triangleCount();
+        addProjectedFace(m, {corners}, normal, slopeUvPlane(corners), RoofCovering);
+        if (m.triangleCount() - trianglesBefore != corners.size() - 2) {
+            return fmt::format("the skeleton face of edge ({} {}) – ({} {}) does not triangulate", a.x, a.y, b.x, b.y);
+        }
+    }
+    return m;
+}
+
+Vec2f areaCentroid(const Ring &ring) {
+    double area = 0, x = 0, y = 0;
+    Vec2f origin = ring[0];
+    for (size_t i = 1; i + 1 < ring.size(); ++i) {
+        double ax = ring[i].x - origin.x, ay = ring[i].y - origin.y;
+        double bx = ring[i + 1].x - origin.x, by = ring[i + 1].y - origin.y;
+        double twiceArea = ax * by - ay * bx;
+        area += twiceArea;
+        x += twiceArea * (ax + bx) / 3;
+        y += twiceArea * (ay + by) / 3;
+    }
+    return {float(origin.x + x / area), float(origin.y + y / area)};
+}
+
+Attempt pyramidRoof(const RoofFootprint &footprint, float eavesAboveBase, float slope) {
+    const Ring &outer = footprint.outer;
+    std::vector<Kernel::Point_2> points;
+    for (Vec2f p : outer) points.emplace_back(p.x, p.y);
+    if (!footprint.holes.empty()) return std::string("a pyramid needs a footprint without courtyards");
+    if (!CGAL::is_convex_2(points.begin(), points.end(), Kernel())) return std::string("a pyramid needs a convex footprint");
+    // The apex stands over the centroid as high as the pitch rises over its nearest edge.
+    Vec2f centre = areaCentroid(outer);
+    float reach = std::numeric_limits<float>::max();
+    forEachEdge(footprint, [&](Vec2f a, Vec2f b, float) {
+        reach = std::min(reach, dot(lift(a, 0) - lift(centre, 0), outwardNormal(a, b)));
+    });
+    float eavesZ = footprint.base + eavesAboveBase;
+    Vec3f apex = lift(centre, eavesZ + reach * slope);
+    Mesh m;
+    forEachEdge(footprint, [&](Vec2f a, Vec2f b, float) {
+        std::vector<Vec3f> corners{lift(a, eavesZ), lift(b, eavesZ), apex};
+        addFace(m, corners, slopeUvPlane(corners), RoofCovering);
+    });
+    return m;
+}
+
+size_t longestEdge(const Ring &ring) {
+    size_t longest = 0;
+    float longestLength = 0;
+    for (size_t e = 0; e < ring.size(); ++e) {
+        float edgeLength = length(lift(ring[(e + 1) % ring.size()], 0) - lift(ring[e], 0));
+        if (edgeLength > longestLength) longest = e, longestLength = edgeLength;
+    }
+    return longest;
+}
+
+// One plane rising from the low edge's line at the pitch, lifted so that the footprint's lowest
+// point (the low edge's, on a convex footprint) lies at the eaves; walls close it down to the
+// eaves wherever it stands higher.
+Mesh shedRoof(const RoofFootprint &footprint, float eavesAboveBase, float slope, size_t lowEdge) {
+    const Ring &outer = footprint.outer;
+    Vec2f low = outer[lowEdge], lowEnd = outer[(lowEdge + 1) % outer.size()];
+    Vec3f inwards = -outwardNormal(low, lowEnd);
+    auto rise = [&](Vec2f p) { return dot(lift(p, 0) - lift(low, 0), inwards); };
+    float lowest = 0;
+    for (const Ring &ring : ringsOf(footprint)) {
+        for (Vec2f p : ring) lowest = std::min(lowest, rise(p));
+    }
+    auto heightAt = [&](Vec2f p) {
+        float height = (rise(p) - lowest) * slope;
+        return height < kMinShedWallHeight ? 0.0f : height;
+    };
+    float eavesZ = footprint.base + eavesAboveBase;
+    Vec3f normal = normalize(-inwards * slope + kUp), along = direction(low, lowEnd);
+    Mesh m;
+    addCover(m, footprint, eavesZ, heightAt, normal, UvPlane{lift(low, eavesZ + heightAt(low)), along, cross(normal, along)});
+    forEachEdge(footprint, [&](Vec2f a, Vec2f b, float before) {
+        float heightA = heightAt(a), heightB = heightAt(b);
+        if (heightA == 0 && heightB == 0) return;
+        std::vector<Vec3f> corners{lift(a, eavesZ), lift(b, eavesZ)};
+        if (heightB > 0) corners.push_back(lift(b, eavesZ + heightB));
+        if (heightA > 0) corners.push_back(lift(a, eavesZ + heightA));
+        addFace(m, corners, wallUvPlane(a, direction(a, b), before, footprint.base), RoofGableWall);
+    });
+    return m;
+}
+
+// roofs.h's gable over a rectangle: its ridge parallel to its "street" edge, so that edge is
+// the one before the gable edge.
+Attempt gableOverRectangle(const RoofFootprint &footprint, float eavesAboveBase, float slope, int gableEdge) {
+    Footprint rectangle{footprint.outer, std::vector<bool>(footprint.outer.size(), false), footprint.base};
+    if (!footprint.holes.empty() || rectangle.edgeCount() != 4 || !isRightAngled(rectangle)) {
+        return std::string("a gable needs a rectangular footprint without courtyards");
+    }
+    size_t gable = gableEdge >= 0 ? size_t(gableEdge) : (rectangle.edgeLength(0) <= rectangle.edgeLength(1) ? 0 : 1);
+    rectangle.streetEdges[(gable + 3) % 4] = true;
+    return gableRoof(rectangle, eavesAboveBase, rectangle.edgeLength(gable) / 2 * slope);
+}
+
+// roofs.h's mansard, its slopes reaching kMansardInset in at the pitch (steeper where the inset
+// had to be halved).
+Attempt mansardOverFootprint(const RoofFootprint &footprint, float eavesAboveBase, float slope) {
+    if (!footprint.holes.empty()) return std::string("a mansard needs a footprint without courtyards");
+    Footprint plain{footprint.outer, std::vector<bool>(footprint.outer.size(), false), footprint.base};
+    MansardRoof roof = mansardRoof(plain, eavesAboveBase, kMansardInset * slope, kMansardInset);
+    if (roof.inset == 0) return std::string("the footprint is too narrow for a mansard's slopes");
+    return std::move(roof.mesh);
+}
+
+// The types tried before the last resort, Flat, in order.
+std::vector<RoofType> attemptOrder(RoofType type) {
+    switch (type) {
+    case RoofType::Flat: return {};
+    case RoofType::Pyramid: return {RoofType::Pyramid, RoofType::Hip};
+    case RoofType::Gable: return {RoofType::Gable, RoofType::Hip};
+    default: return {type};
+    }
+}
+
+Attempt buildSloped(RoofType type, const RoofFootprint &footprint, float eavesAboveBase, float slope,
+                    const RoofOptions &options) {
+    switch (type) {
+    case RoofType::Hip: return hipRoof(footprint, eavesAboveBase, slope);
+    case RoofType::Pyramid: return pyramidRoof(footprint, eavesAboveBase, slope);
+    case RoofType::Gable: return gableOverRectangle(footprint, eavesAboveBase, slope, options.gableEdge);
+    case RoofType::Mansard: return mansardOverFootprint(footprint, eavesAboveBase, slope);
+    case RoofType::Shed: {
+        size_t low = options.gableEdge >= 0 ? size_t(options.gableEdge) : longestEdge(footprint.outer);
+        return shedRoof(footprint, eavesAboveBase, slope, low);
+    }
+    case RoofType::Flat: break;
+    }
+    throw std::logic_error("a flat roof is not sloped");
+}
+
+void checkArguments(const RoofFootprint &footprint, const RoofOptions &options) {
+    if (!isValid(footprint)) {
+        throw std::invalid_argument(
+            "a roof footprint needs a simple counter-clockwise outline with simple clockwise holes inside it and apart");
+    }
+    if (options.type != RoofType::Flat && !(options.pitchDegrees > 0 && options.pitchDegrees < 90)) {
+        throw std::invalid_argument(fmt::format("a roof pitch of {}° is not between 0° and 90°", options.pitchDegrees));
+    }
+    if (!(options.overhang >= 0) || !std::isfinite(options.overhang)) {
+        throw std::invalid_argument(fmt::format("a roof overhang of {} m is not a length", options.overhang));
+    }
+    if (!(options.parapetHeight >= 0) || !std::isfinite(options.parapetHeight)) {
+        throw std::invalid_argument(fmt::format("a parapet of {} m is not a height", options.parapetHeight));
+    }
+    if (options.gableEdge < -1 || options.gableEdge >= int(footprint.outer.size())) {
+        throw std::invalid_argument(fmt::format("the footprint has no edge {}", options.gableEdge));
+    }
+}
+
+std::optional<std::string> joined(const std::vector<std::string> &notes) {
+    if (notes.empty()) return std::nullopt;
+    std::string text = notes[0];
+    for (size_t i = 1; i < notes.size(); ++i) text = fmt::format("{}; {}", text, notes[i]);
+    return text;
+}
+
+}  // namespace
+
+std::string_view roofTypeName(RoofType type) {
+    switch (type) {
+    case RoofType::Flat: return "flat";
+    case RoofType::Hip: return "hip";
+    case RoofType::Pyramid: return "pyramid";
+    case RoofType::Shed: return "shed";
+    case RoofType::Gable: return "gable";
+    case RoofType::Mansard: return "mansard";
+    }
+    return "unknown";
+}
+
+RoofResult buildRoof(const RoofFootprint &footprint, float eavesHeight, const RoofOptions &options) {
+    checkArguments(footprint, options);
+    std::vector<std::string> notes;
+    RoofFootprint eaves = footprint;
+    float overhang = options.overhang;
+    if (overhang > 0) {
+        RoofFootprint moved = offsetFootprint(footprint, overhang);
+        if (isCleanOffset(footprint, moved, overhang)) {
+            eaves = std::move(moved);
+        } else {
+            notes.push_back(fmt::format("the footprint cannot take an overhang of {} m; built without", overhang));
+            overhang = 0;
+        }
+    }
+    // The slopes run on over the overhang: lower eaves, the same wall tops.
+    float slope = std::tan(radians(options.pitchDegrees));
+    for (RoofType type : attemptOrder(options.type)) {
+        Attempt attempt = buildSloped(type, eaves, eavesHeight - overhang * slope, slope, options);
+        if (Mesh *mesh = std::get_if<Mesh>(&attempt)) return {std::move(*mesh), type, joined(notes)};
+        notes.push_back(fmt::format("no {} roof: {}", roofTypeName(type), std::get<std::string>(attempt)));
+    }
+    return {flatRoof(eaves, eavesHeight, options.parapetHeight), RoofType::Flat, joined(notes)};
+}
+
+}  // namespace veduta
