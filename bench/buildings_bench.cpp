@@ -17,7 +17,7 @@
 
 #include "city/assets.h"
 #include "city/building_generator.h"
-#include "city/rule_file.h"
+#include "city/building_rules.h"
 #include "core/hash.h"
 #include "median_reporter.h"
 #include "scene/material_file.h"
@@ -28,9 +28,9 @@ namespace {
 struct Fixture {
     std::string folder = std::string(VEDUTA_SOURCE_DIR) + "/rules/gruenderzeit";
     const AssetLibrary &assets = AssetLibrary::builtIn();
-    RuleSet rules = readRuleFile(folder + "/FacadeStructure.xml",
-                                 [this](std::string_view name) { return assets.isModelName(name); });
-    Grammar grammar{rules, [this](std::string_view name) { return assets.findTerminal(name); }};
+    BuildingRules loaded{folder + "/FacadeStructure.xml"};
+    const RuleSet &rules = loaded.rules;
+    const Grammar &grammar = loaded.grammar;
     std::vector<Material> materials = [this] {
         std::vector<Material> result;
         for (const MaterialDesc &desc : readMaterialFile(folder + "/materials.xml")) {

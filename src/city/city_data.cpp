@@ -17,16 +17,10 @@ namespace {
 // lots drawn on a block's outline share its points, give or take the float rounding.
 constexpr float kOutsideTolerance = 0.01f;
 
-float distanceToSegment(Vec2f p, Vec2f a, Vec2f b) {
-    float dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
-    float t = len2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / len2, 0.0f, 1.0f) : 0.0f;
-    return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
-}
-
 // Inside by the crossing rule, or within the tolerance of the outline.
 bool insideOrOn(Vec2f p, const std::vector<Vec2f> &polygon) {
     bool inside = false;
-    float nearest = 1e30f;
+    double nearest = 1e30;
     for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
         const Vec2f &a = polygon[i], &b = polygon[j];
         if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) inside = !inside;

@@ -150,6 +150,13 @@ bool areDisjoint(std::span<const Vec2f> a, std::span<const Vec2f> b) {
            CGAL::bounded_side_2(pa.begin(), pa.end(), pb[0], Kernel()) == CGAL::ON_UNBOUNDED_SIDE;
 }
 
+double distanceToSegment(Vec2f p, Vec2f a, Vec2f b) {
+    double abx = double(b.x) - a.x, aby = double(b.y) - a.y, apx = double(p.x) - a.x, apy = double(p.y) - a.y;
+    double length2 = abx * abx + aby * aby;
+    double t = length2 > 0 ? std::clamp((apx * abx + apy * aby) / length2, 0.0, 1.0) : 0.0;
+    return std::hypot(apx - t * abx, apy - t * aby);
+}
+
 std::vector<uint32_t> triangulatePolygon(std::span<const Vec2f> polygon) {
     std::vector<Vec2f> ring(polygon.begin(), polygon.end());
     return triangulatePolygonWithHoles(std::span(&ring, 1));

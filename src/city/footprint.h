@@ -54,6 +54,9 @@ bool liesInside(std::span<const Vec2f> inner, std::span<const Vec2f> outer);
 // which lies on both moved lines (and is distance · a where the edges run straight on). The
 // result may cross itself where the ring cannot take the distance.
 std::vector<Vec2f> offsetPolygon(std::span<const Vec2f> ring, float distance);
+// The distance from `p` to the segment from `a` to `b` (to `a` when the two coincide), worked
+// out in double precision.
+double distanceToSegment(Vec2f p, Vec2f a, Vec2f b);
 // Whether simple polygons `a` and `b` neither touch nor lie one inside the other.
 bool areDisjoint(std::span<const Vec2f> a, std::span<const Vec2f> b);
 // Triangles covering a simple counter-clockwise polygon: n − 2 of them, three indices into the

@@ -6,7 +6,7 @@
 
 #include "city/assets.h"
 #include "city/building_generator.h"
-#include "city/rule_file.h"
+#include "city/building_rules.h"
 #include "city/warning_list.h"
 
 namespace veduta {
@@ -26,11 +26,11 @@ Footprint footprintOf(const BuildingDesc &building, std::vector<std::string> &wa
 void generateGroup(const BuildingGroupDesc &group, RenderSceneBuilder &builder, std::vector<std::string> &warnings) {
     if (!std::filesystem::is_regular_file(group.rules))
         throw InputError(group.rulesLoc, fmt::format("cannot read the rule file {}", group.rules.string()));
-    const AssetLibrary &assets = AssetLibrary::builtIn();
-    RuleSet rules = readRuleFile(group.rules, [&](std::string_view name) { return assets.isModelName(name); });
+    BuildingRules loaded(group.rules);
+    const RuleSet &rules = loaded.rules;
+    const Grammar &grammar = loaded.grammar;
     warnings.insert(warnings.end(), rules.warnings.begin(), rules.warnings.end());
-    Grammar grammar(rules, [&](std::string_view name) { return assets.findTerminal(name); });
-    BuildingGenerator generator(grammar, assets, builder, group.seed);
+    BuildingGenerator generator(grammar, AssetLibrary::builtIn(), builder, group.seed);
     for (const BuildingDesc &desc : group.buildings) {
         BuildingSpec spec;
         spec.id = desc.buildingId;

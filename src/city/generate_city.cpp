@@ -10,7 +10,7 @@
 #include "city/building_generator.h"
 #include "city/city_data.h"
 #include "city/lot_subdivision.h"
-#include "city/rule_file.h"
+#include "city/building_rules.h"
 #include "city/street_geometry.h"
 #include "city/warning_list.h"
 #include "core/hash.h"
@@ -21,9 +21,10 @@ namespace {
 
 // One of the city's rule files, read once, with the generator that builds with it.
 struct RuleFileBuilder {
-    RuleSet rules;
-    std::unique_ptr<Grammar> grammar;
-    std::unique_ptr<BuildingGenerator> generator;
+    RuleFileBuilder(const std::filesystem::path &file, RenderSceneBuilder &builder, uint32_t seed)
+        : loaded(file), generator(loaded.grammar, AssetLibrary::builtIn(), builder, seed) {}
+    BuildingRules loaded;
+    BuildingGenerator generator;
 };
 
 std::vector<std::unique_ptr<RuleFileBuilder>> readRuleFiles(const CityDesc &city, const CityData &data,
@@ -31,15 +32,11 @@ std::vector<std::unique_ptr<RuleFileBuilder>> readRuleFiles(const CityDesc &city
                                                             std::vector<std::string> &warnings) {
     if (data.ruleFiles.empty())
         throw InputError(city.fileLoc, "the city names no <Rulefile> to build its lots with");
-    const AssetLibrary &assets = AssetLibrary::builtIn();
     std::vector<std::unique_ptr<RuleFileBuilder>> builders;
     for (const std::filesystem::path &file : data.ruleFiles) {
-        auto b = std::make_unique<RuleFileBuilder>();
-        b->rules = readRuleFile(file, [&](std::string_view name) { return assets.isModelName(name); });
-        warnings.insert(warnings.end(), b->rules.warnings.begin(), b->rules.warnings.end());
-        b->grammar = std::make_unique<Grammar>(b->rules, [&](std::string_view name) { return assets.findTerminal(name); });
-        b->generator = std::make_unique<BuildingGenerator>(*b->grammar, assets, builder, city.seed);
-        builders.push_back(std::move(b));
+        builders.push_back(std::make_unique<RuleFileBuilder>(file, builder, city.seed));
+        const std::vector<std::string> &said = builders.back()->loaded.rules.warnings;
+        warnings.insert(warnings.end(), said.begin(), said.end());
     }
     return builders;
 }
@@ -107,7 +104,7 @@ uint32_t buildCity(const CityDesc &city, uint32_t firstBuildingId, RenderSceneBu
     uint32_t id = firstBuildingId;
     for (uint32_t b = 0; b < data.blocks.size(); ++b) {
         const CityBlock &block = data.blocks[b];
-        SettingsStack blockSettings = settingsFor(data, block, nullptr, ruleFiles.front()->rules.settings);
+        SettingsStack blockSettings = settingsFor(data, block, nullptr, ruleFiles.front()->loaded.rules.settings);
         std::vector<Footprint> lots = lotsOf(block, streets, blockSettings, city.seed, b);
         for (size_t l = 0; l < lots.size(); ++l, ++id) {
             // Seed 000 picks one of several rule files at random (L1276).
@@ -117,8 +114,8 @@ uint32_t buildCity(const CityDesc &city, uint32_t firstBuildingId, RenderSceneBu
             spec.id = id;
             spec.objectId = city.objectId;
             spec.footprint = std::move(lots[l]);
-            spec.settings = settingsFor(data, block, given, rules.rules.settings);
-            rules.generator->generate(spec, warnings);
+            spec.settings = settingsFor(data, block, given, rules.loaded.rules.settings);
+            rules.generator.generate(spec, warnings);
         }
     }
     return id - firstBuildingId;

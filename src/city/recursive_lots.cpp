@@ -31,12 +31,6 @@ constexpr double kRightAngleCosine = 0.0872;  // cos 85°
 // around the middle (the thesis gives no σ).
 constexpr float kCutFrom = 0.3f, kCutTo = 0.7f;
 
-double distanceToSegment(Vec2f p, Vec2f a, Vec2f b) {
-    double abx = b.x - a.x, aby = b.y - a.y, apx = p.x - a.x, apy = p.y - a.y;
-    double t = std::clamp((apx * abx + apy * aby) / (abx * abx + aby * aby), 0.0, 1.0);
-    return std::hypot(apx - t * abx, apy - t * aby);
-}
-
 // One flag per edge of `piece`: whether the edge lies along a street edge of the block.
 std::vector<bool> streetFlags(const std::vector<Vec2f> &piece, const Block &block) {
     size_t n = piece.size(), m = block.points.size();

@@ -4,10 +4,10 @@
 #include <cmath>
 
 #include <CGAL/Boolean_set_operations_2.h>
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Polygon_set_2.h>
-#include <CGAL/Triangulation_face_base_with_info_2.h>
+
+#include "city/footprint.h"
 
 namespace veduta {
 
@@ -19,17 +19,6 @@ using Point = Kernel::Point_2;
 using Polygon = CGAL::Polygon_2<Kernel>;
 using PolygonWithHoles = CGAL::Polygon_with_holes_2<Kernel>;
 using PolygonSet = CGAL::Polygon_set_2<Kernel>;
-
-// Faces know how deeply they are nested in the constraints: odd depths lie inside the region.
-struct FaceInfo {
-    int nesting = -1;
-    bool inside() const { return nesting % 2 == 1; }
-};
-using Cdt = CGAL::Constrained_Delaunay_triangulation_2<
-    Kernel, CGAL::Triangulation_data_structure_2<
-                CGAL::Triangulation_vertex_base_2<Kernel>,
-                CGAL::Constrained_triangulation_face_base_2<Kernel,
-                                                            CGAL::Triangulation_face_base_with_info_2<FaceInfo, Kernel>>>>;
 
 constexpr int kNodeSides = 16;
 
@@ -73,62 +62,32 @@ PolygonSet streetArea(const StreetNetwork &network, float extra) {
     return area;
 }
 
-void markNesting(Cdt &cdt) {
-    for (Cdt::Face_handle f : cdt.all_face_handles()) f->info().nesting = -1;
-    std::vector<Cdt::Edge> border;
-    auto flood = [&](Cdt::Face_handle start, int depth) {
-        std::vector<Cdt::Face_handle> queue{start};
-        while (!queue.empty()) {
-            Cdt::Face_handle f = queue.back();
-            queue.pop_back();
-            if (f->info().nesting != -1) continue;
-            f->info().nesting = depth;
-            for (int i = 0; i < 3; ++i) {
-                Cdt::Face_handle n = f->neighbor(i);
-                if (n->info().nesting != -1) continue;
-                if (cdt.is_constrained(Cdt::Edge(f, i)))
-                    border.emplace_back(f, i);
-                else
-                    queue.push_back(n);
-            }
-        }
-    };
-    flood(cdt.infinite_face(), 0);
-    while (!border.empty()) {
-        Cdt::Edge e = border.back();
-        border.pop_back();
-        Cdt::Face_handle n = e.first->neighbor(e.second);
-        if (n->info().nesting == -1) flood(n, e.first->info().nesting + 1);
-    }
-}
-
 Vec3f lifted(const Point &p, float z) { return {float(CGAL::to_double(p.x())), float(CGAL::to_double(p.y())), z}; }
+
+std::vector<Vec2f> toRing(const Polygon &polygon) {
+    std::vector<Vec2f> ring;
+    for (auto v = polygon.vertices_begin(); v != polygon.vertices_end(); ++v)
+        ring.push_back({float(CGAL::to_double(v->x())), float(CGAL::to_double(v->y()))});
+    return ring;
+}
 
 // The region's triangles, facing up, at height z.
 void addRegion(Mesh &mesh, const PolygonSet &region, float z, StreetSurface surface) {
     std::vector<PolygonWithHoles> parts;
     region.polygons_with_holes(std::back_inserter(parts));
     for (const PolygonWithHoles &part : parts) {
-        Cdt cdt;
-        auto constrain = [&](const Polygon &ring) {
-            for (auto e = ring.edges_begin(); e != ring.edges_end(); ++e) cdt.insert_constraint(e->source(), e->target());
-        };
-        constrain(part.outer_boundary());
-        for (const Polygon &hole : part.holes()) constrain(hole);
-        markNesting(cdt);
-        for (Cdt::Face_handle f : cdt.finite_face_handles()) {
-            if (!f->info().inside()) continue;
-            auto base = uint32_t(mesh.positions.size());
-            for (int k = 0; k < 3; ++k) {
-                Vec3f p = lifted(f->vertex(k)->point(), z);
-                mesh.positions.push_back(p);
+        std::vector<std::vector<Vec2f>> rings{toRing(part.outer_boundary())};
+        for (const Polygon &hole : part.holes()) rings.push_back(toRing(hole));
+        auto base = uint32_t(mesh.positions.size());
+        for (const std::vector<Vec2f> &ring : rings)
+            for (Vec2f p : ring) {
+                mesh.positions.push_back({p.x, p.y, z});
                 mesh.normals.push_back({0, 0, 1});
-                mesh.uvs.push_back({p.x, p.y});
+                mesh.uvs.push_back(p);
             }
-            // CGAL's faces run counter-clockwise, seen from above.
-            mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2});
-            mesh.triangleMaterials.push_back(surface);
-        }
+        std::vector<uint32_t> triangles = triangulatePolygonWithHoles(rings);
+        for (uint32_t i : triangles) mesh.indices.push_back(base + i);
+        mesh.triangleMaterials.insert(mesh.triangleMaterials.end(), triangles.size() / 3, surface);
     }
 }
 
@@ -182,11 +141,7 @@ std::vector<BuildableArea> buildableAreas(const std::vector<Vec2f> &block, const
     std::vector<BuildableArea> areas;
     for (const PolygonWithHoles &part : parts) {
         BuildableArea area;
-        const Polygon &outer = part.outer_boundary();
-        for (auto v = outer.vertices_begin(); v != outer.vertices_end(); ++v) {
-            Vec3f p = lifted(*v, 0);
-            area.outline.push_back({p.x, p.y});
-        }
+        area.outline = toRing(part.outer_boundary());
         size_t n = area.outline.size();
         for (size_t i = 0; i < n; ++i) {
             Vec2f a = area.outline[i], b = area.outline[(i + 1) % n];

@@ -188,8 +188,7 @@ class SceneFileReader {
         }
         env.radiance = e.color("radiance", env.radiance, 0, 1e9f);
         if (e.has("cubemap")) {
-            std::filesystem::path file = e.string("cubemap");
-            env.cubemap.file = file.is_absolute() ? file : baseDirectory_ / file;
+            env.cubemap.file = pathAttribute(e, "cubemap");
             env.cubemap.loc = e.attributeLoc("cubemap");
             env.cubemap.colorSpace = e.string("colorspace", "");
         }
@@ -219,9 +218,8 @@ class SceneFileReader {
 
     // <materials file="..."/>: every material of a material file, as if written here.
     void readMaterialsInclude(const XmlElement &e) {
-        std::filesystem::path file = e.string("file");
+        std::filesystem::path file = pathAttribute(e, "file");
         e.checkLeaf();
-        if (file.is_relative()) file = baseDirectory_ / file;
         std::vector<MaterialDesc> materials;
         try {
             materials = readMaterialFile(file);
@@ -293,11 +291,16 @@ class SceneFileReader {
         scene_.instances.push_back(std::move(inst));
     }
 
+    // A required file attribute, resolved against the scene's folder when relative.
+    std::filesystem::path pathAttribute(const XmlElement &e, const char *attribute) const {
+        std::filesystem::path file = e.string(attribute);
+        return file.is_absolute() ? file : baseDirectory_ / file;
+    }
+
     void readCity(const XmlElement &e) {
         CityDesc city;
         city.loc = e.loc();
-        std::filesystem::path file = e.string("file");
-        city.file = file.is_absolute() ? file : baseDirectory_ / file;
+        city.file = pathAttribute(e, "file");
         city.fileLoc = e.attributeLoc("file");
         city.seed = e.unsignedInteger("seed", 0);
         readObjectId(e, city.loc);
@@ -308,8 +311,7 @@ class SceneFileReader {
     void readBuildings(const XmlElement &e) {
         BuildingGroupDesc group;
         group.loc = e.loc();
-        std::filesystem::path rules = e.string("rules");
-        group.rules = rules.is_absolute() ? rules : baseDirectory_ / rules;
+        group.rules = pathAttribute(e, "rules");
         group.rulesLoc = e.attributeLoc("rules");
         group.seed = e.unsignedInteger("seed", 0);
         e.checkAllRead();
@@ -382,8 +384,7 @@ class SceneFileReader {
         GeometryDesc g;
         g.loc = e.loc();
         if (e.name() == "mesh") {
-            std::filesystem::path file = e.string("file");
-            g.meshFile = file.is_absolute() ? file : baseDirectory_ / file;
+            g.meshFile = pathAttribute(e, "file");
             g.meshFileLoc = e.attributeLoc("file");
         } else {
             g.shape = readShape(e);

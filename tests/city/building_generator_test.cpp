@@ -8,6 +8,7 @@
 
 #include "city/asset_fitting.h"
 #include "city/building_generator.h"
+#include "city/building_rules.h"
 #include "city/rule_file.h"
 #include "core/error.h"
 
@@ -16,9 +17,9 @@ namespace {
 
 struct Gruenderzeit {
     const AssetLibrary &assets = AssetLibrary::builtIn();
-    RuleSet rules = readRuleFile(VEDUTA_SOURCE_DIR "/rules/gruenderzeit/FacadeStructure.xml",
-                                 [this](std::string_view n) { return assets.isModelName(n); });
-    Grammar grammar{rules, [this](std::string_view n) { return assets.findTerminal(n); }};
+    BuildingRules loaded{VEDUTA_SOURCE_DIR "/rules/gruenderzeit/FacadeStructure.xml"};
+    const RuleSet &rules = loaded.rules;
+    const Grammar &grammar = loaded.grammar;
 
     BuildingSpec building(uint32_t id, float width = 16, float depth = 14) const {
         BuildingSpec spec;

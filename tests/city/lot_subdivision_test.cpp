@@ -80,12 +80,6 @@ std::vector<ExactPolygon> courtyard(const Block &block, float depth) {
     return insets;
 }
 
-double distanceToSegment(Vec2f p, Vec2f a, Vec2f b) {
-    double abx = b.x - a.x, aby = b.y - a.y, apx = p.x - a.x, apy = p.y - a.y;
-    double t = std::clamp((apx * abx + apy * aby) / (abx * abx + aby * aby), 0.0, 1.0);
-    return std::hypot(apx - t * abx, apy - t * aby);
-}
-
 double distanceToOutline(Vec2f p, const Block &block) {
     double nearest = INFINITY;
     for (size_t e = 0; e < block.points.size(); ++e) {
