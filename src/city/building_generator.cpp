@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "city/asset_fitting.h"
-#include "city/roofs.h"
+#include "city/roof_choice.h"
 #include "city/start_shapes.h"
 #include "core/hash.h"
 
@@ -68,20 +68,19 @@ void BuildingGenerator::addWallPiece(const Asset &model, const Transform &modelT
         baked.triangleMaterials[t] = key.materials[model.mesh.triangleMaterials[t - firstTriangle]];
 }
 
-void BuildingGenerator::addRoof(const BuildingSpec &building, float eaves, float roofHeight,
-                                const MaterialSet &materials, Mesh &baked) const {
-    Mesh roof;
-    if (roofHeight <= 0) {
-        roof = mansardRoof(building.footprint, eaves, 0, 0).mesh;  // flat
-    } else if (chooseRoofKind(building.footprint) == RoofKind::Gable) {
-        roof = gableRoof(building.footprint, eaves, roofHeight);
-    } else {
-        float inset = building.settings.number("RoofInset").value_or(1.5f);
-        roof = mansardRoof(building.footprint, eaves, roofHeight, inset).mesh;
-    }
-    for (MaterialId &m : roof.triangleMaterials)
-        m = m == RoofGableWall ? materials[MaterialCategory::Wall] : materials[MaterialCategory::Roof];
-    baked.append(roof, Transform{});
+// The roof closes the walls at the eaves: buildRoof's slopes pass over the wall tops there,
+// overhang or not (roof_shapes.h).
+void BuildingGenerator::addRoof(const BuildingSpec &building, const BuildingContext &context, Mesh &baked,
+                                std::vector<std::string> &warnings) const {
+    const Footprint &footprint = building.footprint;
+    RoofOptions options = roofOptionsFor(footprint, building.settings, context.heights, seed_, building.id);
+    RoofResult roof = buildRoof({footprint.points, {}, footprint.base}, context.heights.building, options);
+    if (roof.fallback)
+        warnings.push_back(fmt::format("building {}: a {} roof instead of {}: {}", building.id, roofTypeName(roof.built),
+                                       roofTypeName(options.type), *roof.fallback));
+    for (MaterialId &m : roof.mesh.triangleMaterials)
+        m = m == RoofGableWall ? context.materials[MaterialCategory::Wall] : context.materials[MaterialCategory::Roof];
+    baked.append(roof.mesh, Transform{});
 }
 
 // The mesh a building's walls and roof are collected in: one buffer reused from building to
@@ -144,7 +143,7 @@ BuildingStats BuildingGenerator::generate(const BuildingSpec &spec, std::vector<
     Mesh &baked = startBakedMesh();
     for (const StartShape &start : makeStartShapes(spec.footprint, building.heights.building))
         emitFacade(building, start, spec.footprint.perimeterBefore(start.edge), baked, stats, warnings);
-    addRoof(spec, building.heights.building, building.heights.roof, building.materials, baked);
+    addRoof(spec, building, baked, warnings);
     stats.bakedTriangles = baked.triangleCount();
     builder_.addWorldMesh(weldVertices(baked), spec.objectId, spec.id);
     return stats;

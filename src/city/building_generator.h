@@ -1,7 +1,8 @@
 // Generating a procedural building from its footprint (seed 000's BuildingGenerator,
 // digest-000 §4): one start shape per wall, each derived with the split grammar; models become
 // instances of shared prototypes, walls are baked with planar texture coordinates that run on
-// across neighbouring pieces and around the corners, and a gable or mansard roof closes the top.
+// across neighbouring pieces and around the corners, and a roof of the settings' type
+// (roof_choice.h) closes the top.
 #pragma once
 
 #include <array>
@@ -81,8 +82,8 @@ class BuildingGenerator {
     PrototypeKey keyFor(const Terminal &terminal, const MaterialSet &materials);
     void addWallPiece(const Asset &model, const Transform &modelToFacade, const Transform &facadeToWorld,
                       float alongPerimeter, const Terminal &terminal, const PrototypeKey &key, Mesh &baked) const;
-    void addRoof(const BuildingSpec &building, float eaves, float roofHeight, const MaterialSet &materials,
-                 Mesh &baked) const;
+    void addRoof(const BuildingSpec &building, const BuildingContext &context, Mesh &baked,
+                 std::vector<std::string> &warnings) const;
 
     const Grammar &grammar_;
     const AssetLibrary &assets_;

@@ -108,6 +108,15 @@ bool isCounterClockwise(std::span<const Vec2f> polygon) {
     return CGAL::orientation_2(points.begin(), points.end(), Kernel()) == CGAL::COUNTERCLOCKWISE;
 }
 
+float signedArea(std::span<const Vec2f> polygon) {
+    double twice = 0;
+    for (size_t i = 0; i < polygon.size(); ++i) {
+        Vec2f a = polygon[i], b = polygon[(i + 1) % polygon.size()];
+        twice += double(a.x) * b.y - double(b.x) * a.y;
+    }
+    return float(twice / 2);
+}
+
 bool liesInside(std::span<const Vec2f> inner, std::span<const Vec2f> outer) {
     std::vector<Point> in = toCgal(inner), out = toCgal(outer);
     for (const Point &p : in) {

@@ -46,6 +46,8 @@ std::optional<std::string> normaliseFootprint(Footprint &footprint, const FileLo
 // point i + 1), with CGAL's exact predicates.
 bool isSimplePolygon(std::span<const Vec2f> polygon);
 bool isCounterClockwise(std::span<const Vec2f> polygon);  // of a simple polygon
+// The area of a simple polygon, positive when it runs counter-clockwise; in double precision.
+float signedArea(std::span<const Vec2f> polygon);
 // Whether simple polygon `inner` lies inside simple polygon `outer` without touching its outline.
 bool liesInside(std::span<const Vec2f> inner, std::span<const Vec2f> outer);
 // Each edge of a ring moved `distance` to its right (outwards on a counter-clockwise ring;

@@ -27,22 +27,22 @@ struct RuleFileBuilder {
     BuildingGenerator generator;
 };
 
-std::vector<std::unique_ptr<RuleFileBuilder>> readRuleFiles(const CityDesc &city, const CityData &data,
+std::vector<std::unique_ptr<RuleFileBuilder>> readRuleFiles(const FileLoc &fileLoc, const CityData &data, uint32_t seed,
                                                             RenderSceneBuilder &builder,
                                                             std::vector<std::string> &warnings) {
-    if (data.ruleFiles.empty())
-        throw InputError(city.fileLoc, "the city names no <Rulefile> to build its lots with");
+    if (data.ruleFiles.empty()) throw InputError(fileLoc, "the city names no <Rulefile> to build its lots with");
     std::vector<std::unique_ptr<RuleFileBuilder>> builders;
     for (const std::filesystem::path &file : data.ruleFiles) {
-        builders.push_back(std::make_unique<RuleFileBuilder>(file, builder, city.seed));
+        builders.push_back(std::make_unique<RuleFileBuilder>(file, builder, seed));
         const std::vector<std::string> &said = builders.back()->loaded.rules.warnings;
         warnings.insert(warnings.end(), said.begin(), said.end());
     }
     return builders;
 }
 
-// The city's streets as a network of its points (metres, x east, y north).
-StreetNetwork streetNetwork(const CityData &data) {
+}  // namespace
+
+StreetNetwork streetNetworkOf(const CityData &data) {
     StreetNetwork network;
     std::unordered_map<uint32_t, uint32_t> index;
     for (const CityPoint &p : data.points) {
@@ -55,9 +55,6 @@ StreetNetwork streetNetwork(const CityData &data) {
     return network;
 }
 
-// The lots of a block: its own, or perimeter lots (seed 000's Blockrandbebauung) cut from what
-// the streets and sidewalks leave of it; a piece too small for a ring of houses round a
-// courtyard is cut recursively instead (Müller's subdivision, seed 000's other algorithm).
 std::vector<Footprint> lotsOf(const CityBlock &block, const StreetNetwork &streets, const SettingsStack &blockSettings,
                               uint32_t seed, uint32_t blockIndex) {
     std::vector<Footprint> lots;
@@ -75,6 +72,8 @@ std::vector<Footprint> lotsOf(const CityBlock &block, const StreetNetwork &stree
     return lots;
 }
 
+namespace {
+
 // The street surfaces, in the scene's materials "street/asphalt", "street/pavement" and
 // "street/kerb" when it has them.
 void addStreets(const StreetNetwork &streets, uint32_t objectId, RenderSceneBuilder &builder) {
@@ -91,28 +90,24 @@ void addStreets(const StreetNetwork &streets, uint32_t objectId, RenderSceneBuil
     builder.addWorldMesh(std::move(mesh), objectId);
 }
 
-uint32_t buildCity(const CityDesc &city, uint32_t firstBuildingId, RenderSceneBuilder &builder,
-                   std::vector<std::string> &warnings) {
-    if (!std::filesystem::is_regular_file(city.file))
-        throw InputError(city.fileLoc, fmt::format("cannot read the city file {}", city.file.string()));
-    CityData data = readCityData(city.file);
+uint32_t buildCity(const CityData &data, uint32_t seed, ObjectId objectId, const FileLoc &fileLoc,
+                   uint32_t firstBuildingId, RenderSceneBuilder &builder, std::vector<std::string> &warnings) {
     warnings.insert(warnings.end(), data.warnings.begin(), data.warnings.end());
-    auto ruleFiles = readRuleFiles(city, data, builder, warnings);
-
-    StreetNetwork streets = streetNetwork(data);
-    addStreets(streets, city.objectId, builder);
+    auto ruleFiles = readRuleFiles(fileLoc, data, seed, builder, warnings);
+    StreetNetwork streets = streetNetworkOf(data);
+    addStreets(streets, objectId, builder);
     uint32_t id = firstBuildingId;
     for (uint32_t b = 0; b < data.blocks.size(); ++b) {
         const CityBlock &block = data.blocks[b];
         SettingsStack blockSettings = settingsFor(data, block, nullptr, ruleFiles.front()->loaded.rules.settings);
-        std::vector<Footprint> lots = lotsOf(block, streets, blockSettings, city.seed, b);
+        std::vector<Footprint> lots = lotsOf(block, streets, blockSettings, seed, b);
         for (size_t l = 0; l < lots.size(); ++l, ++id) {
             // Seed 000 picks one of several rule files at random (L1276).
-            RuleFileBuilder &rules = *ruleFiles[hashValues({city.seed, id, 0x52554c46u}) % ruleFiles.size()];
+            RuleFileBuilder &rules = *ruleFiles[hashValues({seed, id, 0x52554c46u}) % ruleFiles.size()];
             const CityLot *given = block.lots.empty() ? nullptr : &block.lots[l];
             BuildingSpec spec;
             spec.id = id;
-            spec.objectId = city.objectId;
+            spec.objectId = objectId;
             spec.footprint = std::move(lots[l]);
             spec.settings = settingsFor(data, block, given, rules.loaded.rules.settings);
             rules.generator.generate(spec, warnings);
@@ -121,19 +116,37 @@ uint32_t buildCity(const CityDesc &city, uint32_t firstBuildingId, RenderSceneBu
     return id - firstBuildingId;
 }
 
+// Warnings gathered before an error still reach the caller: they may say why.
+template <typename Build>
+uint32_t withWarnings(std::vector<std::string> &out, Build build) {
+    std::vector<std::string> warnings;
+    try {
+        uint32_t built = build(warnings);
+        appendOnce(warnings, out);
+        return built;
+    } catch (const InputError &) {
+        appendOnce(warnings, out);
+        throw;
+    }
+}
+
 }  // namespace
 
 uint32_t generateCity(const CityDesc &city, uint32_t firstBuildingId, RenderSceneBuilder &builder,
                       std::vector<std::string> &out) {
-    std::vector<std::string> warnings;
-    try {
-        uint32_t built = buildCity(city, firstBuildingId, builder, warnings);
-        appendOnce(warnings, out);
-        return built;
-    } catch (const InputError &) {
-        appendOnce(warnings, out);  // they may say why
-        throw;
-    }
+    if (!std::filesystem::is_regular_file(city.file))
+        throw InputError(city.fileLoc, fmt::format("cannot read the city file {}", city.file.string()));
+    CityData data = readCityData(city.file);
+    return withWarnings(out, [&](std::vector<std::string> &warnings) {
+        return buildCity(data, city.seed, city.objectId, city.fileLoc, firstBuildingId, builder, warnings);
+    });
+}
+
+uint32_t generateCity(const CityData &data, uint32_t seed, ObjectId objectId, uint32_t firstBuildingId,
+                      RenderSceneBuilder &builder, std::vector<std::string> &out) {
+    return withWarnings(out, [&](std::vector<std::string> &warnings) {
+        return buildCity(data, seed, objectId, {}, firstBuildingId, builder, warnings);
+    });
 }
 
 }  // namespace veduta

@@ -7,6 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "city/city_data.h"
+#include "city/footprint.h"
+#include "city/street_geometry.h"
 #include "scene/render_scene.h"
 #include "scene/scene_description.h"
 
@@ -18,5 +21,18 @@ namespace veduta {
 // errors throw InputError.
 uint32_t generateCity(const CityDesc &city, uint32_t firstBuildingId, RenderSceneBuilder &builder,
                       std::vector<std::string> &warnings);
+// The same for a city already read (or made in memory, as the benchmark does); errors about
+// the city as a whole (no rule file) have no place in a file.
+uint32_t generateCity(const CityData &data, uint32_t seed, ObjectId objectId, uint32_t firstBuildingId,
+                      RenderSceneBuilder &builder, std::vector<std::string> &warnings);
+
+// The parts, in the order generateCity runs them.
+// The city's streets as a network of its points (metres, x east, y north).
+StreetNetwork streetNetworkOf(const CityData &data);
+// The lots of a block: its own, or perimeter lots (seed 000's Blockrandbebauung) cut from what
+// the streets and sidewalks leave of it; a piece too small for a ring of houses round a
+// courtyard is cut recursively instead (Müller's subdivision, seed 000's other algorithm).
+std::vector<Footprint> lotsOf(const CityBlock &block, const StreetNetwork &streets, const SettingsStack &blockSettings,
+                              uint32_t seed, uint32_t blockIndex);
 
 }  // namespace veduta

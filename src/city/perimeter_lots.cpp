@@ -89,10 +89,9 @@ class PerimeterWalk {
         holdFirst_ = true;
         open_ = {section(0)};
         for (size_t edge = 0; edge < block_.points.size(); ++edge) walkEdge(edge);
-        // Without a single cut the "lot" would be the whole ring around the courtyard.
-        if (!first_) return {};
+        // With fewer than two cuts the "lot" would be the whole ring around the courtyard.
+        if (!first_ || lots_.empty()) return {};
         open_.insert(open_.end(), first_->begin() + 1, first_->end());
-        dropOpen_ = dropOpen_ || firstDropped_;
         closeOpen();
         return std::move(lots_);
     }
@@ -112,20 +111,25 @@ class PerimeterWalk {
         float length = std::sqrt(dot(block_.points[next] - start, block_.points[next] - start));
         // The stretch of the edge whose perpendicular meets the inset edge.
         float insetFrom = dot(inset_[edge] - start, direction), insetTo = dot(inset_[next] - start, direction);
-        for (float from = 0;;) {
+        for (float from = 0, lotStart = 0;;) {
             float cut = from + frontage();
             // Steps 1–2 → 8: the rest is too short for a lot; it joins the lot at the corner.
             if (length - cut <= settings_.minBuildingLength) break;
             from = cut;
             // Step 3 → 8: the perpendicular misses the inset edge; the lot grows.
             if (cut < insetFrom || cut > insetTo) continue;
+            // Step 4: the cut would leave a courtyard side shorter than MinBuildingInnerLength
+            // beside an inset corner. The thesis then builds no lot up to it (step 9), which
+            // leaves a gap beside nearly every corner; veduta moves the cut away from that inset
+            // corner instead, as far as the lots on either side keep MinBuildingLength.
+            float lowest = insetFrom + settings_.minBuildingInnerLength, highest = insetTo - settings_.minBuildingInnerLength;
+            if (lowest > highest) continue;
+            cut = std::clamp(cut, lowest, highest);
+            if (cut - lotStart < settings_.minBuildingLength || length - cut <= settings_.minBuildingLength) continue;
+            from = lotStart = cut;
             Vec2f outer = start + direction * cut;
             Section s{outer, outer + leftNormal(direction) * settings_.minBuildingDepth};
             open_.push_back(s);
-            // Step 4 → 9: the cut would leave a courtyard side shorter than MinBuildingInnerLength
-            // beside an inset corner; the thesis builds no lot up to it.
-            float inner = std::min(cut - insetFrom, insetTo - cut);
-            if (inner <= settings_.minBuildingInnerLength) dropOpen_ = true;
             closeOpen();
             open_ = {s};
         }
@@ -146,12 +150,10 @@ class PerimeterWalk {
         }
         if (holdFirst_) {
             first_ = open_;
-            firstDropped_ = dropOpen_;
             holdFirst_ = false;
-        } else if (!dropOpen_) {
+        } else {
             lots_.push_back(footprintOf(open_, block_.base));
         }
-        dropOpen_ = false;
     }
 
     const Block &block_;
@@ -163,10 +165,8 @@ class PerimeterWalk {
     uint32_t draws_ = 0;  // the step: each frontage drawn is keyed by its number
     size_t pieces_ = 0;
     std::vector<Section> open_;
-    bool dropOpen_ = false;
     bool holdFirst_ = false;  // the next closed lot is the first of a ring: kept for the corner
     std::optional<std::vector<Section>> first_;
-    bool firstDropped_ = false;
     std::vector<Footprint> lots_;
 };
 

@@ -62,6 +62,26 @@ PolygonSet streetArea(const StreetNetwork &network, float extra) {
     return area;
 }
 
+// The streets whose surface, `extra` wider on either side, may reach into the box around
+// `outline`: far streets cannot change what is left of a block, and joining every street of a
+// town for each of its blocks is what would make lots slow. Node indices stay as they are.
+StreetNetwork streetsNear(const std::vector<Vec2f> &outline, const StreetNetwork &network, float extra) {
+    Vec2f low = outline[0], high = outline[0];
+    for (Vec2f p : outline) {
+        low = {std::min(low.x, p.x), std::min(low.y, p.y)};
+        high = {std::max(high.x, p.x), std::max(high.y, p.y)};
+    }
+    StreetNetwork near{network.nodes, {}, network.height};
+    for (const StreetNetwork::Street &s : network.streets) {
+        Vec2f a = network.nodes[s.from], b = network.nodes[s.to];
+        float reach = s.width / 2 + extra;
+        bool apart = std::min(a.x, b.x) - reach > high.x || std::max(a.x, b.x) + reach < low.x ||
+                     std::min(a.y, b.y) - reach > high.y || std::max(a.y, b.y) + reach < low.y;
+        if (!apart) near.streets.push_back(s);
+    }
+    return near;
+}
+
 Vec3f lifted(const Point &p, float z) { return {float(CGAL::to_double(p.x())), float(CGAL::to_double(p.y())), z}; }
 
 std::vector<Vec2f> toRing(const Polygon &polygon) {
@@ -133,7 +153,7 @@ Polygon toPolygon(const std::vector<Vec2f> &ring) {
 
 std::vector<BuildableArea> buildableAreas(const std::vector<Vec2f> &block, const StreetNetwork &network,
                                           const StreetStyle &style) {
-    PolygonSet streets = streetArea(network, style.sidewalkWidth);
+    PolygonSet streets = streetArea(streetsNear(block, network, style.sidewalkWidth), style.sidewalkWidth);
     PolygonSet left(toPolygon(block));
     left.difference(streets);
     std::vector<PolygonWithHoles> parts;

@@ -13,6 +13,7 @@ inline constexpr float kPi = 3.14159265358979323846f;
 inline constexpr float kInvPi = 1.0f / kPi;
 
 inline float radians(float degrees) { return degrees * (kPi / 180.0f); }
+inline float degrees(float radians) { return radians * (180.0f / kPi); }
 
 struct Vec2f {
     float x = 0, y = 0;

@@ -9,6 +9,7 @@
 #include "city/asset_fitting.h"
 #include "city/building_generator.h"
 #include "city/building_rules.h"
+#include "city/roof_choice.h"
 #include "city/rule_file.h"
 #include "core/error.h"
 
@@ -195,11 +196,11 @@ TEST(BuildingGenerator, HeightsAreChecked) {
             EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
         }
     }
-    // A roof height of 0 is a flat roof at the eaves.
+    // A roof height of 0 is a flat roof at the eaves, behind a parapet.
     RenderScene flat = withSetting("RoofHeight", 0);
     float top = 0;
     for (const Vec3f &p : flat.meshes.front().mesh.positions) top = std::max(top, p.z);
-    EXPECT_NEAR(top, 15, 0.6f);  // what stands out of the wall at the top, not a roof
+    EXPECT_NEAR(top, 15 + kDefaultParapetHeight, 0.01f);
 }
 
 TEST(BuildingGenerator, WallsWithoutAStartRuleArePlain) {

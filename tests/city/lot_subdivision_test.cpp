@@ -192,9 +192,8 @@ TEST(Lots, PerimeterCornerLotsTurnTheCorner) {
     for (const Footprint &lot : lots) {
         if (std::count(lot.streetEdges.begin(), lot.streetEdges.end(), true) == 2) ++corners;
     }
-    // Up to four; the thesis builds none where a cut leaves too short a courtyard side (step 9).
-    EXPECT_GT(corners, 0u);
-    EXPECT_LE(corners, 4u);
+    // The cuts move away from the inset corners rather than leave them empty (docs/lots.md).
+    EXPECT_EQ(corners, 4u);
 }
 
 TEST(Lots, RecursiveLotsAreBetweenMinAndMaxArea) {

@@ -1,0 +1,203 @@
+// A square kilometre of Gründerzeit district generated from nothing but its street grid: lots
+// cut round courtyards behind the sidewalks, buildings derived with rules/gruenderzeit, roofs
+// of four kinds, street surfaces, and the RenderScene built. The city issue asks for about
+// 1,500 buildings in ≤ 5 s on 2 cores (Schrader's thesis needed 950 s in 2007). BM_District
+// times the whole of generateCity plus the scene build; the others time its phases alone on
+// the same district, so that the printed split shows where the time goes.
+//
+//   build/release/bench/bench_district [--benchmark_repetitions=5]
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+
+#include "city/assets.h"
+#include "city/building_generator.h"
+#include "city/building_rules.h"
+#include "city/generate_city.h"
+#include "city/roof_choice.h"
+#include "median_reporter.h"
+#include "scene/material_file.h"
+
+namespace veduta {
+namespace {
+
+constexpr int kColumns = 8, kRows = 10;       // blocks
+constexpr float kBlockWidth = 125, kBlockDepth = 100;  // street centre to centre: 1 km × 1 km
+constexpr uint32_t kSeed = 1871;
+
+SettingValue value(const std::string &text) { return settingValue(text, {}); }
+
+// The street grid with one block in each cell; the blocks take turns at the roof lists.
+CityData district() {
+    CityData city;
+    for (int row = 0; row <= kRows; ++row) {
+        for (int column = 0; column <= kColumns; ++column) {
+            uint32_t id = uint32_t(city.points.size());
+            city.points.push_back({id, column * kBlockWidth, row * kBlockDepth, 0, {}});
+        }
+    }
+    auto point = [](int column, int row) { return uint32_t(row * (kColumns + 1) + column); };
+    for (int row = 0; row <= kRows; ++row) {
+        for (int column = 0; column <= kColumns; ++column) {
+            uint32_t id = uint32_t(city.streets.size());
+            if (column < kColumns) city.streets.push_back({id, point(column, row), point(column + 1, row), {}, {}});
+            if (row < kRows) city.streets.push_back({id + 1, point(column, row), point(column, row + 1), {}, {}});
+        }
+    }
+    city.streetWidth = 10;
+    const char *roofs[] = {"gable mansard", "mansard", "hip", "gable hip"};
+    for (int row = 0; row < kRows; ++row) {
+        for (int column = 0; column < kColumns; ++column) {
+            CityBlock block;
+            for (auto [c, r] : {std::pair{column, row}, {column + 1, row}, {column + 1, row + 1}, {column, row + 1}}) {
+                const CityPoint &p = city.points[point(c, r)];
+                block.points.push_back({float(p.e), float(p.n)});
+            }
+            block.settings["RoofType"] = value(roofs[(row * kColumns + column) % 4]);
+            city.blocks.push_back(std::move(block));
+        }
+    }
+    for (auto [name, text] : {std::pair{"BuildingHeight", "17"}, {"BuildingHeightVar", "1.5"}, {"FloorHeight", "3.6"},
+                              {"RoofHeight", "4.5"}, {"MinBuildingLength", "12"}, {"MaxBuildingLength", "22"},
+                              {"MinBuildingDepth", "13"}}) {
+        city.settings[name] = value(text);
+    }
+    city.ruleFiles = {std::string(VEDUTA_SOURCE_DIR) + "/rules/gruenderzeit/FacadeStructure.xml"};
+    return city;
+}
+
+struct Fixture {
+    CityData city = district();
+    StreetNetwork streets = streetNetworkOf(city);
+    BuildingRules loaded{city.ruleFiles.front()};
+    std::vector<Material> materials = [] {
+        std::vector<Material> result;
+        for (const MaterialDesc &desc : readMaterialFile(std::string(VEDUTA_SOURCE_DIR) + "/rules/gruenderzeit/materials.xml")) {
+            Material m = desc.material;
+            if (desc.normalMap.given()) m.normalMap = 0;  // no image is read, but tangents are made
+            result.push_back(m);
+        }
+        return result;
+    }();
+    // Every block's settings and lots, as generateCity makes them.
+    std::vector<SettingsStack> blockSettings;
+    std::vector<std::vector<Footprint>> lots;
+    Fixture() {
+        for (uint32_t b = 0; b < city.blocks.size(); ++b) {
+            blockSettings.push_back(settingsFor(city, city.blocks[b], nullptr, loaded.rules.settings));
+            lots.push_back(lotsOf(city.blocks[b], streets, blockSettings.back(), kSeed, b));
+        }
+    }
+    size_t buildings() const {
+        size_t count = 0;
+        for (const auto &block : lots) count += block.size();
+        return count;
+    }
+};
+
+Fixture &fixture() {
+    static Fixture f;
+    return f;
+}
+
+RenderSceneBuilder builderWithMaterials() {
+    RenderSceneBuilder builder;
+    for (const Material &m : fixture().materials) builder.addMaterial(m);
+    return builder;
+}
+
+void BM_District(benchmark::State &state) {
+    Fixture &f = fixture();
+    uint32_t built = 0;
+    for (auto _ : state) {
+        RenderSceneBuilder builder = builderWithMaterials();
+        std::vector<std::string> warnings;
+        built = generateCity(f.city, kSeed, 1, 1, builder, warnings);
+        benchmark::DoNotOptimize(std::move(builder).build());
+    }
+    state.counters["buildings"] = built;
+}
+
+void BM_Streets(benchmark::State &state) {
+    for (auto _ : state) benchmark::DoNotOptimize(streetGeometry(fixture().streets));
+}
+
+void BM_Lots(benchmark::State &state) {
+    Fixture &f = fixture();
+    for (auto _ : state) {
+        for (uint32_t b = 0; b < f.city.blocks.size(); ++b)
+            benchmark::DoNotOptimize(lotsOf(f.city.blocks[b], f.streets, f.blockSettings[b], kSeed, b));
+    }
+}
+
+void BM_Roofs(benchmark::State &state) {
+    Fixture &f = fixture();
+    for (auto _ : state) {
+        uint32_t id = 1;
+        for (size_t b = 0; b < f.lots.size(); ++b) {
+            for (const Footprint &lot : f.lots[b]) {
+                BuildingHeights heights = randomiseHeights(f.blockSettings[b], kSeed, id);
+                RoofOptions options = roofOptionsFor(lot, f.blockSettings[b], heights, kSeed, id++);
+                benchmark::DoNotOptimize(buildRoof({lot.points, {}, lot.base}, heights.building, options));
+            }
+        }
+    }
+}
+
+// Facades and roofs of every building, without lots, streets or the scene build.
+void BM_Buildings(benchmark::State &state) {
+    Fixture &f = fixture();
+    for (auto _ : state) {
+        RenderSceneBuilder builder = builderWithMaterials();
+        BuildingGenerator generator(f.loaded.grammar, AssetLibrary::builtIn(), builder, kSeed);
+        std::vector<std::string> warnings;
+        uint32_t id = 1;
+        for (size_t b = 0; b < f.lots.size(); ++b) {
+            for (const Footprint &lot : f.lots[b]) {
+                BuildingSpec spec;
+                spec.id = id++;
+                spec.objectId = 1;
+                spec.footprint = lot;
+                spec.settings = f.blockSettings[b];
+                generator.generate(spec, warnings);
+            }
+        }
+        state.PauseTiming();
+        builder = RenderSceneBuilder();
+        state.ResumeTiming();
+    }
+}
+
+BENCHMARK(BM_District)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Streets)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Lots)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Roofs)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Buildings)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+}  // namespace veduta
+
+int main(int argc, char **argv) {
+    using namespace veduta;
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    MedianReporter reporter;
+    benchmark::RunSpecifiedBenchmarks(&reporter);
+    const auto *whole = reporter.find("BM_District");
+    if (whole) {
+        double total = whole->GetAdjustedRealTime();
+        std::printf("\n1 km² district: %zu buildings on %zu blocks in %.2f s (target <= 5 s)\n", fixture().buildings(),
+                    fixture().city.blocks.size(), total / 1000);
+        std::printf("phases, each timed alone:");
+        for (const char *phase : {"BM_Streets", "BM_Lots", "BM_Roofs", "BM_Buildings"}) {
+            if (const auto *run = reporter.find(phase))
+                std::printf("  %s %.0f ms (%.0f%%)", phase + 3, run->GetAdjustedRealTime(),
+                            100 * run->GetAdjustedRealTime() / total);
+        }
+        std::printf("\n(Buildings includes Roofs; the rest of District is the scene build.)\n");
+    }
+    benchmark::Shutdown();
+    return 0;
+}

@@ -1,0 +1,97 @@
+#include "city/roof_choice.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "city/roofs.h"
+#include "core/hash.h"
+
+namespace veduta {
+
+namespace {
+
+constexpr uint32_t kRoofChoiceKey = 0x524f4f46u;  // "ROOF": the draw among a RoofType list
+
+std::string lowercase(std::string_view text) {
+    std::string lower(text);
+    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return lower;
+}
+
+// RoofType: one name, or several separated by spaces or commas, of which each building takes
+// one at random. Unset: seed 000's choice.
+RoofType chosenType(const Footprint &footprint, const SettingsStack &settings, uint32_t seed, uint32_t buildingId) {
+    const SettingValue *value = settings.find("RoofType");
+    if (!value) return chooseRoofKind(footprint) == RoofKind::Gable ? RoofType::Gable : RoofType::Mansard;
+    std::string text = value->text;
+    std::replace(text.begin(), text.end(), ',', ' ');
+    std::istringstream words(text);
+    std::vector<RoofType> types;
+    for (std::string word; words >> word;) {
+        std::optional<RoofType> type = roofTypeFromName(word);
+        if (!type)
+            throw InputError(value->loc, fmt::format("RoofType '{}' is none of flat, hip, pyramid, shed, gable, mansard", word));
+        types.push_back(*type);
+    }
+    if (types.empty()) throw InputError(value->loc, "RoofType names no roof type");
+    return types[hashValues({seed, buildingId, kRoofChoiceKey}) % types.size()];
+}
+
+// How far the slopes reach in before they meet (see roofOptionsFor).
+float halfDepth(const Footprint &footprint) {
+    if (footprint.edgeCount() == 4 && isRightAngled(footprint))
+        return std::min(footprint.edgeLength(0), footprint.edgeLength(1)) / 2;
+    return 2 * signedArea(footprint.points) / footprint.perimeterBefore(footprint.edgeCount());
+}
+
+float lengthSetting(const SettingsStack &settings, const char *name, float otherwise) {
+    std::optional<float> value = settings.number(name);
+    if (!value) return otherwise;
+    if (!(*value >= 0) || !std::isfinite(*value))
+        throw InputError(settings.find(name)->loc, fmt::format("{} must be zero or more metres, not {}", name, *value));
+    return *value;
+}
+
+std::optional<float> pitchSetting(const SettingsStack &settings) {
+    std::optional<float> pitch = settings.number("RoofPitch");
+    if (pitch && !(*pitch > 0 && *pitch < 90))
+        throw InputError(settings.find("RoofPitch")->loc, fmt::format("RoofPitch must be between 0° and 90°, not {}°", *pitch));
+    return pitch;
+}
+
+}  // namespace
+
+std::optional<RoofType> roofTypeFromName(std::string_view name) {
+    for (RoofType type : {RoofType::Flat, RoofType::Hip, RoofType::Pyramid, RoofType::Shed, RoofType::Gable,
+                          RoofType::Mansard}) {
+        if (lowercase(name) == roofTypeName(type)) return type;
+    }
+    return std::nullopt;
+}
+
+RoofOptions roofOptionsFor(const Footprint &footprint, const SettingsStack &settings, const BuildingHeights &heights,
+                           uint32_t seed, uint32_t buildingId) {
+    RoofOptions options;
+    options.type = heights.roof > 0 ? chosenType(footprint, settings, seed, buildingId) : RoofType::Flat;
+    options.overhang = lengthSetting(settings, "RoofOverhang", 0);
+    options.parapetHeight = lengthSetting(settings, "ParapetHeight", kDefaultParapetHeight);
+    if (std::optional<float> pitch = pitchSetting(settings)) {
+        options.pitchDegrees = *pitch;
+    } else if (heights.roof > 0) {
+        float reach = options.type == RoofType::Mansard ? kMansardInset : halfDepth(footprint);
+        options.pitchDegrees = degrees(std::atan2(heights.roof, reach));
+    }
+    if (options.type == RoofType::Gable && footprint.edgeCount() == 4) {
+        auto street = std::find(footprint.streetEdges.begin(), footprint.streetEdges.end(), true);
+        size_t ridgeEdge = street == footprint.streetEdges.end() ? 0 : size_t(street - footprint.streetEdges.begin());
+        options.gableEdge = int((ridgeEdge + 1) % 4);
+    }
+    return options;
+}
+
+}  // namespace veduta
