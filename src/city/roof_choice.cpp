@@ -1,7 +1,6 @@
 #include "city/roof_choice.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <sstream>
 #include <vector>
@@ -17,12 +16,6 @@ namespace {
 
 constexpr uint32_t kRoofChoiceKey = 0x524f4f46u;  // "ROOF": the draw among a RoofType list
 
-std::string lowercase(std::string_view text) {
-    std::string lower(text);
-    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return lower;
-}
-
 // RoofType: one name, or several separated by spaces or commas, of which each building takes
 // one at random. Unset: seed 000's choice.
 RoofType chosenType(const Footprint &footprint, const SettingsStack &settings, uint32_t seed, uint32_t buildingId) {
@@ -35,7 +28,7 @@ RoofType chosenType(const Footprint &footprint, const SettingsStack &settings, u
     for (std::string word; words >> word;) {
         std::optional<RoofType> type = roofTypeFromName(word);
         if (!type)
-            throw InputError(value->loc, fmt::format("RoofType '{}' is none of flat, hip, pyramid, shed, gable, mansard", word));
+            throw InputError(value->loc, fmt::format("RoofType '{}' is none of flat, hip, pyramid, shed, gable, halfhip, mansard", word));
         types.push_back(*type);
     }
     if (types.empty()) throw InputError(value->loc, "RoofType names no roof type");
@@ -66,14 +59,6 @@ std::optional<float> pitchSetting(const SettingsStack &settings) {
 
 }  // namespace
 
-std::optional<RoofType> roofTypeFromName(std::string_view name) {
-    for (RoofType type : {RoofType::Flat, RoofType::Hip, RoofType::Pyramid, RoofType::Shed, RoofType::Gable,
-                          RoofType::Mansard}) {
-        if (lowercase(name) == roofTypeName(type)) return type;
-    }
-    return std::nullopt;
-}
-
 RoofOptions roofOptionsFor(const Footprint &footprint, const SettingsStack &settings, const BuildingHeights &heights,
                            uint32_t seed, uint32_t buildingId) {
     RoofOptions options;
@@ -85,11 +70,6 @@ RoofOptions roofOptionsFor(const Footprint &footprint, const SettingsStack &sett
     } else if (heights.roof > 0) {
         float reach = options.type == RoofType::Mansard ? kMansardInset : halfDepth(footprint);
         options.pitchDegrees = degrees(std::atan2(heights.roof, reach));
-    }
-    if (options.type == RoofType::Gable && footprint.edgeCount() == 4) {
-        auto street = std::find(footprint.streetEdges.begin(), footprint.streetEdges.end(), true);
-        size_t ridgeEdge = street == footprint.streetEdges.end() ? 0 : size_t(street - footprint.streetEdges.begin());
-        options.gableEdge = int((ridgeEdge + 1) % 4);
     }
     return options;
 }

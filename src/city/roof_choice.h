@@ -1,12 +1,10 @@
-// Which roof a building gets from its settings (issue 7; docs/roofs.md, "Choosing a roof"):
+// Which roof a building gets from its settings (issue 7; docs/buildings.md, "Roof settings"):
 // RoofType names one type, or several that buildings choose from by their id; RoofPitch,
 // RoofOverhang and ParapetHeight shape it. Without RoofType a building keeps seed 000's choice
 // (roofs.h: a gable over a rectangular house on one street, a mansard otherwise).
 #pragma once
 
 #include <cstdint>
-#include <optional>
-#include <string_view>
 
 #include "city/building_settings.h"
 #include "city/footprint.h"
@@ -16,14 +14,11 @@ namespace veduta {
 
 inline constexpr float kDefaultParapetHeight = 0.8f;  // ParapetHeight, metres
 
-// A roof type's name as settings write it: flat, hip, pyramid, shed, gable, mansard (any case).
-std::optional<RoofType> roofTypeFromName(std::string_view name);
-
 // The roof options for one building. RoofHeight 0 gives a flat roof. Without RoofPitch, the
 // pitch is the one that raises the roof RoofHeight over the building's half depth (the half
 // shorter side of a rectangle, else 2·area / perimeter, the radius of a circle of the same
-// proportions), or over a mansard's slope width. A seed 000 gable has its ridge along the
-// first street edge. InputError at the setting for an unknown type, a pitch outside (0°, 90°)
+// proportions), or over a mansard's slope width. Gables stand on every end of a ridge
+// (roof_shapes.h). InputError at the setting for an unknown type, a pitch outside (0°, 90°)
 // or a negative overhang or parapet.
 RoofOptions roofOptionsFor(const Footprint &footprint, const SettingsStack &settings, const BuildingHeights &heights,
                            uint32_t seed, uint32_t buildingId);

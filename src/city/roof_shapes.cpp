@@ -1,11 +1,9 @@
 #include "city/roof_shapes.h"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2_algorithms.h>
-#include <CGAL/Polygon_with_holes_2.h>
-#include <CGAL/create_straight_skeleton_from_polygon_with_holes_2.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -15,12 +13,12 @@
 #include <fmt/format.h>
 
 #include "city/roof_faces.h"
+#include "city/roof_gables.h"
 
 namespace veduta {
 
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Ring = std::vector<Vec2f>;
 
 // A builder's result: the roof, or why the footprint cannot take its type.
@@ -109,6 +107,16 @@ void addCover(Mesh &m, const RoofFootprint &footprint, float eavesZ, const std::
     addProjectedFace(m, rings, normal, uv, RoofCovering);
 }
 
+// The footprint's rings `aboveBase` over its base.
+std::vector<std::vector<Vec3f>> ringsAt(const RoofFootprint &footprint, float aboveBase) {
+    std::vector<std::vector<Vec3f>> lifted;
+    for (const Ring &ring : ringsOf(footprint)) {
+        lifted.emplace_back();
+        for (Vec2f p : ring) lifted.back().push_back(lift(p, footprint.base + aboveBase));
+    }
+    return lifted;
+}
+
 void addFlatCover(Mesh &m, const RoofFootprint &footprint, float z) {
     addCover(m, footprint, z, [](Vec2f) { return 0.0f; }, kUp, UvPlane{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
 }
@@ -156,41 +164,71 @@ Mesh flatRoof(const RoofFootprint &footprint, float eavesAboveBase, float parape
     return m;
 }
 
-CGAL::Polygon_2<Kernel> toCgalPolygon(const Ring &ring) {
-    CGAL::Polygon_2<Kernel> polygon;
-    for (Vec2f p : ring) polygon.push_back(Kernel::Point_2(p.x, p.y));
-    return polygon;
+std::optional<std::string> joined(const std::vector<std::string> &notes) {
+    if (notes.empty()) return std::nullopt;
+    std::string text = notes[0];
+    for (size_t i = 1; i < notes.size(); ++i) text = fmt::format("{}; {}", text, notes[i]);
+    return text;
 }
 
-// Every skeleton face belongs to one footprint edge (its halfedge(), running along the
-// footprint), and its points lie in the plane rising from that edge at the pitch: a point
-// reached at offset time t stands t · slope above the eaves.
+constexpr double kCoverageTolerance = 1e-5;  // relative: float corners of roofs tens of metres wide
+
 Attempt hipRoof(const RoofFootprint &footprint, float eavesAboveBase, float slope) {
-    CGAL::Polygon_with_holes_2<Kernel> polygon(toCgalPolygon(footprint.outer));
-    for (const Ring &hole : footprint.holes) polygon.add_hole(toCgalPolygon(hole));
-    auto skeleton = CGAL::create_interior_straight_skeleton_2(polygon, Kernel());
-    if (!skeleton) return std::string("CGAL could not build the footprint's straight skeleton");
-    float eavesZ = footprint.base + eavesAboveBase;
-    Mesh m;
-    for (auto face = skeleton->faces_begin(); face != skeleton->faces_end(); ++face) {
-        std::vector<Vec3f> corners;
-        auto edge = face->halfedge(), h = edge;
-        do {
-            const auto &p = h->vertex()->point();
-            corners.push_back({float(p.x()), float(p.y()), eavesZ + float(h->vertex()->time()) * slope});
-            h = h->next();
-        } while (h != edge);
-        // The loop began at the footprint edge's end; its start closes it. Put it first.
-        std::rotate(corners.begin(), corners.end() - 1, corners.end());
-        Vec2f a{corners[0].x, corners[0].y}, b{corners[1].x, corners[1].y};
-        Vec3f normal = normalize(outwardNormal(a, b) * slope + kUp);
-        size_t trianglesBefore = m.triangleCount();
-        addProjectedFace(m, {corners}, normal, slopeUvPlane(corners), RoofCovering);
-        if (m.triangleCount() - trianglesBefore != corners.size() - 2) {
-            return fmt::format("the skeleton face of edge ({} {}) – ({} {}) does not triangulate", a.x, a.y, b.x, b.y);
+    std::optional<SkeletonRoof> roof = skeletonRoof(footprint, footprint.base + eavesAboveBase, slope);
+    if (!roof) return std::string("CGAL could not build the footprint's straight skeleton");
+    return roofMesh(*roof);
+}
+
+// Whether the covering's triangles, seen from above, add up to the footprint: a gable end
+// whose stretched slopes fold over a neighbouring face passes roof_gables' checks face by face
+// but leaves slivers uncovered beside the walls.
+bool coversFootprintOnce(const Mesh &m, const RoofFootprint &footprint) {
+    double covered = 0, expected = 0;
+    for (size_t t = 0; t < m.triangleCount(); ++t) {
+        if (m.triangleMaterials[t] != RoofCovering) continue;
+        const uint32_t *i = &m.indices[3 * t];
+        Vec3f a = m.positions[i[0]], b = m.positions[i[1]], c = m.positions[i[2]];
+        covered += (double(b.x - a.x) * (c.y - a.y) - double(c.x - a.x) * (b.y - a.y)) / 2;
+    }
+    for (const Ring &ring : ringsOf(footprint)) expected += signedArea(ring);
+    return std::abs(covered - expected) <= kCoverageTolerance * expected;
+}
+
+Attempt checkedCover(Attempt attempt, const RoofFootprint &footprint) {
+    const Mesh *mesh = std::get_if<Mesh>(&attempt);
+    if (mesh && !coversFootprintOnce(*mesh, footprint)) return std::string("its slopes would fold over one another");
+    return attempt;
+}
+
+// Gable or half-hip ends (roof_gables.h) on the hip roof: on the chosen edge, or on every end of
+// a ridge, shortest edge first; an end whose apex an earlier gable took stays hipped by rule,
+// one the geometry refuses with a note.
+Attempt gabledRoof(const RoofFootprint &footprint, float eavesAboveBase, float slope, int gableEdge,
+                   std::optional<float> halfHipFraction, std::vector<std::string> &notes) {
+    std::optional<SkeletonRoof> roof = skeletonRoof(footprint, footprint.base + eavesAboveBase, slope);
+    if (!roof) return std::string("CGAL could not build the footprint's straight skeleton");
+    if (gableEdge >= 0) {
+        auto edge = size_t(gableEdge);
+        if (!endsARidge(*roof, edge)) return fmt::format("edge {} ends no ridge: its hip face is no triangle", edge);
+        if (auto refusal = addGableEnd(*roof, edge, halfHipFraction)) return fmt::format("edge {}: {}", edge, *refusal);
+        return checkedCover(roofMesh(*roof), footprint);
+    }
+    std::vector<std::string> refusals;
+    size_t gables = 0;
+    for (size_t edge : ridgeEnds(*roof)) {
+        if (!endsARidge(*roof, edge)) continue;
+        if (auto refusal = addGableEnd(*roof, edge, halfHipFraction)) {
+            refusals.push_back(fmt::format("edge {} stays hipped: {}", edge, *refusal));
+        } else {
+            ++gables;
         }
     }
-    return m;
+    if (gables == 0) {
+        return refusals.empty() ? std::string("no edge ends a ridge: no hip face is a triangle") : *joined(refusals);
+    }
+    Attempt built = checkedCover(roofMesh(*roof), footprint);
+    if (std::holds_alternative<Mesh>(built)) notes.insert(notes.end(), refusals.begin(), refusals.end());
+    return built;
 }
 
 Vec2f areaCentroid(const Ring &ring) {
@@ -209,10 +247,10 @@ Vec2f areaCentroid(const Ring &ring) {
 
 Attempt pyramidRoof(const RoofFootprint &footprint, float eavesAboveBase, float slope) {
     const Ring &outer = footprint.outer;
-    std::vector<Kernel::Point_2> points;
+    std::vector<RoofKernel::Point_2> points;
     for (Vec2f p : outer) points.emplace_back(p.x, p.y);
     if (!footprint.holes.empty()) return std::string("a pyramid needs a footprint without courtyards");
-    if (!CGAL::is_convex_2(points.begin(), points.end(), Kernel())) return std::string("a pyramid needs a convex footprint");
+    if (!CGAL::is_convex_2(points.begin(), points.end(), RoofKernel())) return std::string("a pyramid needs a convex footprint");
     // The apex stands over the centroid as high as the pitch rises over its nearest edge.
     Vec2f centre = areaCentroid(outer);
     float reach = std::numeric_limits<float>::max();
@@ -270,18 +308,6 @@ Mesh shedRoof(const RoofFootprint &footprint, float eavesAboveBase, float slope,
     return m;
 }
 
-// roofs.h's gable over a rectangle: its ridge parallel to its "street" edge, so that edge is
-// the one before the gable edge.
-Attempt gableOverRectangle(const RoofFootprint &footprint, float eavesAboveBase, float slope, int gableEdge) {
-    Footprint rectangle{footprint.outer, std::vector<bool>(footprint.outer.size(), false), footprint.base};
-    if (!footprint.holes.empty() || rectangle.edgeCount() != 4 || !isRightAngled(rectangle)) {
-        return std::string("a gable needs a rectangular footprint without courtyards");
-    }
-    size_t gable = gableEdge >= 0 ? size_t(gableEdge) : (rectangle.edgeLength(0) <= rectangle.edgeLength(1) ? 0 : 1);
-    rectangle.streetEdges[(gable + 3) % 4] = true;
-    return gableRoof(rectangle, eavesAboveBase, rectangle.edgeLength(gable) / 2 * slope);
-}
-
 // roofs.h's mansard, its slopes reaching kMansardInset in at the pitch (steeper where the inset
 // had to be halved).
 Attempt mansardOverFootprint(const RoofFootprint &footprint, float eavesAboveBase, float slope) {
@@ -298,16 +324,19 @@ std::vector<RoofType> attemptOrder(RoofType type) {
     case RoofType::Flat: return {};
     case RoofType::Pyramid: return {RoofType::Pyramid, RoofType::Hip};
     case RoofType::Gable: return {RoofType::Gable, RoofType::Hip};
+    case RoofType::HalfHip: return {RoofType::HalfHip, RoofType::Hip};
     default: return {type};
     }
 }
 
 Attempt buildSloped(RoofType type, const RoofFootprint &footprint, float eavesAboveBase, float slope,
-                    const RoofOptions &options) {
+                    const RoofOptions &options, std::vector<std::string> &notes) {
     switch (type) {
     case RoofType::Hip: return hipRoof(footprint, eavesAboveBase, slope);
     case RoofType::Pyramid: return pyramidRoof(footprint, eavesAboveBase, slope);
-    case RoofType::Gable: return gableOverRectangle(footprint, eavesAboveBase, slope, options.gableEdge);
+    case RoofType::Gable: return gabledRoof(footprint, eavesAboveBase, slope, options.gableEdge, std::nullopt, notes);
+    case RoofType::HalfHip:
+        return gabledRoof(footprint, eavesAboveBase, slope, options.gableEdge, options.halfHipFraction, notes);
     case RoofType::Mansard: return mansardOverFootprint(footprint, eavesAboveBase, slope);
     case RoofType::Shed: {
         size_t low = options.gableEdge >= 0 ? size_t(options.gableEdge) : longestEdge(footprint.outer);
@@ -335,13 +364,18 @@ void checkArguments(const RoofFootprint &footprint, const RoofOptions &options) 
     if (options.gableEdge < -1 || options.gableEdge >= int(footprint.outer.size())) {
         throw std::invalid_argument(fmt::format("the footprint has no edge {}", options.gableEdge));
     }
+    if (!(options.halfHipFraction > 0 && options.halfHipFraction < 1)) {
+        throw std::invalid_argument(fmt::format("a half-hip fraction of {} is not between 0 and 1", options.halfHipFraction));
+    }
 }
 
-std::optional<std::string> joined(const std::vector<std::string> &notes) {
-    if (notes.empty()) return std::nullopt;
-    std::string text = notes[0];
-    for (size_t i = 1; i < notes.size(); ++i) text = fmt::format("{}; {}", text, notes[i]);
-    return text;
+
+// An overhang moves the whole outline out and lowers the eaves by one amount. Gable and shed
+// walls would then stand off the house's walls, and a pyramid's faces over edges farther from
+// its apex than the nearest one are shallower and would pass below the wall tops: both leave
+// gaps, so these types take no overhang until it can differ from edge to edge.
+bool takesOverhang(RoofType type) {
+    return type == RoofType::Hip || type == RoofType::Mansard || type == RoofType::Flat;
 }
 
 }  // namespace
@@ -353,9 +387,20 @@ std::string_view roofTypeName(RoofType type) {
     case RoofType::Pyramid: return "pyramid";
     case RoofType::Shed: return "shed";
     case RoofType::Gable: return "gable";
+    case RoofType::HalfHip: return "halfhip";
     case RoofType::Mansard: return "mansard";
     }
     return "unknown";
+}
+
+std::optional<RoofType> roofTypeFromName(std::string_view name) {
+    std::string lower;
+    for (char c : name) lower += char(std::tolower(static_cast<unsigned char>(c)));
+    if (lower == "half-hip") return RoofType::HalfHip;
+    for (RoofType type : kRoofTypes) {
+        if (roofTypeName(type) == lower) return type;
+    }
+    return std::nullopt;
 }
 
 RoofResult buildRoof(const RoofFootprint &footprint, float eavesHeight, const RoofOptions &options) {
@@ -363,6 +408,10 @@ RoofResult buildRoof(const RoofFootprint &footprint, float eavesHeight, const Ro
     std::vector<std::string> notes;
     RoofFootprint eaves = footprint;
     float overhang = options.overhang;
+    if (overhang > 0 && !takesOverhang(options.type)) {
+        notes.push_back(fmt::format("a {} roof takes no overhang yet; built without", roofTypeName(options.type)));
+        overhang = 0;
+    }
     if (overhang > 0) {
         RoofFootprint moved = offsetFootprint(footprint, overhang);
         if (isCleanOffset(footprint, moved, overhang)) {
@@ -374,12 +423,16 @@ RoofResult buildRoof(const RoofFootprint &footprint, float eavesHeight, const Ro
     }
     // The slopes run on over the overhang: lower eaves, the same wall tops.
     float slope = std::tan(radians(options.pitchDegrees));
+    float slopedEaves = eavesHeight - overhang * slope;
     for (RoofType type : attemptOrder(options.type)) {
-        Attempt attempt = buildSloped(type, eaves, eavesHeight - overhang * slope, slope, options);
-        if (Mesh *mesh = std::get_if<Mesh>(&attempt)) return {std::move(*mesh), type, joined(notes)};
+        Attempt attempt = buildSloped(type, eaves, slopedEaves, slope, options, notes);
+        if (Mesh *mesh = std::get_if<Mesh>(&attempt)) {
+            return {std::move(*mesh), type, joined(notes), ringsAt(eaves, slopedEaves), eavesHeight};
+        }
         notes.push_back(fmt::format("no {} roof: {}", roofTypeName(type), std::get<std::string>(attempt)));
     }
-    return {flatRoof(eaves, eavesHeight, options.parapetHeight), RoofType::Flat, joined(notes)};
+    return {flatRoof(eaves, eavesHeight, options.parapetHeight), RoofType::Flat, joined(notes), ringsAt(eaves, eavesHeight),
+            eavesHeight};
 }
 
 }  // namespace veduta

@@ -1,11 +1,12 @@
 // Roofs on any simple footprint, with or without courtyards (issue 7; digest-001 §2.3,
 // anchors-procedural §1.2, §6–7): flat with a parapet, hip (the straight skeleton lifted by the
-// pitch), pyramid, shed, gable and mansard, with eaves overhangs and a fallback to a simpler
-// type, with the reason, when the footprint cannot take the one asked for.
+// pitch), pyramid, shed, gable, half-hip and mansard, with eaves overhangs and a fallback to a
+// simpler type, with the reason, when the footprint cannot take the one asked for.
 #pragma once
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "city/roofs.h"
@@ -21,33 +22,48 @@ struct RoofFootprint {
     float base = 0;
 };
 
-enum class RoofType { Flat, Hip, Pyramid, Shed, Gable, Mansard };
+enum class RoofType { Flat, Hip, Pyramid, Shed, Gable, HalfHip, Mansard };
+inline constexpr RoofType kRoofTypes[] = {RoofType::Flat,  RoofType::Hip,     RoofType::Pyramid, RoofType::Shed,
+                                          RoofType::Gable, RoofType::HalfHip, RoofType::Mansard};
 
 struct RoofOptions {
     RoofType type = RoofType::Hip;
     float pitchDegrees = 40;    // the slopes' angle; a flat roof ignores it
-    float overhang = 0;         // metres the eaves reach out beyond the walls
+    float overhang = 0;         // metres the eaves reach beyond the walls: hip, mansard and flat roofs only
     float parapetHeight = 0.8f; // a flat roof's parapet, 0 for none
-    // Shed: the low edge; gable: an edge carrying a gable end. −1: the longest edge for a shed,
-    // the shorter edges for a gable. An index into `outer`'s edges.
+    // Shed: the low edge; gable and half-hip: the one edge to carry the gable end. −1: the
+    // longest edge for a shed, every end of a ridge for a gable or half-hip (roof_gables.h).
+    // An index into `outer`'s edges.
     int gableEdge = -1;
+    float halfHipFraction = 0.5f;  // in (0, 1): how far up the gable a half-hip's wall reaches
 };
 
 struct RoofResult {
     Mesh mesh;
     RoofType built;
-    // Why the roof departs from the options (another type, or no overhang), when it does.
+    // Why the roof departs from the options (another type, no overhang, gable ends left
+    // hipped), when it does.
     std::optional<std::string> fallback;
+    // The roof's open boundary, where it rests: the footprint's rings moved out by the overhang,
+    // at the (lowered) eaves, in world coordinates.
+    std::vector<std::vector<Vec3f>> eaves;
+    // Height above the base at which walls must stop so that the roof closes them: the slopes
+    // pass the wall tops there, whatever the overhang.
+    float wallTop = 0;
 };
 
 // The fallbacks, tried in this order until one can be built: Pyramid → Hip → Flat,
-// Gable → Hip → Flat, Mansard → Flat, Hip → Flat, Shed → Flat; Flat always can.
+// Gable → Hip → Flat, HalfHip → Hip → Flat, Mansard → Flat, Hip → Flat, Shed → Flat; Flat
+// always can.
 inline constexpr float kParapetThickness = 0.3f;  // halved until it fits, at most kParapetHalvings times
 inline constexpr int kParapetHalvings = 4;
 inline constexpr float kMansardInset = 2;         // the mansard's slope reaches this far in (roofs.h)
 inline constexpr float kMinShedWallHeight = 0.001f;  // lower shed walls are left out
 
 std::string_view roofTypeName(RoofType type);
+// The type a name stands for (flat, hip, pyramid, shed, gable, halfhip or half-hip, mansard; any
+// case), or nullopt.
+std::optional<RoofType> roofTypeFromName(std::string_view name);
 
 // The roof over `footprint` with its eaves `eavesHeight` above the base: a mesh as roofs.h
 // describes (RoofCovering slopes with UVs along the eaves and up the slant, RoofGableWall for
@@ -56,7 +72,7 @@ std::string_view roofTypeName(RoofType type);
 // closes. An overhang lowers the eaves by overhang · tan(pitch), so that the slopes meet the
 // walls at eavesHeight. Throws std::invalid_argument for a footprint that breaks the rules
 // above, a pitch outside (0°, 90°) on a sloped type, a negative overhang or parapet, or a
-// gableEdge that is no edge of `outer`.
+// gableEdge that is no edge of `outer`, or a halfHipFraction outside (0, 1).
 RoofResult buildRoof(const RoofFootprint &footprint, float eavesHeight, const RoofOptions &options);
 
 }  // namespace veduta

@@ -34,7 +34,7 @@ std::string errorWith(const SettingsMap &settings) {
 TEST(RoofChoice, WithoutRoofTypeSeed000sChoiceStands) {
     RoofOptions gable = optionsWith({});
     EXPECT_EQ(gable.type, RoofType::Gable);
-    EXPECT_EQ(gable.gableEdge, 1);  // the ridge runs along the street edge 0
+    EXPECT_EQ(gable.gableEdge, -1);  // gables on both ends of the ridge
     // RoofHeight 4 over half the 12 m depth.
     EXPECT_NEAR(std::tan(radians(gable.pitchDegrees)) * 6, 4, 1e-4);
     Footprint corner{{{0, 0}, {16, 0}, {16, 12}, {0, 12}}, {true, true, false, false}, 0};
@@ -80,15 +80,6 @@ TEST(RoofChoice, BadSettingsAreErrorsAtTheSetting) {
               std::string::npos);
     EXPECT_NE(errorWith({{"ParapetHeight", settingValue("high", kAt)}}).find("city.xml:12:5: setting ParapetHeight must be a number"),
               std::string::npos);
-}
-
-TEST(RoofChoice, NamesReadInAnyCase) {
-    for (RoofType type : {RoofType::Flat, RoofType::Hip, RoofType::Pyramid, RoofType::Shed, RoofType::Gable,
-                          RoofType::Mansard}) {
-        EXPECT_EQ(roofTypeFromName(roofTypeName(type)), type);
-    }
-    EXPECT_EQ(roofTypeFromName("MANSARD"), RoofType::Mansard);
-    EXPECT_FALSE(roofTypeFromName("dome"));
 }
 
 }  // namespace

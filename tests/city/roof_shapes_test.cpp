@@ -1,10 +1,17 @@
 #include <gtest/gtest.h>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
+
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -12,6 +19,7 @@
 #include <vector>
 
 #include "city/roof_shapes.h"
+#include "city/roofs.h"
 #include "core/hash.h"
 
 namespace veduta {
@@ -114,6 +122,29 @@ void expectEavesOn(const Mesh &roof, const RoofFootprint &footprint, float eaves
     EXPECT_EQ(open, expected);
 }
 
+// Corners merged where they coincide: a manifold surface (with the eaves as its border) that
+// does not cross itself.
+void expectNoSelfIntersections(const Mesh &m) {
+    using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+    std::map<Point, size_t> indexOf;
+    std::vector<Kernel::Point_3> points;
+    std::vector<std::vector<size_t>> triangles;
+    for (size_t t = 0; t < m.triangleCount(); ++t) {
+        triangles.emplace_back();
+        for (int k = 0; k < 3; ++k) {
+            Vec3f p = corner(m, t, k);
+            auto [it, inserted] = indexOf.insert({key(p), points.size()});
+            if (inserted) points.emplace_back(p.x, p.y, p.z);
+            triangles.back().push_back(it->second);
+        }
+    }
+    namespace PMP = CGAL::Polygon_mesh_processing;
+    ASSERT_TRUE(PMP::is_polygon_soup_a_polygon_mesh(triangles));
+    CGAL::Surface_mesh<Kernel::Point_3> surface;
+    PMP::polygon_soup_to_polygon_mesh(points, triangles, surface);
+    EXPECT_FALSE(PMP::does_self_intersect(surface));
+}
+
 double signedVolume(const Mesh &m) {
     double volume = 0;
     for (size_t t = 0; t < m.triangleCount(); ++t) {
@@ -123,8 +154,8 @@ double signedVolume(const Mesh &m) {
     return volume;
 }
 
-// Well formed, closed by its floor, pointing outwards, covering the footprint once, with UVs
-// in metres on the covering.
+// Well formed, closed by its floor, pointing outwards, covering the footprint once, not crossing
+// itself, with UVs in metres on the covering, and its eaves reported where they are.
 void expectRoofOver(const RoofResult &roof, const RoofFootprint &eaves, float eavesZ) {
     const Mesh &m = roof.mesh;
     ASSERT_GT(m.triangleCount(), 0u);
@@ -146,6 +177,12 @@ void expectRoofOver(const RoofResult &roof, const RoofFootprint &eaves, float ea
     Mesh floor = floorAt(eaves, eavesZ);
     expectClosedWith(m, floor);
     expectEavesOn(m, eaves, eavesZ);
+    expectNoSelfIntersections(m);
+    ASSERT_EQ(roof.eaves.size(), ringsOf(eaves).size());
+    for (size_t r = 0; r < roof.eaves.size(); ++r) {
+        ASSERT_EQ(roof.eaves[r].size(), ringsOf(eaves)[r].size());
+        for (size_t i = 0; i < roof.eaves[r].size(); ++i) EXPECT_EQ(roof.eaves[r][i], lift(ringsOf(eaves)[r][i], eavesZ));
+    }
     Mesh closed = m;
     closed.append(floor, Transform{});
     EXPECT_GT(signedVolume(closed), 0);
@@ -190,33 +227,33 @@ std::vector<Case> footprints() {
             {"T", tShape()},   {"U", uShape()},             {"courtyard", courtyard()}};
 }
 
-const RoofType kTypes[] = {RoofType::Flat, RoofType::Hip, RoofType::Pyramid,
-                           RoofType::Shed, RoofType::Gable, RoofType::Mansard};
-
 TEST(RoofShapes, EveryTypeClosesOverEveryFootprint) {
     for (const Case &c : footprints()) {
-        for (RoofType type : kTypes) {
+        for (RoofType type : kRoofTypes) {
             SCOPED_TRACE(fmt::format("{} roof on {}", roofTypeName(type), c.name));
-            RoofOptions options{type, 35, 0, 0.8f, -1};
+            RoofOptions options{type, 35, 0, 0.8f, -1, 0.5f};
             RoofResult roof = buildRoof(c.footprint, kEaves, options);
             EXPECT_EQ(roof.fallback.has_value(), roof.built != type);
             expectRoofOver(roof, c.footprint, c.footprint.base + kEaves);
+            EXPECT_EQ(roof.wallTop, kEaves);
         }
     }
 }
 
 TEST(RoofShapes, TypesFallBackWhereTheFootprintCannotTakeThem) {
     auto built = [](const RoofFootprint &footprint, RoofType type) {
-        return buildRoof(footprint, kEaves, RoofOptions{type, 35, 0, 0.8f, -1}).built;
+        return buildRoof(footprint, kEaves, RoofOptions{type, 35, 0, 0.8f, -1, 0.5f}).built;
     };
     EXPECT_EQ(built(quad(), RoofType::Pyramid), RoofType::Pyramid);
     EXPECT_EQ(built(lShape(), RoofType::Pyramid), RoofType::Hip);
     EXPECT_EQ(built(rectangle(), RoofType::Gable), RoofType::Gable);
-    EXPECT_EQ(built(uShape(), RoofType::Gable), RoofType::Hip);
+    EXPECT_EQ(built(uShape(), RoofType::Gable), RoofType::Gable);
+    EXPECT_EQ(built(courtyard(), RoofType::Gable), RoofType::Hip);
+    EXPECT_EQ(built(courtyard(), RoofType::HalfHip), RoofType::Hip);
     EXPECT_EQ(built(tShape(), RoofType::Mansard), RoofType::Mansard);
     EXPECT_EQ(built(courtyard(), RoofType::Mansard), RoofType::Flat);
     EXPECT_EQ(built(courtyard(), RoofType::Shed), RoofType::Shed);
-    RoofResult roof = buildRoof(courtyard(), kEaves, RoofOptions{RoofType::Pyramid, 35, 0, 0.8f, -1});
+    RoofResult roof = buildRoof(courtyard(), kEaves, RoofOptions{RoofType::Pyramid, 35, 0, 0.8f, -1, 0.5f});
     ASSERT_TRUE(roof.fallback.has_value());
     EXPECT_NE(roof.fallback->find("pyramid"), std::string::npos) << *roof.fallback;
 }
@@ -224,7 +261,7 @@ TEST(RoofShapes, TypesFallBackWhereTheFootprintCannotTakeThem) {
 TEST(RoofShapes, HipHasOneFacePerEdge) {
     for (const Case &c : footprints()) {
         SCOPED_TRACE(c.name);
-        RoofResult roof = buildRoof(c.footprint, kEaves, RoofOptions{RoofType::Hip, 35, 0, 0.8f, -1});
+        RoofResult roof = buildRoof(c.footprint, kEaves, RoofOptions{RoofType::Hip, 35, 0, 0.8f, -1, 0.5f});
         ASSERT_EQ(roof.built, RoofType::Hip);
         EXPECT_EQ(planarFaces(roof.mesh), edgeCount(c.footprint));
     }
@@ -242,17 +279,17 @@ TEST(RoofShapes, SlopesRiseAtThePitch) {
     float eavesZ = house.base + kEaves;
     for (auto [type, rise] : {std::pair{RoofType::Hip, 6.0f}, {RoofType::Gable, 6.0f}, {RoofType::Shed, 12.0f}}) {
         SCOPED_TRACE(roofTypeName(type));
-        EXPECT_NEAR(highest(buildRoof(house, kEaves, RoofOptions{type, 45, 0, 0.8f, -1}).mesh), eavesZ + rise, 1e-4f);
+        EXPECT_NEAR(highest(buildRoof(house, kEaves, RoofOptions{type, 45, 0, 0.8f, -1, 0.5f}).mesh), eavesZ + rise, 1e-4f);
     }
     // The pyramid's apex over the quad's centroid, as high as the pitch rises from its nearest edge.
-    EXPECT_NEAR(highest(buildRoof(rectangle(), kEaves, RoofOptions{RoofType::Pyramid, 45, 0, 0.8f, -1}).mesh),
+    EXPECT_NEAR(highest(buildRoof(rectangle(), kEaves, RoofOptions{RoofType::Pyramid, 45, 0, 0.8f, -1, 0.5f}).mesh),
                 eavesZ + 6, 1e-4f);
-    EXPECT_NEAR(highest(buildRoof(house, kEaves, RoofOptions{RoofType::Flat, 45, 0, 0.8f, -1}).mesh), eavesZ + 0.8f,
+    EXPECT_NEAR(highest(buildRoof(house, kEaves, RoofOptions{RoofType::Flat, 45, 0, 0.8f, -1, 0.5f}).mesh), eavesZ + 0.8f,
                 1e-5f);
 }
 
 TEST(RoofShapes, ShedRisesFromTheChosenEdge) {
-    RoofResult roof = buildRoof(rectangle(), kEaves, RoofOptions{RoofType::Shed, 45, 0, 0.8f, 1});
+    RoofResult roof = buildRoof(rectangle(), kEaves, RoofOptions{RoofType::Shed, 45, 0, 0.8f, 1, 0.5f});
     // Edge 1 runs up the east side: the roof rises 20 m westwards.
     for (const Vec3f &p : roof.mesh.positions) {
         if (p.z > kEaves + 1) {
@@ -265,20 +302,28 @@ TEST(RoofShapes, ShedRisesFromTheChosenEdge) {
 TEST(RoofShapes, OverhangWidensAndLowersTheEaves) {
     float pitch = 40, overhang = 0.5f;
     RoofFootprint wider{{{-0.5f, -0.5f}, {20.5f, -0.5f}, {20.5f, 12.5f}, {-0.5f, 12.5f}}, {}, 1};
-    for (RoofType type : {RoofType::Hip, RoofType::Gable, RoofType::Shed, RoofType::Pyramid}) {
+    for (RoofType type : {RoofType::Hip, RoofType::Mansard}) {
         SCOPED_TRACE(roofTypeName(type));
-        RoofResult roof = buildRoof(rectangle(), kEaves, RoofOptions{type, pitch, overhang, 0.8f, -1});
+        RoofResult roof = buildRoof(rectangle(), kEaves, RoofOptions{type, pitch, overhang, 0.8f, -1, 0.5f});
         EXPECT_FALSE(roof.fallback.has_value());
         expectRoofOver(roof, wider, 1 + (kEaves - overhang * std::tan(radians(pitch))));
     }
-    RoofResult flat = buildRoof(rectangle(), kEaves, RoofOptions{RoofType::Flat, pitch, overhang, 0.8f, -1});
+    // Their gable and shed walls would stand off the house's walls (roof_shapes.h).
+    for (RoofType type : {RoofType::Gable, RoofType::HalfHip, RoofType::Shed, RoofType::Pyramid}) {
+        SCOPED_TRACE(roofTypeName(type));
+        RoofResult roof = buildRoof(rectangle(), kEaves, RoofOptions{type, pitch, overhang, 0.8f, -1, 0.5f});
+        ASSERT_TRUE(roof.fallback.has_value());
+        EXPECT_NE(roof.fallback->find("takes no overhang"), std::string::npos) << *roof.fallback;
+        expectRoofOver(roof, rectangle(), 1 + kEaves);
+    }
+    RoofResult flat = buildRoof(rectangle(), kEaves, RoofOptions{RoofType::Flat, pitch, overhang, 0.8f, -1, 0.5f});
     expectRoofOver(flat, wider, 1 + kEaves);
 }
 
 TEST(RoofShapes, OverhangTheFootprintCannotTakeIsLeftOut) {
     // A slit 1 m wide between the U's arms closes under a 0.6 m overhang on each side.
     RoofFootprint narrow{{{0, 0}, {21, 0}, {21, 20}, {11, 20}, {11, 8}, {10, 8}, {10, 20}, {0, 20}}, {}, 0};
-    RoofResult roof = buildRoof(narrow, kEaves, RoofOptions{RoofType::Hip, 40, 0.6f, 0.8f, -1});
+    RoofResult roof = buildRoof(narrow, kEaves, RoofOptions{RoofType::Hip, 40, 0.6f, 0.8f, -1, 0.5f});
     EXPECT_EQ(roof.built, RoofType::Hip);
     ASSERT_TRUE(roof.fallback.has_value());
     EXPECT_NE(roof.fallback->find("overhang"), std::string::npos) << *roof.fallback;
@@ -292,9 +337,116 @@ TEST(RoofShapes, RefusesBadArguments) {
     RoofFootprint holeOutside = rectangle();
     holeOutside.holes.push_back({{30, 1}, {30, 2}, {31, 2}, {31, 1}});
     EXPECT_THROW(buildRoof(holeOutside, kEaves, RoofOptions{}), std::invalid_argument);
-    EXPECT_THROW(buildRoof(rectangle(), kEaves, RoofOptions{RoofType::Hip, 90, 0, 0.8f, -1}), std::invalid_argument);
-    EXPECT_THROW(buildRoof(rectangle(), kEaves, RoofOptions{RoofType::Shed, 30, -1, 0.8f, -1}), std::invalid_argument);
-    EXPECT_THROW(buildRoof(rectangle(), kEaves, RoofOptions{RoofType::Shed, 30, 0, 0.8f, 4}), std::invalid_argument);
+    EXPECT_THROW(buildRoof(rectangle(), kEaves, RoofOptions{RoofType::Hip, 90, 0, 0.8f, -1, 0.5f}), std::invalid_argument);
+    EXPECT_THROW(buildRoof(rectangle(), kEaves, RoofOptions{RoofType::Shed, 30, -1, 0.8f, -1, 0.5f}), std::invalid_argument);
+    EXPECT_THROW(buildRoof(rectangle(), kEaves, RoofOptions{RoofType::Shed, 30, 0, 0.8f, 4, 0.5f}), std::invalid_argument);
+    EXPECT_THROW(buildRoof(rectangle(), kEaves, RoofOptions{RoofType::HalfHip, 30, 0, 0.8f, -1, 1}), std::invalid_argument);
+    EXPECT_THROW(buildRoof(rectangle(), kEaves, RoofOptions{RoofType::HalfHip, 30, 0, 0.8f, -1, 0}), std::invalid_argument);
+}
+
+// The footprint edges (numbered through the rings) that gable walls stand on, each wall
+// triangle vertical and within 0.1 mm of one edge's vertical plane, between its ends.
+std::set<size_t> gableWallEdges(const Mesh &m, const RoofFootprint &footprint) {
+    std::vector<std::pair<Vec2f, Vec2f>> edges;
+    for (const auto &ring : ringsOf(footprint)) {
+        for (size_t i = 0; i < ring.size(); ++i) edges.push_back({ring[i], ring[(i + 1) % ring.size()]});
+    }
+    std::set<size_t> under;
+    for (size_t t = 0; t < m.triangleCount(); ++t) {
+        if (m.triangleMaterials[t] != RoofGableWall) continue;
+        EXPECT_NEAR(normalize(crossOf(m, t)).z, 0, 1e-5f) << "triangle " << t;
+        auto standsOn = [&](const std::pair<Vec2f, Vec2f> &edge) {
+            for (int k = 0; k < 3; ++k) {
+                Vec3f p = corner(m, t, k);
+                if (distanceToSegment({p.x, p.y}, edge.first, edge.second) > 1e-4) return false;
+            }
+            return true;
+        };
+        auto edge = std::find_if(edges.begin(), edges.end(), standsOn);
+        EXPECT_NE(edge, edges.end()) << "triangle " << t << " stands on no edge";
+        if (edge != edges.end()) under.insert(size_t(edge - edges.begin()));
+    }
+    return under;
+}
+
+TEST(RoofShapes, GableEndsStandOnTheEndsOfRidges) {
+    const std::pair<Case, std::set<size_t>> cases[] = {{{"quad", quad()}, {1, 3}},
+                                                       {{"L", lShape()}, {1, 4}},
+                                                       {{"T", tShape()}, {1, 4, 7}},
+                                                       {{"U", uShape()}, {2, 6}},
+                                                       {{"square", {{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {}, 0}}, {0, 2}}};
+    for (const auto &[c, ends] : cases) {
+        for (RoofType type : {RoofType::Gable, RoofType::HalfHip}) {
+            SCOPED_TRACE(fmt::format("{} roof on {}", roofTypeName(type), c.name));
+            RoofResult roof = buildRoof(c.footprint, kEaves, RoofOptions{type, 35, 0, 0.8f, -1, 0.5f});
+            EXPECT_EQ(roof.built, type);
+            EXPECT_FALSE(roof.fallback.has_value()) << *roof.fallback;
+            EXPECT_EQ(gableWallEdges(roof.mesh, c.footprint), ends);
+            expectRoofOver(roof, c.footprint, c.footprint.base + kEaves);
+        }
+    }
+}
+
+std::vector<Point> cornersOf(const Mesh &m) {
+    std::set<Point> corners;
+    for (const Vec3f &p : m.positions) corners.insert(key(p));
+    return {corners.begin(), corners.end()};
+}
+
+TEST(RoofShapes, GableOverARectangleIsSeedZerosGable) {
+    RoofFootprint house = rectangle();
+    RoofResult roof = buildRoof(house, kEaves, RoofOptions{RoofType::Gable, 40, 0, 0.8f, -1, 0.5f});
+    // Street edge 0 runs the ridge along it, the gables on the short sides; 6 m to the ridge.
+    Mesh seed = gableRoof({house.outer, {true, false, false, false}, house.base}, kEaves, 6 * std::tan(radians(40)));
+    std::vector<Point> ours = cornersOf(roof.mesh), theirs = cornersOf(seed);
+    ASSERT_EQ(ours.size(), theirs.size());
+    for (size_t i = 0; i < ours.size(); ++i) {
+        EXPECT_NEAR(std::get<0>(ours[i]), std::get<0>(theirs[i]), 1e-4f);
+        EXPECT_NEAR(std::get<1>(ours[i]), std::get<1>(theirs[i]), 1e-4f);
+        EXPECT_NEAR(std::get<2>(ours[i]), std::get<2>(theirs[i]), 1e-4f);
+    }
+    EXPECT_EQ(planarFaces(roof.mesh), planarFaces(seed));
+}
+
+bool hasCorner(const Mesh &m, const Vec3f &p) {
+    return std::any_of(m.positions.begin(), m.positions.end(), [&](const Vec3f &q) { return length(q - p) < 1e-4f; });
+}
+
+TEST(RoofShapes, HalfHipWallsStopAtTheFraction) {
+    // 12 m deep at 45°: the ridge 6 m up. A quarter of that, 1.5 m, is wall; the small hips rise
+    // from there at 45° and meet the ridge 4.5 m in from the ends.
+    RoofResult roof = buildRoof(rectangle(), kEaves, RoofOptions{RoofType::HalfHip, 45, 0, 0.8f, -1, 0.25f});
+    float eavesZ = 1 + kEaves, wallTop = -INFINITY;
+    for (size_t t = 0; t < roof.mesh.triangleCount(); ++t) {
+        if (roof.mesh.triangleMaterials[t] != RoofGableWall) continue;
+        for (int k = 0; k < 3; ++k) wallTop = std::max(wallTop, corner(roof.mesh, t, k).z);
+    }
+    EXPECT_NEAR(wallTop, eavesZ + 1.5f, 1e-4f);
+    EXPECT_NEAR(highest(roof.mesh), eavesZ + 6, 1e-4f);
+    EXPECT_TRUE(hasCorner(roof.mesh, {4.5f, 6, eavesZ + 6}));
+    EXPECT_TRUE(hasCorner(roof.mesh, {15.5f, 6, eavesZ + 6}));
+    EXPECT_EQ(gableWallEdges(roof.mesh, rectangle()), (std::set<size_t>{1, 3}));
+}
+
+TEST(RoofShapes, GableOnlyOnTheChosenEdge) {
+    RoofResult one = buildRoof(rectangle(), kEaves, RoofOptions{RoofType::Gable, 35, 0, 0.8f, 3, 0.5f});
+    EXPECT_EQ(one.built, RoofType::Gable);
+    EXPECT_FALSE(one.fallback.has_value());
+    EXPECT_EQ(gableWallEdges(one.mesh, rectangle()), std::set<size_t>{3});
+    // A long side ends no ridge: the roof stays hipped and says why.
+    RoofResult side = buildRoof(rectangle(), kEaves, RoofOptions{RoofType::HalfHip, 35, 0, 0.8f, 0, 0.5f});
+    EXPECT_EQ(side.built, RoofType::Hip);
+    ASSERT_TRUE(side.fallback.has_value());
+    EXPECT_NE(side.fallback->find("edge 0"), std::string::npos) << *side.fallback;
+}
+
+TEST(RoofShapes, TypesByName) {
+    for (RoofType type : kRoofTypes) EXPECT_EQ(roofTypeFromName(roofTypeName(type)), type);
+    EXPECT_EQ(roofTypeFromName("Half-Hip"), RoofType::HalfHip);
+    EXPECT_EQ(roofTypeFromName("HALFHIP"), RoofType::HalfHip);
+    EXPECT_EQ(roofTypeFromName("Gable"), RoofType::Gable);
+    EXPECT_EQ(roofTypeFromName("gambrel"), std::nullopt);
+    EXPECT_EQ(roofTypeFromName(""), std::nullopt);
 }
 
 float unit(uint32_t polygon, uint32_t draw) { return bitsToUnitFloat(hashValues({0x5eed, polygon, draw})); }
@@ -322,21 +474,24 @@ RoofFootprint randomFootprint(uint32_t id) {
     return footprint;
 }
 
+// Every footprint gets a flat roof and one sloped type in turn (a gable or half-hip that cannot
+// be built falls back through the hip), which keeps the `roofs` label within seconds.
 TEST(RoofShapes, RandomFootprintsAlwaysGetARoof) {
     constexpr uint32_t kFootprints = 10000;
-    size_t fallbacks = 0;
+    const RoofType sloped[] = {RoofType::Hip, RoofType::Gable, RoofType::HalfHip};
+    std::map<RoofType, int> fallbacks;
     for (uint32_t id = 0; id < kFootprints; ++id) {
         RoofFootprint footprint = randomFootprint(id);
-        for (RoofType type : {RoofType::Hip, RoofType::Flat}) {
-            RoofResult roof = buildRoof(footprint, kEaves, RoofOptions{type, 35, 0.3f, 0.8f, -1});
+        for (RoofType type : {sloped[size_t(3 * unit(id, 0xca7))], RoofType::Flat}) {
+            RoofResult roof = buildRoof(footprint, kEaves, RoofOptions{type, 35, 0.3f, 0.8f, -1, 0.5f});
             ASSERT_GT(roof.mesh.triangleCount(), 0u) << "footprint " << id;
             if (roof.built != type) {
-                ++fallbacks;
+                ++fallbacks[type];
                 ASSERT_TRUE(roof.fallback.has_value() && !roof.fallback->empty()) << "footprint " << id;
             }
         }
     }
-    RecordProperty("fallbacks", int(fallbacks));
+    for (RoofType type : sloped) RecordProperty(fmt::format("{}_fallbacks", roofTypeName(type)), fallbacks[type]);
 }
 
 }  // namespace
