@@ -40,20 +40,20 @@ std::optional<std::string_view> tag(const Tags &tags, std::string_view key) {
     return it == tags.end() ? std::nullopt : std::optional<std::string_view>(it->second);
 }
 
-// GDAL's all_tags column: "k"=>"v","k2"=>"v2", with \" and \\ escaped inside the quotes.
+// GDAL's all_tags column: "k"=>"v","k2"=>"v2", with \" and \\ escaped inside the quotes. GDAL
+// cuts very long tag lists short (with a warning of its own): the pairs before the cut are kept.
 class HstoreParser {
   public:
     explicit HstoreParser(std::string_view text) : text_(text) {}
 
-    // Nothing when the text is not in that form.
-    std::optional<Tags> parse() {
+    Tags parse() {
         Tags tags;
         while (pos_ < text_.size()) {
-            if (!tags.empty() && !expect(",")) return std::nullopt;
+            if (!tags.empty() && !expect(",")) break;
             std::optional<std::string> key = quoted();
-            if (!key || !expect("=>")) return std::nullopt;
+            if (!key || !expect("=>")) break;
             std::optional<std::string> value = quoted();
-            if (!value) return std::nullopt;
+            if (!value) break;
             tags[*key] = std::move(*value);
         }
         return tags;
@@ -212,17 +212,16 @@ void addFeature(const std::string &file, std::string_view layer, const OGRFeatur
     const OGRGeometry *geometry = feature.GetGeometryRef();
     if (!geometry) return;
     FileLoc loc = featureLoc(file, layer, feature);
-    std::optional<Tags> tags = HstoreParser(feature.GetFieldAsString("all_tags")).parse();
-    if (!tags) throw InputError(loc, fmt::format("GDAL gives tags that do not read: {}", feature.GetFieldAsString("all_tags")));
+    Tags tags = HstoreParser(feature.GetFieldAsString("all_tags")).parse();
     OGRwkbGeometryType type = wkbFlatten(geometry->getGeometryType());
     if (layer == "lines" && type == wkbLineString) {
-        std::optional<std::string_view> highway = tag(*tags, "highway");
+        std::optional<std::string_view> highway = tag(tags, "highway");
         if (highway && isStreet(*highway))
-            content.highways.push_back({loc, std::move(*tags), geoPoints(*geometry->toLineString())});
+            content.highways.push_back({loc, std::move(tags), geoPoints(*geometry->toLineString())});
     } else if (layer == "multipolygons" && type == wkbMultiPolygon) {
-        std::optional<std::string_view> building = tag(*tags, "building");
-        bool residential = tag(*tags, "landuse") == "residential";
-        OsmArea area{loc, std::move(*tags), geoPolygons(*geometry->toMultiPolygon())};
+        std::optional<std::string_view> building = tag(tags, "building");
+        bool residential = tag(tags, "landuse") == "residential";
+        OsmArea area{loc, std::move(tags), geoPolygons(*geometry->toMultiPolygon())};
         if (building && building != "no") content.buildings.push_back(area);
         if (residential) content.residentialAreas.push_back(std::move(area));
     }

@@ -205,6 +205,7 @@ TEST(OsmImport, BuildingTagsBecomeSettings) {
     EXPECT_EQ(setting(both, "RoofType"), "Mansard");
 
     EXPECT_EQ(setting(lotOf(city, 2023), "RoofType"), "Flat");
+    EXPECT_EQ(setting(lotOf(city, 2023), "osm:name"), "Garagen \"Am Hof\", 2\\3");  // GDAL escapes quotes and backslashes
     EXPECT_EQ(setting(lotOf(city, 2024), "RoofType"), "Shed");
     EXPECT_EQ(setting(lotOf(city, 2024), "BuildingHeight"), "(unset)");  // no height: the defaults'
 }
