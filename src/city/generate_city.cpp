@@ -10,6 +10,7 @@
 #include "city/building_generator.h"
 #include "city/city_data.h"
 #include "city/lot_subdivision.h"
+#include "city/osm_import.h"
 #include "city/building_rules.h"
 #include "city/street_geometry.h"
 #include "city/warning_list.h"
@@ -30,7 +31,8 @@ struct RuleFileBuilder {
 std::vector<std::unique_ptr<RuleFileBuilder>> readRuleFiles(const FileLoc &fileLoc, const CityData &data, uint32_t seed,
                                                             RenderSceneBuilder &builder,
                                                             std::vector<std::string> &warnings) {
-    if (data.ruleFiles.empty()) throw InputError(fileLoc, "the city names no <Rulefile> to build its lots with");
+    if (data.ruleFiles.empty())
+        throw InputError(fileLoc, "the city names no <Rulefile> to build its lots with, and its <city> no rules");
     std::vector<std::unique_ptr<RuleFileBuilder>> builders;
     for (const std::filesystem::path &file : data.ruleFiles) {
         builders.push_back(std::make_unique<RuleFileBuilder>(file, builder, seed));
@@ -116,6 +118,17 @@ uint32_t buildCity(const CityData &data, uint32_t seed, ObjectId objectId, const
     return id - firstBuildingId;
 }
 
+// Seed 000's CityData XML, or OpenStreetMap data, whose local frame centres on the data.
+CityData readCity(const CityDesc &city) {
+    CityData data = city.file.extension() == ".osm" ? importOsm(city.file, {}) : readCityData(city.file);
+    if (data.ruleFiles.empty() && !city.rules.empty()) {
+        if (!std::filesystem::is_regular_file(city.rules))
+            throw InputError(city.rulesLoc, fmt::format("cannot read the rule file {}", city.rules.string()));
+        data.ruleFiles.push_back(city.rules);
+    }
+    return data;
+}
+
 // Warnings gathered before an error still reach the caller: they may say why.
 template <typename Build>
 uint32_t withWarnings(std::vector<std::string> &out, Build build) {
@@ -136,7 +149,7 @@ uint32_t generateCity(const CityDesc &city, uint32_t firstBuildingId, RenderScen
                       std::vector<std::string> &out) {
     if (!std::filesystem::is_regular_file(city.file))
         throw InputError(city.fileLoc, fmt::format("cannot read the city file {}", city.file.string()));
-    CityData data = readCityData(city.file);
+    CityData data = readCity(city);
     return withWarnings(out, [&](std::vector<std::string> &warnings) {
         return buildCity(data, city.seed, city.objectId, city.fileLoc, firstBuildingId, builder, warnings);
     });

@@ -130,8 +130,11 @@ struct BuildingGroupDesc {
 // cut into lots where they have none and whose lots are built with the rule files it names.
 struct CityDesc {
     FileLoc loc;
-    std::filesystem::path file;  // resolved against the scene's folder
+    std::filesystem::path file;  // resolved against the scene's folder; .osm: OpenStreetMap (docs/osm.md)
     FileLoc fileLoc;
+    // The rule file for a city that names none (an OpenStreetMap file never does); empty: none.
+    std::filesystem::path rules;
+    FileLoc rulesLoc;
     uint32_t seed = 0;  // with each building's id, every random choice of lots and buildings
     uint32_t objectId = 0;
 };

@@ -302,6 +302,10 @@ class SceneFileReader {
         city.loc = e.loc();
         city.file = pathAttribute(e, "file");
         city.fileLoc = e.attributeLoc("file");
+        if (e.has("rules")) {
+            city.rules = pathAttribute(e, "rules");
+            city.rulesLoc = e.attributeLoc("rules");
+        }
         city.seed = e.unsignedInteger("seed", 0);
         readObjectId(e, city.loc);
         e.checkLeaf();

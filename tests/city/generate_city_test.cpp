@@ -31,6 +31,23 @@ TEST(GenerateCity, ListingTwoOneBecomesLotsBuildingsAndStreets) {
     EXPECT_TRUE(clockwise);
 }
 
+TEST(GenerateCity, AnOpenStreetMapFileIsACityWithTheRulesOfItsElement) {
+    std::vector<std::string> warnings;
+    RenderScene scene = build("<scene version=\"1\"><city file=\"../tests/data/osm/small-district.osm\" "
+                              "rules=\"../rules/gruenderzeit/FacadeStructure.xml\" seed=\"3\"/></scene>",
+                              &warnings);
+    std::set<uint32_t> buildings;
+    for (const BakedMesh &m : scene.meshes) buildings.insert(m.buildingId);
+    EXPECT_TRUE(buildings.count(0));  // the streets
+    EXPECT_GE(buildings.size(), 4u);
+    try {
+        build("<scene version=\"1\"><city file=\"../tests/data/osm/small-district.osm\"/></scene>");
+        ADD_FAILURE() << "a city without rules was built";
+    } catch (const InputError &e) {
+        EXPECT_NE(std::string(e.what()).find("test.xml:1:32: the city names no <Rulefile>"), std::string::npos) << e.what();
+    }
+}
+
 TEST(GenerateCity, ErrorsAreAtTheirPlace) {
     auto errorOf = [](const std::string &xml) {
         try {
