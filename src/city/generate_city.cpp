@@ -67,9 +67,7 @@ std::vector<Footprint> lotsOf(const CityBlock &block, const StreetNetwork &stree
     LotSettings settings = lotSettingsFrom(blockSettings);
     for (const BuildableArea &area : buildableAreas(block.points, streets)) {
         Block piece{area.outline, area.streetEdges, block.base};
-        std::vector<Footprint> cut = perimeterLots(piece, settings, seed, blockIndex);
-        if (cut.empty()) cut = recursiveLots(piece, settings, seed, blockIndex);
-        for (Footprint &lot : cut) lots.push_back(std::move(lot));
+        for (Footprint &lot : subdivideBlock(piece, settings, seed, blockIndex)) lots.push_back(std::move(lot));
     }
     return lots;
 }

@@ -29,9 +29,9 @@ uint32_t generateCity(const CityData &data, uint32_t seed, ObjectId objectId, ui
 // The parts, in the order generateCity runs them.
 // The city's streets as a network of its points (metres, x east, y north).
 StreetNetwork streetNetworkOf(const CityData &data);
-// The lots of a block: its own, or perimeter lots (seed 000's Blockrandbebauung) cut from what
-// the streets and sidewalks leave of it; a piece too small for a ring of houses round a
-// courtyard is cut recursively instead (Müller's subdivision, seed 000's other algorithm).
+// The lots of a block: its own, or those its LotSubdivision setting cuts from what the streets
+// and sidewalks leave of it (subdivideBlock: by default perimeter lots, seed 000's
+// Blockrandbebauung, and Müller's recursive subdivision where no ring of houses fits).
 std::vector<Footprint> lotsOf(const CityBlock &block, const StreetNetwork &streets, const SettingsStack &blockSettings,
                               uint32_t seed, uint32_t blockIndex);
 

@@ -80,6 +80,26 @@ bool hasAllowedAngles(const std::vector<Vec2f> &polygon, float minDegrees) {
     return true;
 }
 
+struct AlgorithmName {
+    const char *name;
+    LotSubdivision algorithm;
+};
+
+constexpr AlgorithmName kAlgorithmNames[] = {
+    {"perimeter", LotSubdivision::Perimeter},
+    {"recursive", LotSubdivision::Recursive},
+    {"obb", LotSubdivision::Obb},
+    {"skeleton", LotSubdivision::Skeleton},
+};
+
+LotSubdivision algorithmFrom(const SettingValue &value) {
+    for (const AlgorithmName &entry : kAlgorithmNames) {
+        if (value.text == entry.name) return entry.algorithm;
+    }
+    throw InputError(value.loc, fmt::format("LotSubdivision must be perimeter, recursive, obb or skeleton, not '{}'",
+                                            value.text));
+}
+
 constexpr uint32_t kHousingDensityStream = 0x6c6f7473u;  // "lots": apart from the cut draws
 
 }  // namespace
@@ -90,6 +110,7 @@ void checkLotSettings(const LotSettings &settings, const std::optional<FileLoc> 
 
 LotSettings lotSettingsFrom(const SettingsStack &stack) {
     LotSettings settings;
+    if (const SettingValue *algorithm = stack.find("LotSubdivision")) settings.algorithm = algorithmFrom(*algorithm);
     for (const SettingField &field : kSettingFields) {
         if (std::optional<float> value = stack.number(field.name)) settings.*field.member = *value;
     }
@@ -100,11 +121,23 @@ LotSettings lotSettingsFrom(const SettingsStack &stack) {
     throw InputError(blamed ? blamed->loc : FileLoc{}, problem->message);
 }
 
+std::vector<Footprint> subdivideBlock(const Block &block, const LotSettings &settings, uint32_t seed, uint32_t blockId,
+                                      const std::optional<FileLoc> &loc) {
+    switch (settings.algorithm) {
+    case LotSubdivision::Recursive: return recursiveLots(block, settings, seed, blockId, loc);
+    case LotSubdivision::Obb: return obbLots(block, settings, seed, blockId, loc);
+    case LotSubdivision::Skeleton: return skeletonLots(block, settings, seed, blockId, loc);
+    case LotSubdivision::Perimeter: break;
+    }
+    std::vector<Footprint> lots = perimeterLots(block, settings, seed, blockId, loc);
+    return lots.empty() ? recursiveLots(block, settings, seed, blockId, loc) : lots;
+}
+
 std::vector<Footprint> filterLots(std::vector<Footprint> lots, const LotSettings &settings, uint32_t seed,
                                   uint32_t blockId) {
     std::vector<Footprint> kept;
     for (size_t i = 0; i < lots.size(); ++i) {
-        if (!(lots::polygonArea(lots[i].points) > settings.minLotArea)) continue;
+        if (!(signedArea(lots[i].points) > settings.minLotArea)) continue;
         if (!hasAllowedAngles(lots[i].points, settings.minLotAngleDegrees)) continue;
         uint32_t key = hashValues({seed, blockId, uint32_t(i), kHousingDensityStream});
         if (!(bitsToUnitFloat(key) < settings.housingDensity)) continue;
@@ -138,15 +171,6 @@ float normalBetween(float lo, float hi, uint32_t key) {
     float u2 = bitsToUnitFloat(mix32(key ^ 0xc2b2ae35u));
     float gaussian = std::sqrt(-2 * std::log(u1)) * std::cos(2 * kPi * u2);
     return std::clamp((lo + hi) / 2 + gaussian * (hi - lo) / 6, lo, hi);
-}
-
-float polygonArea(const std::vector<Vec2f> &polygon) {
-    double twice = 0;
-    for (size_t i = 0; i < polygon.size(); ++i) {
-        Vec2f a = polygon[i], b = polygon[(i + 1) % polygon.size()];
-        twice += double(a.x) * b.y - double(b.x) * a.y;
-    }
-    return float(twice / 2);
 }
 
 }  // namespace lots

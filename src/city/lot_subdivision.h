@@ -1,6 +1,7 @@
-// Lot subdivision of city blocks (seed 000's two algorithms, digest-000 §2.2, thesis L362–406):
-// a block polygon is cut into building footprints that each face a street. docs/lots.md
-// describes both algorithms and the choices where the thesis leaves gaps.
+// Lot subdivision of city blocks: a block polygon is cut into building footprints that each face
+// a street. seed 000's two algorithms (digest-000 §2.2, thesis L362–406) and CityEngine's two
+// (the OBB split and Vanegas et al. 2012's straight-skeleton strips); docs/lots.md describes
+// them and the choices where their sources leave gaps.
 #pragma once
 
 #include <cstdint>
@@ -16,9 +17,18 @@ namespace veduta {
 
 class SettingsStack;
 
+// The setting LotSubdivision: which algorithm cuts a block.
+enum class LotSubdivision {
+    Perimeter,  // "perimeter": perimeterLots, recursiveLots where that gives none
+    Recursive,  // "recursive"
+    Obb,        // "obb"
+    Skeleton,   // "skeleton"
+};
+
 // seed 000's BuildingSettings for lots, in metres, square metres and degrees. The thesis gives
 // no defaults; these suit Gründerzeit blocks (frontages of 10–22 m, wings 12 m deep).
 struct LotSettings {
+    LotSubdivision algorithm = LotSubdivision::Perimeter;
     float minBuildingLength = 10, maxBuildingLength = 22;  // frontage along the street
     float minBuildingDepth = 12;                           // inset of the perimeter ring
     float minBuildingInnerLength = 4;                      // a lot's side facing the courtyard
@@ -27,9 +37,10 @@ struct LotSettings {
     float housingDensity = 1;  // probability a lot is kept
 };
 
-// Reads MinBuildingLength, MaxBuildingLength, MinBuildingDepth, MinBuildingInnerLength,
-// MaxLotArea, MinLotArea, MinLotAngle and HousingDensity; the defaults above where one is not
-// set. InputError at the setting when a value is out of its range (see checkLotSettings).
+// Reads LotSubdivision, MinBuildingLength, MaxBuildingLength, MinBuildingDepth,
+// MinBuildingInnerLength, MaxLotArea, MinLotArea, MinLotAngle and HousingDensity; the defaults
+// above where one is not set. InputError at the setting when a value is out of its range (see
+// checkLotSettings) or LotSubdivision names no algorithm.
 LotSettings lotSettingsFrom(const SettingsStack &settings);
 
 // Throws a LotError (InputError at `loc` when given) unless 0 < MinBuildingLength ≤
@@ -72,7 +83,26 @@ std::vector<Footprint> perimeterLots(const Block &block, const LotSettings &sett
 std::vector<Footprint> recursiveLots(const Block &block, const LotSettings &settings, uint32_t seed,
                                      uint32_t blockId, const std::optional<FileLoc> &loc = std::nullopt);
 
-// Both algorithms' final filters (thesis L370–374): the lots with area > MinLotArea and every
+// CityEngine's recursive OBB subdivision (Vanegas et al. 2012): pieces larger than MaxLotArea
+// are split by a line across the longer axis of their minimum-area bounding rectangle, near its
+// middle; where that leaves a part without a street edge the split across the shorter axis is
+// tried instead, and parts that still have none are dropped.
+std::vector<Footprint> obbLots(const Block &block, const LotSettings &settings, uint32_t seed, uint32_t blockId,
+                               const std::optional<FileLoc> &loc = std::nullopt);
+
+// Straight-skeleton subdivision (Vanegas et al. 2012): the faces of the block's interior straight
+// skeleton become one strip per street edge, corner regions go to the longer of two meeting
+// streets, the faces of other edges join a neighbouring strip, and each strip is cut
+// perpendicular to its street at frontages drawn from [MinBuildingLength, MaxBuildingLength].
+std::vector<Footprint> skeletonLots(const Block &block, const LotSettings &settings, uint32_t seed,
+                                    uint32_t blockId, const std::optional<FileLoc> &loc = std::nullopt);
+
+// The lots of the algorithm settings.algorithm names; for Perimeter, recursiveLots where
+// perimeterLots gives none (a piece too small for a ring of houses round a courtyard).
+std::vector<Footprint> subdivideBlock(const Block &block, const LotSettings &settings, uint32_t seed,
+                                      uint32_t blockId, const std::optional<FileLoc> &loc = std::nullopt);
+
+// The algorithms' final filters (thesis L370–374): the lots with area > MinLotArea and every
 // interior angle > MinLotAngle, each of those kept with probability HousingDensity (a pure
 // function of seed, blockId and the lot's index in `lots`).
 std::vector<Footprint> filterLots(std::vector<Footprint> lots, const LotSettings &settings, uint32_t seed,
@@ -87,7 +117,6 @@ void checkBlock(const Block &block, const std::optional<FileLoc> &loc);
 // the range (the thesis says "normally distributed in the range" and gives no σ); a pure
 // function of the hash `key`.
 float normalBetween(float lo, float hi, uint32_t key);
-float polygonArea(const std::vector<Vec2f> &polygon);  // signed: positive counter-clockwise
 }  // namespace lots
 
 }  // namespace veduta

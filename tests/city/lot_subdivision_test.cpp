@@ -1,30 +1,22 @@
 #include <gtest/gtest.h>
 
-#include <CGAL/Boolean_set_operations_2.h>
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_2.h>
-#include <CGAL/Polygon_with_holes_2.h>
 #include <CGAL/create_offset_polygons_2.h>
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "city/building_settings.h"
+#include "city/lot_checks.h"
 #include "city/lot_subdivision.h"
 
 namespace veduta {
 namespace {
 
-using Exact = CGAL::Exact_predicates_exact_constructions_kernel;
-using ExactPolygon = CGAL::Polygon_2<Exact>;
-using ExactPolygonWithHoles = CGAL::Polygon_with_holes_2<Exact>;
-
-constexpr double kAreaTolerance = 1e-3;  // m²
-constexpr double kLengthTolerance = 1e-3;  // m
 const uint32_t kSeeds[] = {1, 1871, 90210};
 
 struct NamedBlock {
@@ -42,29 +34,6 @@ const std::vector<NamedBlock> &testBlocks() {
     return blocks;
 }
 
-ExactPolygon exact(const std::vector<Vec2f> &points) {
-    ExactPolygon polygon;
-    for (Vec2f p : points) polygon.push_back(Exact::Point_2(p.x, p.y));
-    return polygon;
-}
-
-double area(const ExactPolygon &polygon) { return CGAL::to_double(polygon.area()); }
-
-double area(const std::vector<ExactPolygonWithHoles> &polygons) {
-    double sum = 0;
-    for (const ExactPolygonWithHoles &p : polygons) {
-        sum += area(p.outer_boundary());
-        for (const ExactPolygon &hole : p.holes()) sum += area(hole);  // holes run clockwise
-    }
-    return sum;
-}
-
-double intersectionArea(const ExactPolygon &a, const ExactPolygon &b) {
-    std::vector<ExactPolygonWithHoles> parts;
-    CGAL::intersection(a, b, std::back_inserter(parts));
-    return area(parts);
-}
-
 // The block's inset by `depth` from CGAL's straight skeleton: the courtyard, computed apart from
 // the code under test.
 std::vector<ExactPolygon> courtyard(const Block &block, float depth) {
@@ -74,7 +43,7 @@ std::vector<ExactPolygon> courtyard(const Block &block, float depth) {
     std::vector<ExactPolygon> insets;
     for (const auto &inset : CGAL::create_interior_skeleton_and_offset_polygons_2(double(depth), outline)) {
         ExactPolygon polygon;
-        for (const Inexact::Point_2 &p : inset->vertices()) polygon.push_back(Exact::Point_2(p.x(), p.y()));
+        for (const Inexact::Point_2 &p : inset->vertices()) polygon.push_back(ExactKernel::Point_2(p.x(), p.y()));
         insets.push_back(polygon);
     }
     return insets;
@@ -86,64 +55,6 @@ double distanceToOutline(Vec2f p, const Block &block) {
         nearest = std::min(nearest, distanceToSegment(p, block.points[e], block.points[(e + 1) % block.points.size()]));
     }
     return nearest;
-}
-
-bool onStreetEdge(Vec2f a, Vec2f b, const Block &block) {
-    for (size_t e = 0; e < block.points.size(); ++e) {
-        Vec2f s = block.points[e], t = block.points[(e + 1) % block.points.size()];
-        if (block.streetEdges[e] && distanceToSegment(a, s, t) < kLengthTolerance &&
-            distanceToSegment(b, s, t) < kLengthTolerance) {
-            return true;
-        }
-    }
-    return false;
-}
-
-bool nearBlockPoint(Vec2f p, const Block &block) {
-    for (Vec2f q : block.points) {
-        if (std::hypot(p.x - q.x, p.y - q.y) < kLengthTolerance) return true;
-    }
-    return false;
-}
-
-// What every lot of both algorithms must be: a simple counter-clockwise polygon inside the
-// block, apart from the others, with a flagged edge, every flagged edge on a street edge.
-void expectValidLots(const Block &block, const std::vector<Footprint> &lots) {
-    ASSERT_FALSE(lots.empty());
-    ExactPolygon outline = exact(block.points);
-    std::vector<ExactPolygon> exactLots;
-    double sum = 0;
-    for (size_t i = 0; i < lots.size(); ++i) {
-        const Footprint &lot = lots[i];
-        SCOPED_TRACE(testing::Message() << "lot " << i);
-        ASSERT_GE(lot.points.size(), 3u);
-        ASSERT_EQ(lot.streetEdges.size(), lot.points.size());
-        ASSERT_TRUE(isSimplePolygon(lot.points));
-        ASSERT_TRUE(isCounterClockwise(lot.points));
-        ExactPolygon polygon = exact(lot.points);
-        EXPECT_NEAR(intersectionArea(polygon, outline), area(polygon), kAreaTolerance);
-        bool street = false;
-        for (size_t e = 0; e < lot.edgeCount(); ++e) {
-            if (!lot.streetEdges[e]) continue;
-            street = true;
-            EXPECT_TRUE(onStreetEdge(lot.edgeStart(e), lot.edgeEnd(e), block)) << "edge " << e;
-        }
-        EXPECT_TRUE(street);
-        sum += area(polygon);
-        exactLots.push_back(polygon);
-    }
-    // The union is smaller than the sum by at least any pair's overlap.
-    std::vector<ExactPolygonWithHoles> joined;
-    CGAL::join(exactLots.begin(), exactLots.end(), std::back_inserter(joined));
-    EXPECT_LT(sum - area(joined), kAreaTolerance);
-}
-
-double frontage(const Footprint &lot) {
-    double length = 0;
-    for (size_t e = 0; e < lot.edgeCount(); ++e) {
-        if (lot.streetEdges[e]) length += lot.edgeLength(e);
-    }
-    return length;
 }
 
 // A lot between two cuts on one street edge, away from the block's corners: not a corner lot,
@@ -164,6 +75,7 @@ TEST(Lots, PerimeterLotsTileTheRingAlongTheStreets) {
         for (uint32_t seed : kSeeds) {
             SCOPED_TRACE(testing::Message() << named.name << ", seed " << seed);
             std::vector<Footprint> lots = perimeterLots(named.block, settings, seed, 7);
+            ASSERT_FALSE(lots.empty());
             expectValidLots(named.block, lots);
             size_t midEdge = 0;
             for (const Footprint &lot : lots) {
@@ -202,6 +114,7 @@ TEST(Lots, RecursiveLotsAreBetweenMinAndMaxArea) {
         for (uint32_t seed : kSeeds) {
             SCOPED_TRACE(testing::Message() << named.name << ", seed " << seed);
             std::vector<Footprint> lots = recursiveLots(named.block, settings, seed, 7);
+            ASSERT_FALSE(lots.empty());
             expectValidLots(named.block, lots);
             for (const Footprint &lot : lots) {
                 double lotArea = area(exact(lot.points));
@@ -210,17 +123,6 @@ TEST(Lots, RecursiveLotsAreBetweenMinAndMaxArea) {
             }
         }
     }
-}
-
-bool sameLots(const std::vector<Footprint> &a, const std::vector<Footprint> &b) {
-    if (a.size() != b.size()) return false;
-    for (size_t i = 0; i < a.size(); ++i) {
-        if (a[i].points.size() != b[i].points.size() || a[i].streetEdges != b[i].streetEdges) return false;
-        for (size_t k = 0; k < a[i].points.size(); ++k) {
-            if (a[i].points[k].x != b[i].points[k].x || a[i].points[k].y != b[i].points[k].y) return false;
-        }
-    }
-    return true;
 }
 
 TEST(Lots, SameInputsGiveTheSameLotsAndTheSeedChangesThem) {
@@ -270,15 +172,6 @@ TEST(Lots, NoLotsWithoutStreetOrRoomForTheRing) {
     EXPECT_TRUE(perimeterLots(narrow, LotSettings{}, 1, 1).empty());
 }
 
-std::string errorOf(const std::function<void()> &call) {
-    try {
-        call();
-    } catch (const std::runtime_error &e) {
-        return e.what();
-    }
-    return "";
-}
-
 TEST(Lots, LimitsStopWithAClearMessage) {
     const Block &block = testBlocks()[0].block;
     LotSettings tiny;
@@ -314,6 +207,42 @@ TEST(Lots, SettingsAreReadFromTheStack) {
     SettingsMap dense{{"HousingDensity", {"1.5", 1.5f, {"city.xml", 9, 1}}}};
     std::string message = errorOf([&] { lotSettingsFrom(SettingsStack({&dense})); });
     EXPECT_EQ(message.rfind("city.xml:9:1: HousingDensity", 0), 0u) << message;
+}
+
+TEST(Lots, SubdivisionIsReadFromTheSettings) {
+    EXPECT_EQ(lotSettingsFrom(SettingsStack()).algorithm, LotSubdivision::Perimeter);
+    const std::pair<const char *, LotSubdivision> names[] = {{"perimeter", LotSubdivision::Perimeter},
+                                                            {"recursive", LotSubdivision::Recursive},
+                                                            {"obb", LotSubdivision::Obb},
+                                                            {"skeleton", LotSubdivision::Skeleton}};
+    for (const auto &[name, algorithm] : names) {
+        SettingsMap block{{"LotSubdivision", {name, std::nullopt, {"city.xml", 2, 3}}}};
+        EXPECT_EQ(lotSettingsFrom(SettingsStack({&block})).algorithm, algorithm) << name;
+    }
+    SettingsMap unknown{{"LotSubdivision", {"voronoi", std::nullopt, {"city.xml", 6, 7}}}};
+    std::string message = errorOf([&] { lotSettingsFrom(SettingsStack({&unknown})); });
+    EXPECT_EQ(message.rfind("city.xml:6:7: LotSubdivision", 0), 0u) << message;
+    EXPECT_NE(message.find("'voronoi'"), std::string::npos) << message;
+}
+
+TEST(Lots, SubdivideBlockRunsTheChosenAlgorithm) {
+    const Block &block = testBlocks()[1].block;
+    LotSettings settings;
+    EXPECT_TRUE(sameLots(subdivideBlock(block, settings, 5, 3), perimeterLots(block, settings, 5, 3)));
+    settings.algorithm = LotSubdivision::Recursive;
+    EXPECT_TRUE(sameLots(subdivideBlock(block, settings, 5, 3), recursiveLots(block, settings, 5, 3)));
+    settings.algorithm = LotSubdivision::Obb;
+    EXPECT_TRUE(sameLots(subdivideBlock(block, settings, 5, 3), obbLots(block, settings, 5, 3)));
+    settings.algorithm = LotSubdivision::Skeleton;
+    EXPECT_TRUE(sameLots(subdivideBlock(block, settings, 5, 3), skeletonLots(block, settings, 5, 3)));
+}
+
+TEST(Lots, PerimeterFallsBackToRecursiveWhereItGivesNoLots) {
+    // 20 m wide: too narrow for a ring of 12 m deep houses round a courtyard.
+    Block narrow{{{0, 0}, {60, 0}, {60, 20}, {0, 20}}, {true, true, true, true}, 0};
+    std::vector<Footprint> lots = subdivideBlock(narrow, LotSettings{}, 1, 1);
+    EXPECT_FALSE(lots.empty());
+    EXPECT_TRUE(sameLots(lots, recursiveLots(narrow, LotSettings{}, 1, 1)));
 }
 
 }  // namespace
