@@ -173,6 +173,12 @@ float normalBetween(float lo, float hi, uint32_t key) {
     return std::clamp((lo + hi) / 2 + gaussian * (hi - lo) / 6, lo, hi);
 }
 
+bool checkedAndOnAStreet(const Block &block, const LotSettings &settings, const std::optional<FileLoc> &loc) {
+    checkBlock(block, loc);
+    checkLotSettings(settings, loc);
+    return std::find(block.streetEdges.begin(), block.streetEdges.end(), true) != block.streetEdges.end();
+}
+
 }  // namespace lots
 
 }  // namespace veduta

@@ -174,9 +174,7 @@ class PerimeterWalk {
 
 std::vector<Footprint> perimeterLots(const Block &block, const LotSettings &settings, uint32_t seed, uint32_t blockId,
                                      const std::optional<FileLoc> &loc) {
-    lots::checkBlock(block, loc);
-    checkLotSettings(settings, loc);
-    if (std::find(block.streetEdges.begin(), block.streetEdges.end(), true) == block.streetEdges.end()) return {};
+    if (!lots::checkedAndOnAStreet(block, settings, loc)) return {};
     std::optional<std::vector<Vec2f>> inset = insetRing(block.points, settings.minBuildingDepth);
     if (!inset) return {};
     std::vector<Footprint> lots = PerimeterWalk(block, std::move(*inset), settings, seed, blockId, loc).run();

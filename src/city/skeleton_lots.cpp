@@ -239,9 +239,7 @@ class StripCutter {
 
 std::vector<Footprint> skeletonLots(const Block &block, const LotSettings &settings, uint32_t seed, uint32_t blockId,
                                     const std::optional<FileLoc> &loc) {
-    lots::checkBlock(block, loc);
-    checkLotSettings(settings, loc);
-    if (std::find(block.streetEdges.begin(), block.streetEdges.end(), true) == block.streetEdges.end()) return {};
+    if (!lots::checkedAndOnAStreet(block, settings, loc)) return {};
     std::optional<Skeleton> skeleton = skeletonOf(block);
     if (!skeleton) lots::fail(loc, fmt::format("CGAL could not build the straight skeleton of block {}", blockId));
     std::vector<Strip> strips = SkeletonStrips(block, settings.minBuildingLength, std::move(*skeleton)).build();

@@ -1,4 +1,5 @@
 #include "city/lot_checks.h"
+#include "city/lot_test_blocks.h"
 
 #include <gtest/gtest.h>
 
@@ -117,6 +118,22 @@ std::string errorOf(const std::function<void()> &call) {
         return e.what();
     }
     return "";
+}
+
+void expectRandomBlocksGiveValidLots(const Subdivision &subdivide) {
+    size_t withLots = 0;
+    for (uint32_t index = 0; index < 300; ++index) {
+        Block block = randomBlock(index);
+        SCOPED_TRACE(testing::Message() << "block " << index);
+        try {
+            std::vector<Footprint> lots = subdivide(block, LotSettings{}, 3, index);
+            expectValidLots(block, lots);
+            withLots += !lots.empty();
+        } catch (const LotError &e) {
+            EXPECT_STRNE(e.what(), "");
+        }
+    }
+    EXPECT_GT(withLots, 200u);
 }
 
 }  // namespace veduta
