@@ -10,7 +10,6 @@ namespace veduta {
 namespace {
 
 float cross2(Vec2f u, Vec2f v) { return u.x * v.y - u.y * v.x; }
-Vec2f operator-(Vec2f a, Vec2f b) { return {a.x - b.x, a.y - b.y}; }
 
 float signedArea(std::span<const Vec2f> outline) {
     float area = 0;

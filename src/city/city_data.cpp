@@ -17,18 +17,6 @@ namespace {
 // lots drawn on a block's outline share its points, give or take the float rounding.
 constexpr float kOutsideTolerance = 0.01f;
 
-// Inside by the crossing rule, or within the tolerance of the outline.
-bool insideOrOn(Vec2f p, const std::vector<Vec2f> &polygon) {
-    bool inside = false;
-    double nearest = 1e30;
-    for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
-        const Vec2f &a = polygon[i], &b = polygon[j];
-        if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) inside = !inside;
-        nearest = std::min(nearest, distanceToSegment(p, a, b));
-    }
-    return inside || nearest <= kOutsideTolerance;
-}
-
 class CityDataReader {
   public:
     CityDataReader(const XmlDocument &doc, std::filesystem::path baseDirectory)
@@ -245,8 +233,12 @@ class CityDataReader {
                 Footprint footprint{std::move(outline.points), std::move(outline.streetEdges), outline.base};
                 if (auto warning = normaliseFootprint(footprint, c.loc())) city_.warnings.push_back(*warning);
                 for (Vec2f p : footprint.points)
-                    if (!insideOrOn(p, block.points))
+                    if (!covers(block.points, p, kOutsideTolerance))
                         c.fail(fmt::format("the lot's point ({} {}) lies outside its block", p.x, p.y));
+                if (std::optional<size_t> edge = edgeLeaving(footprint.points, block.points, kOutsideTolerance)) {
+                    Vec2f a = footprint.edgeStart(*edge), b = footprint.edgeEnd(*edge);
+                    c.fail(fmt::format("the lot's edge from ({} {}) to ({} {}) leaves its block", a.x, a.y, b.x, b.y));
+                }
                 lot.points = std::move(footprint.points);
                 lot.streetEdges = std::move(footprint.streetEdges);
                 lot.base = footprint.base;

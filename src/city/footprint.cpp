@@ -166,6 +166,51 @@ double distanceToSegment(Vec2f p, Vec2f a, Vec2f b) {
     return std::hypot(apx - t * abx, apy - t * aby);
 }
 
+bool covers(std::span<const Vec2f> polygon, Vec2f p, double tolerance) {
+    std::vector<Point> points = toCgal(polygon);
+    if (CGAL::bounded_side_2(points.begin(), points.end(), Point(p.x, p.y), Kernel()) != CGAL::ON_UNBOUNDED_SIDE)
+        return true;
+    for (size_t i = 0; i < polygon.size(); ++i)
+        if (distanceToSegment(p, polygon[i], polygon[(i + 1) % polygon.size()]) <= tolerance) return true;
+    return false;
+}
+
+namespace {
+
+bool crossClearly(Vec2f a, Vec2f b, Vec2f c, Vec2f d, double tolerance) {
+    if (!CGAL::do_intersect(Segment(Point(a.x, a.y), Point(b.x, b.y)), Segment(Point(c.x, c.y), Point(d.x, d.y))))
+        return false;
+    return distanceToSegment(a, c, d) > tolerance && distanceToSegment(b, c, d) > tolerance &&
+           distanceToSegment(c, a, b) > tolerance && distanceToSegment(d, a, b) > tolerance;
+}
+
+}  // namespace
+
+std::optional<size_t> edgeLeaving(std::span<const Vec2f> inner, std::span<const Vec2f> outer, double tolerance) {
+    for (size_t i = 0; i < inner.size(); ++i) {
+        Vec2f a = inner[i], b = inner[(i + 1) % inner.size()];
+        if (!covers(outer, {(a.x + b.x) / 2, (a.y + b.y) / 2}, tolerance)) return i;
+        for (size_t j = 0; j < outer.size(); ++j)
+            if (crossClearly(a, b, outer[j], outer[(j + 1) % outer.size()], tolerance)) return i;
+    }
+    return std::nullopt;
+}
+
+Vec2f areaCentroid(std::span<const Vec2f> polygon) {
+    // Relative to the first corner, so that polygons far from the origin keep their precision.
+    Vec2f origin = polygon[0];
+    double area = 0, x = 0, y = 0;
+    for (size_t i = 1; i + 1 < polygon.size(); ++i) {
+        double ax = polygon[i].x - origin.x, ay = polygon[i].y - origin.y;
+        double bx = polygon[i + 1].x - origin.x, by = polygon[i + 1].y - origin.y;
+        double twiceArea = ax * by - ay * bx;
+        area += twiceArea;
+        x += twiceArea * (ax + bx) / 3;
+        y += twiceArea * (ay + by) / 3;
+    }
+    return {float(origin.x + x / area), float(origin.y + y / area)};
+}
+
 std::vector<uint32_t> triangulatePolygon(std::span<const Vec2f> polygon) {
     std::vector<Vec2f> ring(polygon.begin(), polygon.end());
     return triangulatePolygonWithHoles(std::span(&ring, 1));

@@ -59,6 +59,15 @@ std::vector<Vec2f> offsetPolygon(std::span<const Vec2f> ring, float distance);
 // The distance from `p` to the segment from `a` to `b` (to `a` when the two coincide), worked
 // out in double precision.
 double distanceToSegment(Vec2f p, Vec2f a, Vec2f b);
+// Whether `p` lies inside `polygon`, on its outline, or within `tolerance` metres of it.
+bool covers(std::span<const Vec2f> polygon, Vec2f p, double tolerance);
+// The first edge of simple polygon `inner` that leaves `outer`, give or take `tolerance`: its
+// middle lies outside, or it crosses an edge of `outer` with both ends of either edge farther
+// than `tolerance` from the other. None when `inner` lies in `outer` (its corners are not
+// checked: see covers).
+std::optional<size_t> edgeLeaving(std::span<const Vec2f> inner, std::span<const Vec2f> outer, double tolerance);
+// The centre of area of a simple polygon.
+Vec2f areaCentroid(std::span<const Vec2f> polygon);
 // Whether simple polygons `a` and `b` neither touch nor lie one inside the other.
 bool areDisjoint(std::span<const Vec2f> a, std::span<const Vec2f> b);
 // Triangles covering a simple counter-clockwise polygon: n − 2 of them, three indices into the

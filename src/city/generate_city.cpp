@@ -2,7 +2,6 @@
 
 #include <filesystem>
 #include <memory>
-#include <unordered_map>
 
 #include <fmt/format.h>
 
@@ -46,13 +45,9 @@ std::vector<std::unique_ptr<RuleFileBuilder>> readRuleFiles(const FileLoc &fileL
 
 StreetNetwork streetNetworkOf(const CityData &data) {
     StreetNetwork network;
-    std::unordered_map<uint32_t, uint32_t> index;
-    for (const CityPoint &p : data.points) {
-        index[p.id] = uint32_t(network.nodes.size());
-        network.nodes.push_back({float(p.e), float(p.n)});
-    }
-    for (const CityStreet &s : data.streets)
-        network.streets.push_back({index.at(s.start), index.at(s.end), s.width.value_or(data.streetWidth)});
+    for (const CityPoint &p : data.points) network.nodes.push_back({float(p.e), float(p.n)});
+    // A street's start and end are indices into the points already (city_data.h).
+    for (const CityStreet &s : data.streets) network.streets.push_back({s.start, s.end, s.width.value_or(data.streetWidth)});
     if (!data.points.empty()) network.height = float(data.points.front().u);
     return network;
 }
@@ -67,7 +62,7 @@ std::vector<Footprint> lotsOf(const CityBlock &block, const StreetNetwork &stree
     LotSettings settings = lotSettingsFrom(blockSettings);
     for (const BuildableArea &area : buildableAreas(block.points, streets)) {
         Block piece{area.outline, area.streetEdges, block.base};
-        for (Footprint &lot : subdivideBlock(piece, settings, seed, blockIndex)) lots.push_back(std::move(lot));
+        for (Footprint &lot : subdivideBlock(piece, settings, seed, blockIndex, block.loc)) lots.push_back(std::move(lot));
     }
     return lots;
 }

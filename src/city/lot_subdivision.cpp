@@ -129,8 +129,10 @@ std::vector<Footprint> subdivideBlock(const Block &block, const LotSettings &set
     case LotSubdivision::Skeleton: return skeletonLots(block, settings, seed, blockId, loc);
     case LotSubdivision::Perimeter: break;
     }
-    std::vector<Footprint> lots = perimeterLots(block, settings, seed, blockId, loc);
-    return lots.empty() ? recursiveLots(block, settings, seed, blockId, loc) : lots;
+    // The fallback is for blocks without room for a ring, not for rings the filters emptied.
+    std::vector<Footprint> pieces = lots::perimeterPieces(block, settings, seed, blockId, loc);
+    if (pieces.empty()) return recursiveLots(block, settings, seed, blockId, loc);
+    return filterLots(std::move(pieces), settings, seed, blockId);
 }
 
 std::vector<Footprint> filterLots(std::vector<Footprint> lots, const LotSettings &settings, uint32_t seed,

@@ -113,6 +113,9 @@ namespace lots {
 [[noreturn]] void fail(const std::optional<FileLoc> &loc, const std::string &message);
 // Checks the block's shape and flags (LotError or InputError).
 void checkBlock(const Block &block, const std::optional<FileLoc> &loc);
+// perimeterLots before the filters.
+std::vector<Footprint> perimeterPieces(const Block &block, const LotSettings &settings, uint32_t seed, uint32_t blockId,
+                                       const std::optional<FileLoc> &loc);
 // Checks the block and the settings, and says whether the block has a street edge, without
 // which the algorithms that build along streets cut no lots.
 bool checkedAndOnAStreet(const Block &block, const LotSettings &settings, const std::optional<FileLoc> &loc);

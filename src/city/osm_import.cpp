@@ -8,8 +8,6 @@
 #include <string_view>
 #include <unordered_map>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_2_algorithms.h>
 #include <GeographicLib/LocalCartesian.hpp>
 #include <cpl_error.h>
 #include <cpl_vsi.h>
@@ -285,31 +283,6 @@ double distanceToLine(Vec2f p, const StreetLine &street) {
     return nearest;
 }
 
-// Inside `polygon`, on its outline or within the tolerance of it.
-bool covers(std::span<const Vec2f> polygon, Vec2f p) {
-    using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-    std::vector<Kernel::Point_2> points;
-    for (Vec2f q : polygon) points.emplace_back(q.x, q.y);
-    if (CGAL::bounded_side_2(points.begin(), points.end(), Kernel::Point_2(p.x, p.y), Kernel()) != CGAL::ON_UNBOUNDED_SIDE)
-        return true;
-    for (size_t i = 0; i < polygon.size(); ++i)
-        if (distanceToSegment(p, polygon[i], polygon[(i + 1) % polygon.size()]) <= kOutsideTolerance) return true;
-    return false;
-}
-
-// The centre of area of a simple polygon.
-Vec2f centroid(std::span<const Vec2f> polygon) {
-    double area = 0, x = 0, y = 0;
-    for (size_t i = 0; i < polygon.size(); ++i) {
-        Vec2f a = polygon[i], b = polygon[(i + 1) % polygon.size()];
-        double cross = double(a.x) * b.y - double(b.x) * a.y;
-        area += cross;
-        x += (double(a.x) + b.x) * cross;
-        y += (double(a.y) + b.y) * cross;
-    }
-    return {float(x / (3 * area)), float(y / (3 * area))};
-}
-
 class OsmImporter {
   public:
     OsmImporter(GeographicPoint origin, std::vector<std::string> warnings)
@@ -448,12 +421,13 @@ class OsmImporter {
 
     // The residential block whose outline holds the lot's centroid, when it covers the whole lot.
     CityBlock *blockHolding(const CityLot &lot, size_t residentialBlocks) {
-        Vec2f centre = centroid(lot.points);
+        Vec2f centre = areaCentroid(lot.points);
         for (size_t b = 0; b < residentialBlocks; ++b) {
             CityBlock &block = city_.blocks[b];
-            if (!covers(block.points, centre)) continue;
-            if (std::all_of(lot.points.begin(), lot.points.end(), [&](Vec2f p) { return covers(block.points, p); }))
-                return &block;
+            if (!covers(block.points, centre, kOutsideTolerance)) continue;
+            bool cornersIn = std::all_of(lot.points.begin(), lot.points.end(),
+                                         [&](Vec2f p) { return covers(block.points, p, kOutsideTolerance); });
+            if (cornersIn && !edgeLeaving(lot.points, block.points, kOutsideTolerance)) return &block;
             warn(lot.loc, fmt::format("the building reaches outside the residential area of {}; it stands in a "
                                       "block of its own",
                                       block.loc.toString()));

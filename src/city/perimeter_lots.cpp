@@ -13,11 +13,6 @@ namespace veduta {
 
 namespace {
 
-Vec2f operator+(Vec2f a, Vec2f b) { return {a.x + b.x, a.y + b.y}; }
-Vec2f operator-(Vec2f a, Vec2f b) { return {a.x - b.x, a.y - b.y}; }
-Vec2f operator*(Vec2f a, float s) { return {a.x * s, a.y * s}; }
-float dot(Vec2f a, Vec2f b) { return a.x * b.x + a.y * b.y; }
-float cross(Vec2f a, Vec2f b) { return a.x * b.y - a.y * b.x; }
 Vec2f leftNormal(Vec2f d) { return {-d.y, d.x}; }
 
 Vec2f edgeDirection(const std::vector<Vec2f> &ring, size_t edge) {
@@ -30,16 +25,8 @@ Vec2f edgeDirection(const std::vector<Vec2f> &ring, size_t edge) {
 // every edge running the way its block edge runs (an edge shrunk past zero turns round): the
 // thesis' precondition 4, the block cannot be inset.
 std::optional<std::vector<Vec2f>> insetRing(const std::vector<Vec2f> &block, float depth) {
+    std::vector<Vec2f> inset = offsetPolygon(block, -depth);
     size_t n = block.size();
-    std::vector<Vec2f> inset(n);
-    for (size_t i = 0; i < n; ++i) {
-        Vec2f d0 = edgeDirection(block, (i + n - 1) % n), d1 = edgeDirection(block, i);
-        Vec2f n0 = leftNormal(d0), n1 = leftNormal(d1);
-        float sine = cross(d0, d1);
-        // Straight on (a point between collinear edges): the mitre is the common normal.
-        float along = std::abs(sine) < 1e-6f ? 0 : depth * cross(n1 - n0, d1) / sine;
-        inset[i] = block[i] + n0 * depth + d0 * along;
-    }
     for (size_t i = 0; i < n; ++i) {
         if (!(dot(edgeDirection(inset, i), edgeDirection(block, i)) > 0)) return std::nullopt;
     }
@@ -113,6 +100,11 @@ class PerimeterWalk {
         float insetFrom = dot(inset_[edge] - start, direction), insetTo = dot(inset_[next] - start, direction);
         for (float from = 0, lotStart = 0;;) {
             float cut = from + frontage();
+            if (!(cut > from)) {
+                lots::fail(loc_, fmt::format("block {}: a frontage of {} m does not move the walk along an edge {} m "
+                                             "long (MinBuildingLength is too small)",
+                                             blockId_, cut - from, length));
+            }
             // Steps 1–2 → 8: the rest is too short for a lot; it joins the lot at the corner.
             if (length - cut <= settings_.minBuildingLength) break;
             from = cut;
@@ -172,13 +164,17 @@ class PerimeterWalk {
 
 }  // namespace
 
-std::vector<Footprint> perimeterLots(const Block &block, const LotSettings &settings, uint32_t seed, uint32_t blockId,
-                                     const std::optional<FileLoc> &loc) {
-    if (!lots::checkedAndOnAStreet(block, settings, loc)) return {};
+std::vector<Footprint> lots::perimeterPieces(const Block &block, const LotSettings &settings, uint32_t seed,
+                                             uint32_t blockId, const std::optional<FileLoc> &loc) {
+    if (!checkedAndOnAStreet(block, settings, loc)) return {};
     std::optional<std::vector<Vec2f>> inset = insetRing(block.points, settings.minBuildingDepth);
     if (!inset) return {};
-    std::vector<Footprint> lots = PerimeterWalk(block, std::move(*inset), settings, seed, blockId, loc).run();
-    return filterLots(std::move(lots), settings, seed, blockId);
+    return PerimeterWalk(block, std::move(*inset), settings, seed, blockId, loc).run();
+}
+
+std::vector<Footprint> perimeterLots(const Block &block, const LotSettings &settings, uint32_t seed, uint32_t blockId,
+                                     const std::optional<FileLoc> &loc) {
+    return filterLots(lots::perimeterPieces(block, settings, seed, blockId, loc), settings, seed, blockId);
 }
 
 }  // namespace veduta

@@ -231,20 +231,6 @@ Attempt gabledRoof(const RoofFootprint &footprint, float eavesAboveBase, float s
     return built;
 }
 
-Vec2f areaCentroid(const Ring &ring) {
-    double area = 0, x = 0, y = 0;
-    Vec2f origin = ring[0];
-    for (size_t i = 1; i + 1 < ring.size(); ++i) {
-        double ax = ring[i].x - origin.x, ay = ring[i].y - origin.y;
-        double bx = ring[i + 1].x - origin.x, by = ring[i + 1].y - origin.y;
-        double twiceArea = ax * by - ay * bx;
-        area += twiceArea;
-        x += twiceArea * (ax + bx) / 3;
-        y += twiceArea * (ay + by) / 3;
-    }
-    return {float(origin.x + x / area), float(origin.y + y / area)};
-}
-
 Attempt pyramidRoof(const RoofFootprint &footprint, float eavesAboveBase, float slope) {
     const Ring &outer = footprint.outer;
     std::vector<RoofKernel::Point_2> points;

@@ -19,6 +19,11 @@ struct Vec2f {
     float x = 0, y = 0;
 };
 
+inline Vec2f operator+(Vec2f a, Vec2f b) { return {a.x + b.x, a.y + b.y}; }
+inline Vec2f operator-(Vec2f a, Vec2f b) { return {a.x - b.x, a.y - b.y}; }
+inline Vec2f operator*(Vec2f a, float s) { return {a.x * s, a.y * s}; }
+inline float dot(Vec2f a, Vec2f b) { return a.x * b.x + a.y * b.y; }
+
 struct Vec3f {
     float x = 0, y = 0, z = 0;
 

@@ -108,6 +108,15 @@ TEST(CityData, ErrorsAreAtTheirPlace) {
                      std::string(kSquareBlock) +
                          "<Lots><Lot><Points><Point id=\"0\"/><Point id=\"4\"/><Point id=\"5\"/></Points></Lot></Lots>\n"),
                 "city.xml:9:12: the lot's point (50 0) lies outside its block");
+    // A concave block (a U open to the north): a lot whose corners lie in it but whose edge
+    // crosses the notch.
+    expectError(city("<Point id=\"0\" e=\"0\" n=\"0\"/><Point id=\"1\" e=\"30\" n=\"0\"/><Point id=\"2\" e=\"30\" n=\"30\"/>"
+                     "<Point id=\"3\" e=\"20\" n=\"30\"/><Point id=\"4\" e=\"20\" n=\"10\"/><Point id=\"5\" e=\"10\" n=\"10\"/>"
+                     "<Point id=\"6\" e=\"10\" n=\"30\"/><Point id=\"7\" e=\"0\" n=\"30\"/>\n",
+                     "<Points><Point id=\"0\"/><Point id=\"1\"/><Point id=\"2\"/><Point id=\"3\"/><Point id=\"4\"/>"
+                     "<Point id=\"5\"/><Point id=\"6\"/><Point id=\"7\"/></Points>\n"
+                     "<Lots><Lot><Points><Point id=\"7\"/><Point id=\"0\"/><Point id=\"1\"/><Point id=\"2\"/></Points></Lot></Lots>\n"),
+                "city.xml:7:12: the lot's edge from (30 30) to (0 30) leaves its block");
     expectError(city(kSquare, std::string(kSquareBlock) + "<Lots><Lot><Points><Point id=\"0\"/><Point id=\"1\"/>"
                                                           "<Point id=\"0\"/></Points></Lot></Lots>\n"),
                 "city.xml:8:12: footprint point 3 repeats point 1");  // a lot of no area

@@ -3,6 +3,7 @@
 
 #include <set>
 
+#include "city/generate_city.h"
 #include "scene/build_scene.h"
 
 namespace veduta {
@@ -46,6 +47,21 @@ TEST(GenerateCity, AnOpenStreetMapFileIsACityWithTheRulesOfItsElement) {
     } catch (const InputError &e) {
         EXPECT_NE(std::string(e.what()).find("test.xml:1:32: the city names no <Rulefile>"), std::string::npos) << e.what();
     }
+}
+
+TEST(GenerateCity, StreetsJoinThePointsTheyName) {
+    // Ids out of file order and with gaps: streets must not take them for positions.
+    CityData data = parseCityData("<CityData><Points><Point id=\"30\" e=\"0\" n=\"0\"/><Point id=\"7\" e=\"50\" n=\"0\"/>"
+                                  "<Point id=\"12\" e=\"50\" n=\"40\"/></Points><StreetNetwork><Streets>"
+                                  "<Street id=\"0\" startPoint=\"7\" endPoint=\"12\"/></Streets></StreetNetwork></CityData>",
+                                  "ids.xml", ".");
+    StreetNetwork network = streetNetworkOf(data);
+    ASSERT_EQ(network.streets.size(), 1u);
+    Vec2f from = network.nodes[network.streets[0].from], to = network.nodes[network.streets[0].to];
+    EXPECT_EQ(from.x, 50);
+    EXPECT_EQ(from.y, 0);
+    EXPECT_EQ(to.x, 50);
+    EXPECT_EQ(to.y, 40);
 }
 
 TEST(GenerateCity, ErrorsAreAtTheirPlace) {
