@@ -75,9 +75,12 @@ void BuildingGenerator::addRoof(const BuildingSpec &building, const BuildingCont
     const Footprint &footprint = building.footprint;
     RoofOptions options = roofOptionsFor(footprint, building.settings, context.heights, seed_, building.id);
     RoofResult roof = buildRoof({footprint.points, {}, footprint.base}, context.heights.building, options);
-    if (roof.fallback)
+    if (roof.fallback && roof.built != options.type) {
         warnings.push_back(fmt::format("building {}: a {} roof instead of {}: {}", building.id, roofTypeName(roof.built),
                                        roofTypeName(options.type), *roof.fallback));
+    } else if (roof.fallback) {
+        warnings.push_back(fmt::format("building {}: {} roof: {}", building.id, roofTypeName(roof.built), *roof.fallback));
+    }
     for (MaterialId &m : roof.mesh.triangleMaterials)
         m = m == RoofGableWall ? context.materials[MaterialCategory::Wall] : context.materials[MaterialCategory::Roof];
     baked.append(roof.mesh, Transform{});

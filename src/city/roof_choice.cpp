@@ -14,7 +14,15 @@ namespace veduta {
 
 namespace {
 
+constexpr float kSteepestDerivedPitch = 89;  // degrees
+
 constexpr uint32_t kRoofChoiceKey = 0x524f4f46u;  // "ROOF": the draw among a RoofType list
+
+std::string roofTypeNames() {
+    std::string names;
+    for (RoofType type : kRoofTypes) names += fmt::format("{}{}", names.empty() ? "" : ", ", roofTypeName(type));
+    return names;
+}
 
 // RoofType: one name, or several separated by spaces or commas, of which each building takes
 // one at random. Unset: seed 000's choice.
@@ -28,7 +36,7 @@ RoofType chosenType(const Footprint &footprint, const SettingsStack &settings, u
     for (std::string word; words >> word;) {
         std::optional<RoofType> type = roofTypeFromName(word);
         if (!type)
-            throw InputError(value->loc, fmt::format("RoofType '{}' is none of flat, hip, pyramid, shed, gable, halfhip, mansard", word));
+            throw InputError(value->loc, fmt::format("RoofType '{}' is none of {}", word, roofTypeNames()));
         types.push_back(*type);
     }
     if (types.empty()) throw InputError(value->loc, "RoofType names no roof type");
@@ -62,14 +70,16 @@ std::optional<float> pitchSetting(const SettingsStack &settings) {
 RoofOptions roofOptionsFor(const Footprint &footprint, const SettingsStack &settings, const BuildingHeights &heights,
                            uint32_t seed, uint32_t buildingId) {
     RoofOptions options;
-    options.type = heights.roof > 0 ? chosenType(footprint, settings, seed, buildingId) : RoofType::Flat;
+    RoofType chosen = chosenType(footprint, settings, seed, buildingId);  // checked on flat buildings too
+    options.type = heights.roof > 0 ? chosen : RoofType::Flat;
     options.overhang = lengthSetting(settings, "RoofOverhang", 0);
     options.parapetHeight = lengthSetting(settings, "ParapetHeight", kDefaultParapetHeight);
     if (std::optional<float> pitch = pitchSetting(settings)) {
         options.pitchDegrees = *pitch;
     } else if (heights.roof > 0) {
         float reach = options.type == RoofType::Mansard ? kMansardInset : halfDepth(footprint);
-        options.pitchDegrees = degrees(std::atan2(heights.roof, reach));
+        // A sliver of a footprint would round to 90°, which no sloped roof can take.
+        options.pitchDegrees = std::min(degrees(std::atan2(heights.roof, reach)), kSteepestDerivedPitch);
     }
     return options;
 }

@@ -39,13 +39,6 @@ bool liesIn(const SkeletonRoof &roof, const RoofFace &face) {
     });
 }
 
-// Seen from above, as the mesh will have it in floats.
-bool isSimpleFromAbove(const SkeletonRoof &roof, const RoofFace &face) {
-    std::vector<Vec2f> outline;
-    for (uint32_t c : face.corners) outline.push_back({float(roof.corners[c].x()), float(roof.corners[c].y())});
-    return isSimplePolygon(outline);
-}
-
 bool isCornerOfAnotherFace(const SkeletonRoof &roof, uint32_t corner, std::initializer_list<size_t> except) {
     for (size_t f = 0; f < roof.faces.size(); ++f) {
         const std::vector<uint32_t> &corners = roof.faces[f].corners;

@@ -153,8 +153,7 @@ Mesh flatRoof(const RoofFootprint &footprint, float eavesAboveBase, float parape
             Vec3f along = direction(a, b);
             addFace(m, {lift(a, eavesZ), lift(b, eavesZ), lift(b, topZ), lift(a, topZ)},
                     wallUvPlane(a, along, before, footprint.base), RoofGableWall);
-            addProjectedFace(m, {{lift(a, topZ), lift(b, topZ), lift(innerB, topZ), lift(innerA, topZ)}}, kUp, groundUv,
-                             RoofGableWall);
+            addFace(m, {lift(a, topZ), lift(b, topZ), lift(innerB, topZ), lift(innerA, topZ)}, groundUv, RoofGableWall);
             addFace(m, {lift(innerB, eavesZ), lift(innerA, eavesZ), lift(innerA, topZ), lift(innerB, topZ)},
                     wallUvPlane(innerB, -along, 0, footprint.base), RoofGableWall);
             before += length(lift(b, 0) - lift(a, 0));
@@ -301,6 +300,8 @@ Attempt mansardOverFootprint(const RoofFootprint &footprint, float eavesAboveBas
     Footprint plain{footprint.outer, std::vector<bool>(footprint.outer.size(), false), footprint.base};
     MansardRoof roof = mansardRoof(plain, eavesAboveBase, kMansardInset * slope, kMansardInset);
     if (roof.inset == 0) return std::string("the footprint is too narrow for a mansard's slopes");
+    // A halved inset must keep the pitch: buildRoof lowered the eaves for it under an overhang.
+    if (roof.inset < kMansardInset) roof = mansardRoof(plain, eavesAboveBase, roof.inset * slope, roof.inset);
     return std::move(roof.mesh);
 }
 

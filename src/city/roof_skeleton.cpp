@@ -85,6 +85,12 @@ std::optional<SkeletonRoof> skeletonRoof(const RoofFootprint &footprint, float e
     return roof;
 }
 
+bool isSimpleFromAbove(const SkeletonRoof &roof, const RoofFace &face) {
+    std::vector<Vec2f> outline;
+    for (uint32_t c : face.corners) outline.push_back({float(roof.corners[c].x()), float(roof.corners[c].y())});
+    return isSimplePolygon(outline);
+}
+
 std::variant<Mesh, std::string> roofMesh(const SkeletonRoof &roof) {
     Mesh m;
     for (const RoofFace &face : roof.faces) {
@@ -95,6 +101,11 @@ std::variant<Mesh, std::string> roofMesh(const SkeletonRoof &roof) {
             Vec3f along = normalize(lift(edge.end, 0) - lift(edge.start, 0));
             addFace(m, corners, wallUvPlane(edge.start, along, edge.perimeterBefore, roof.base), RoofGableWall);
             continue;
+        }
+        // CGAL's triangulation throws on outlines that cross themselves once rounded to floats.
+        if (!isSimpleFromAbove(roof, face)) {
+            return fmt::format("the roof face of edge ({} {}) – ({} {}) crosses itself seen from above", edge.start.x,
+                               edge.start.y, edge.end.x, edge.end.y);
         }
         Vec3f normal = normalize(toVec3f(CGAL::ORIGIN + face.plane.orthogonal_vector()));
         size_t trianglesBefore = m.triangleCount();

@@ -50,6 +50,9 @@ std::optional<SkeletonRoof> skeletonRoof(const RoofFootprint &footprint, float e
 // The plane that rises from `edge` at the roof's slope, starting `raise` metres above the eaves.
 RoofKernel::Plane_3 slopePlane(const SkeletonRoof &roof, size_t edge, double raise);
 
+// Whether the face's outline, seen from above in floats as the mesh will have it, is simple.
+bool isSimpleFromAbove(const SkeletonRoof &roof, const RoofFace &face);
+
 // The roof's faces as a mesh (roofs.h's conventions), or why a face does not triangulate.
 std::variant<Mesh, std::string> roofMesh(const SkeletonRoof &roof);
 
