@@ -69,15 +69,18 @@ std::vector<Footprint> lotsOf(const CityBlock &block, const StreetNetwork &stree
 
 namespace {
 
-// The street surfaces, in the scene's materials "street/asphalt", "street/pavement" and
-// "street/kerb" when it has them.
+// The street surfaces, in the scene's materials "street/asphalt", "street/pavement",
+// "street/kerb" and "street/cobblestone" (the junctions) when it has them.
 void addStreets(const StreetNetwork &streets, uint32_t objectId, RenderSceneBuilder &builder) {
     if (streets.streets.empty()) return;
     Mesh mesh = streetGeometry(streets);
-    const std::pair<const char *, Vec3f> kinds[] = {
-        {"street/asphalt", {0.16f, 0.16f, 0.17f}}, {"street/pavement", {0.45f, 0.43f, 0.4f}}, {"street/kerb", {0.55f, 0.54f, 0.52f}}};
-    MaterialId materials[3];
-    for (int k = 0; k < 3; ++k) {
+    // In the order of StreetSurface.
+    const std::pair<const char *, Vec3f> kinds[] = {{"street/asphalt", {0.16f, 0.16f, 0.17f}},
+                                                    {"street/pavement", {0.45f, 0.43f, 0.4f}},
+                                                    {"street/kerb", {0.55f, 0.54f, 0.52f}},
+                                                    {"street/cobblestone", {0.27f, 0.26f, 0.25f}}};
+    MaterialId materials[std::size(kinds)];
+    for (size_t k = 0; k < std::size(kinds); ++k) {
         materials[k] = builder.findMaterial(kinds[k].first);
         if (materials[k] == kNoMaterial) materials[k] = builder.addMaterial(Material::lambertian(kinds[k].first, kinds[k].second));
     }

@@ -37,9 +37,9 @@ Polygon ribbon(Vec2f a, Vec2f b, float halfWidth) {
 Polygon joint(Vec2f centre, float radius) {
     Polygon p;
     // The polygon circumscribes the circle, so that it covers the ribbons' corners.
-    float r = radius / std::cos(float(M_PI) / kNodeSides);
+    float r = radius / std::cos(kPi / kNodeSides);
     for (int k = 0; k < kNodeSides; ++k) {
-        float a = 2 * float(M_PI) * float(k) / kNodeSides;
+        float a = 2 * kPi * float(k) / kNodeSides;
         p.push_back(Point(centre.x + r * std::cos(a), centre.y + r * std::sin(a)));
     }
     return p;
@@ -175,13 +175,36 @@ std::vector<BuildableArea> buildableAreas(const std::vector<Vec2f> &block, const
     return areas;
 }
 
+// The crossings: where three or more streets meet, the carriageway within kJunctionReach times
+// the widest street's half width of the node, which takes in the square where the streets
+// overlap and the corners where they turn.
+PolygonSet junctionArea(const StreetNetwork &network, const PolygonSet &carriageway) {
+    std::vector<int> streetsAt(network.nodes.size(), 0);
+    std::vector<float> widestHalf(network.nodes.size(), 0.0f);
+    for (const StreetNetwork::Street &s : network.streets) {
+        if (network.nodes[s.from].x == network.nodes[s.to].x && network.nodes[s.from].y == network.nodes[s.to].y) continue;
+        for (uint32_t node : {s.from, s.to}) {
+            ++streetsAt[node];
+            widestHalf[node] = std::max(widestHalf[node], s.width / 2);
+        }
+    }
+    PolygonSet junctions;
+    for (size_t n = 0; n < network.nodes.size(); ++n)
+        if (streetsAt[n] >= 3) junctions.join(joint(network.nodes[n], kJunctionReach * widestHalf[n]));
+    junctions.intersection(carriageway);
+    return junctions;
+}
+
 Mesh streetGeometry(const StreetNetwork &network, const StreetStyle &style) {
     Mesh mesh;
     PolygonSet carriageway = streetArea(network, 0);
     PolygonSet sidewalks = streetArea(network, style.sidewalkWidth);
     sidewalks.difference(carriageway);
     float road = network.height + style.lift, pavement = road + style.kerbHeight;
-    addRegion(mesh, carriageway, road, StreetCarriageway);
+    PolygonSet junctions = junctionArea(network, carriageway), between = carriageway;
+    between.difference(junctions);
+    addRegion(mesh, between, road, StreetCarriageway);
+    addRegion(mesh, junctions, road, StreetJunction);
     addRegion(mesh, sidewalks, pavement, StreetSidewalk);
     addKerbs(mesh, carriageway, road, pavement);
     return mesh;

@@ -28,10 +28,14 @@ struct StreetStyle {
 };
 
 // Surfaces the street meshes' triangleMaterials hold.
-enum StreetSurface : MaterialId { StreetCarriageway = 0, StreetSidewalk = 1, StreetKerb = 2 };
+enum StreetSurface : MaterialId { StreetCarriageway = 0, StreetSidewalk = 1, StreetKerb = 2, StreetJunction = 3 };
 
-// One mesh: the carriageway at height + lift, the sidewalks at height + lift + kerbHeight, the
-// kerbs between; normals up (kerbs: towards the road), texture coordinates in metres (x, y).
+// A junction (three or more streets at a node) reaches this many of its widest street's half
+// widths from the node: √2 takes in the corners of the square where two streets cross.
+inline constexpr float kJunctionReach = 1.4142f;
+
+// One mesh: the carriageway at height + lift, its junctions apart (StreetJunction, the same
+// height), the sidewalks at height + lift + kerbHeight, the kerbs between; normals up (kerbs: towards the road), texture coordinates in metres (x, y).
 // Streets of zero length are skipped.
 Mesh streetGeometry(const StreetNetwork &network, const StreetStyle &style = {});
 

@@ -20,15 +20,18 @@ float area(const Mesh &m, StreetSurface surface) {
     return sum;
 }
 
+// The carriageway with its junctions.
+float road(const Mesh &m) { return area(m, StreetCarriageway) + area(m, StreetJunction); }
+
 TEST(StreetGeometry, OneStreetIsARibbonWithRoundEndsAndSidewalks) {
     StreetNetwork network{{{0, 0}, {100, 0}}, {{0, 1, 8}}, 0};
     Mesh m = streetGeometry(network);
-    float joint = float(M_PI) * 16 / std::cos(float(M_PI) / 16);  // the 16-gons round about r = 4
-    EXPECT_GT(area(m, StreetCarriageway), 800 + 0.95f * float(M_PI) * 16);
+    float joint = kPi * 16 / std::cos(kPi / 16);  // the 16-gons round about r = 4
+    EXPECT_GT(area(m, StreetCarriageway), 800 + 0.95f * kPi * 16);
     EXPECT_LT(area(m, StreetCarriageway), 800 + joint * 1.01f);
     // 2.5 m on either side along the street, and round the ends.
     EXPECT_GT(area(m, StreetSidewalk), 2 * 2.5f * 100);
-    EXPECT_LT(area(m, StreetSidewalk), 2 * 2.5f * 100 + float(M_PI) * 6.5f * 6.5f * 1.03f);
+    EXPECT_LT(area(m, StreetSidewalk), 2 * 2.5f * 100 + kPi * 6.5f * 6.5f * 1.03f);
     for (size_t t = 0; t < m.triangleCount(); ++t) {
         const Vec3f &a = m.positions[m.indices[3 * t]], &b = m.positions[m.indices[3 * t + 1]],
                     &c = m.positions[m.indices[3 * t + 2]];
@@ -40,7 +43,7 @@ TEST(StreetGeometry, OneStreetIsARibbonWithRoundEndsAndSidewalks) {
             EXPECT_GT(dot(n, m.normals[m.indices[3 * t]]), 0) << "winding agrees with the normal";
         } else {
             EXPECT_GT(n.z, 0) << "faces up";
-            EXPECT_FLOAT_EQ(a.z, m.triangleMaterials[t] == StreetCarriageway ? 0.01f : 0.13f);
+            EXPECT_FLOAT_EQ(a.z, m.triangleMaterials[t] == StreetSidewalk ? 0.13f : 0.01f);
         }
     }
 }
@@ -50,17 +53,35 @@ TEST(StreetGeometry, StreetsMeetInOneSurfaceWithoutOverlaps) {
     StreetNetwork network{{{0, 0}, {50, 0}, {-50, 0}, {0, 50}, {0, -50}}, {{0, 1, 8}, {0, 2, 8}, {0, 3, 8}, {0, 4, 8}}, 0};
     Mesh m = streetGeometry(network);
     // Four 50 m arms of 8 m overlap in the middle: the union counts the middle once.
-    float carriageway = area(m, StreetCarriageway);
-    EXPECT_LT(carriageway, 4 * 50 * 8 + 4 * float(M_PI) * 16);
-    EXPECT_GT(carriageway, 4 * 50 * 8 - 4 * 4 * 8 + 2 * float(M_PI) * 16 * 0.9f);
+    float carriageway = road(m);
+    EXPECT_LT(carriageway, 4 * 50 * 8 + 4 * kPi * 16);
+    EXPECT_GT(carriageway, 4 * 50 * 8 - 4 * 4 * 8 + 2 * kPi * 16 * 0.9f);
     // The sidewalks are the widened union minus the carriageway: no surface is counted twice.
     StreetStyle style;
     StreetNetwork wide = network;
     for (auto &s : wide.streets) s.width += 2 * style.sidewalkWidth;
     StreetStyle none;
     none.sidewalkWidth = 0.001f;
-    float outer = area(streetGeometry(wide, none), StreetCarriageway);
+    float outer = road(streetGeometry(wide, none));
     EXPECT_NEAR(carriageway + area(m, StreetSidewalk), outer, outer * 1e-3f);
+}
+
+TEST(StreetGeometry, JunctionsAreWhereThreeOrMoreStreetsMeet) {
+    // A crossroads of 8 m streets: every point within 4√2 m of the node lies on one of them, so
+    // the junction holds that circle, within the 16-gon round it (circumscribed, as the joints
+    // are; its corners at 45° just miss the streets).
+    StreetNetwork cross{{{0, 0}, {50, 0}, {-50, 0}, {0, 50}, {0, -50}}, {{0, 1, 8}, {0, 2, 8}, {0, 3, 8}, {0, 4, 8}}, 0};
+    Mesh m = streetGeometry(cross);
+    float reach = kJunctionReach * 4;
+    EXPECT_GT(area(m, StreetJunction), kPi * reach * reach);
+    EXPECT_LE(area(m, StreetJunction), 16 * reach * reach * std::tan(kPi / 16));
+    for (size_t t = 0; t < m.triangleCount(); ++t) {
+        if (m.triangleMaterials[t] != StreetJunction) continue;
+        for (int k = 0; k < 3; ++k) EXPECT_LE(length(m.positions[m.indices[3 * t + k]]), reach * 1.03f);
+    }
+    // A bend of two streets is no junction.
+    StreetNetwork bend{{{0, 0}, {50, 0}, {0, 50}}, {{0, 1, 8}, {0, 2, 8}}, 0};
+    EXPECT_EQ(area(streetGeometry(bend), StreetJunction), 0);
 }
 
 TEST(StreetGeometry, AStreetOfNoLengthIsSkipped) {
