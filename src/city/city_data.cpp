@@ -132,8 +132,14 @@ class CityDataReader {
                     CityStreet street;
                     street.loc = s.loc();
                     street.id = requiredId(s, "id");
+                    auto [given, fresh] = streetIndex_.emplace(street.id, uint32_t(city_.streets.size()));
+                    if (!fresh)
+                        s.failAt("id", fmt::format("street id {} is already used at {}", street.id,
+                                                   city_.streets[given->second].loc.toString()));
                     street.start = pointRef(s, "startPoint");
                     street.end = pointRef(s, "endPoint");
+                    if (street.start == street.end)
+                        s.fail(fmt::format("the street starts and ends at point {}", city_.points[street.start].id));
                     if (s.has("width")) street.width = s.number("width", 0, 0.1f, 1000);
                     s.checkLeaf();
                     city_.streets.push_back(street);
@@ -268,6 +274,7 @@ class CityDataReader {
     std::filesystem::path baseDirectory_;
     CityData city_;
     std::unordered_map<uint32_t, uint32_t> pointIndex_;
+    std::unordered_map<uint32_t, uint32_t> streetIndex_;
 };
 
 }  // namespace

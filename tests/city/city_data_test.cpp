@@ -120,6 +120,14 @@ TEST(CityData, ErrorsAreAtTheirPlace) {
     expectError(city(kSquare, std::string(kSquareBlock) + "<Lots><Lot><Points><Point id=\"0\"/><Point id=\"1\"/>"
                                                           "<Point id=\"0\"/></Points></Lot></Lots>\n"),
                 "city.xml:8:12: footprint point 3 repeats point 1");  // a lot of no area
+    auto withStreets = [](const std::string &streets) {
+        return std::string("<CityData>\n<Points>\n") + kSquare + "</Points>\n<StreetNetwork><Streets>\n" + streets +
+               "</Streets></StreetNetwork>\n</CityData>";
+    };
+    expectError(withStreets("<Street id=\"4\" startPoint=\"0\" endPoint=\"1\"/>\n<Street id=\"4\" startPoint=\"1\" endPoint=\"2\"/>\n"),
+                "city.xml:8:13: street id 4 is already used at city.xml:7:1");
+    expectError(withStreets("<Street id=\"0\" startPoint=\"2\" endPoint=\"2\"/>\n"),
+                "city.xml:7:1: the street starts and ends at point 2");
     expectError(city(kSquare, std::string(kSquareBlock) + "<Houses/>\n"), "city.xml:8:1: unknown element <Houses> in <Block>");
     expectError("<City/>", "city.xml:1:1: the root element is <City>, expected <CityData>");
     expectError("<CityData><Points><Point id=\"0\" e=\"x\" n=\"0\"/></Points></CityData>", "city.xml:1:");
