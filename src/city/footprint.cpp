@@ -132,6 +132,10 @@ bool liesInside(std::span<const Vec2f> inner, std::span<const Vec2f> outer) {
 }
 
 std::vector<Vec2f> offsetPolygon(std::span<const Vec2f> ring, float distance) {
+    return offsetPolygon(ring, std::vector<float>(ring.size(), distance));
+}
+
+std::vector<Vec2f> offsetPolygon(std::span<const Vec2f> ring, std::span<const float> distances) {
     std::vector<Vec2f> moved;
     size_t n = ring.size();
     auto rightNormal = [&](size_t edge) {
@@ -140,7 +144,17 @@ std::vector<Vec2f> offsetPolygon(std::span<const Vec2f> ring, float distance) {
     };
     for (size_t i = 0; i < n; ++i) {
         Vec3f a = rightNormal((i + n - 1) % n), b = rightNormal(i);
-        Vec3f corner = lift(ring[i], 0) + (a + b) * (distance / (1 + dot(a, b)));
+        float da = distances[(i + n - 1) % n], db = distances[i];
+        Vec3f shift;
+        if (da == db) {
+            // The mitre, which also holds where the two edges run straight on.
+            shift = (a + b) * (da / (1 + dot(a, b)));
+        } else {
+            // shift · a = da and shift · b = db.
+            float det = a.x * b.y - a.y * b.x;
+            shift = {(da * b.y - db * a.y) / det, (a.x * db - b.x * da) / det, 0};
+        }
+        Vec3f corner = lift(ring[i], 0) + shift;
         moved.push_back({corner.x, corner.y});
     }
     return moved;

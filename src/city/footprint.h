@@ -56,6 +56,9 @@ bool liesInside(std::span<const Vec2f> inner, std::span<const Vec2f> outer);
 // which lies on both moved lines (and is distance · a where the edges run straight on). The
 // result may cross itself where the ring cannot take the distance.
 std::vector<Vec2f> offsetPolygon(std::span<const Vec2f> ring, float distance);
+// The same with a distance of its own for each edge (edge i from point i to point i + 1):
+// corner i is where the moved lines of edges i − 1 and i meet.
+std::vector<Vec2f> offsetPolygon(std::span<const Vec2f> ring, std::span<const float> distances);
 // The distance from `p` to the segment from `a` to `b` (to `a` when the two coincide), worked
 // out in double precision.
 double distanceToSegment(Vec2f p, Vec2f a, Vec2f b);

@@ -25,6 +25,7 @@ using Ring = std::vector<Vec2f>;
 using Attempt = std::variant<Mesh, std::string>;
 
 const Vec3f kUp{0, 0, 1};
+constexpr double kOnOutline = 1e-4;  // metres: a ring drawn on another's line, give or take rounding
 
 std::vector<Ring> ringsOf(const RoofFootprint &footprint) {
     std::vector<Ring> rings{footprint.outer};
@@ -73,6 +74,19 @@ RoofFootprint offsetFootprint(const RoofFootprint &footprint, float distance) {
     return moved;
 }
 
+// Each edge moved outwards (into the courtyard on a hole) by its own reach: `reach` runs over the
+// outline's edges, then each hole's.
+RoofFootprint movedOut(const RoofFootprint &footprint, const std::vector<float> &reach) {
+    RoofFootprint moved{{}, {}, footprint.base};
+    size_t first = 0;
+    for (const Ring &ring : ringsOf(footprint)) {
+        std::span<const float> distances(reach.data() + first, ring.size());
+        (moved.outer.empty() ? moved.outer : moved.holes.emplace_back()) = offsetPolygon(ring, distances);
+        first += ring.size();
+    }
+    return moved;
+}
+
 bool keepsDirections(const Ring &original, const Ring &moved) {
     for (size_t e = 0; e < original.size(); ++e) {
         Vec2f a = original[e], b = original[(e + 1) % original.size()];
@@ -96,6 +110,49 @@ bool isCleanOffset(const RoofFootprint &original, const RoofFootprint &moved, fl
     return true;
 }
 
+// The same for edges moved out by reaches that may be zero, where the rings share a line.
+bool isCleanMoveOut(const RoofFootprint &original, const RoofFootprint &moved) {
+    if (!isValid(moved)) return false;
+    std::vector<Ring> before = ringsOf(original), after = ringsOf(moved);
+    for (size_t r = 0; r < before.size(); ++r) {
+        if (!keepsDirections(before[r], after[r])) return false;
+        const Ring &smaller = r == 0 ? before[r] : after[r], &larger = r == 0 ? after[r] : before[r];
+        for (Vec2f p : smaller)
+            if (!covers(larger, p, kOnOutline)) return false;
+        if (edgeLeaving(smaller, larger, kOnOutline)) return false;
+    }
+    return true;
+}
+
+// Where a roof rests: the footprint with its edges moved out, and its height above the base.
+struct Eaves {
+    RoofFootprint footprint;
+    float aboveBase = 0;
+};
+
+// The eaves of a roof whose slopes pass over the wall tops at `slope`, its edges reaching
+// `reach` beyond the walls (the overhang, or none where a gable or shed wall stands flush with
+// the house's): lowered by overhang · slope. A footprint that cannot take it keeps its walls'
+// outline, with a note.
+Eaves eavesFor(const RoofFootprint &footprint, float wallTop, float slope, float overhang,
+               const std::vector<float> &reach, std::vector<std::string> &notes) {
+    if (overhang == 0) return {footprint, wallTop};
+    RoofFootprint moved = movedOut(footprint, reach);
+    if (isCleanMoveOut(footprint, moved)) return {std::move(moved), wallTop - overhang * slope};
+    notes.push_back(fmt::format("the footprint cannot take an overhang of {} m; built without", overhang));
+    return {footprint, wallTop};
+}
+
+size_t edgeCount(const RoofFootprint &footprint) {
+    size_t count = footprint.outer.size();
+    for (const Ring &hole : footprint.holes) count += hole.size();
+    return count;
+}
+
+std::vector<float> everyEdge(const RoofFootprint &footprint, float overhang) {
+    return std::vector<float>(edgeCount(footprint), overhang);
+}
+
 // A horizontal or sloping cover over the footprint, corners at heightAt above `eavesZ`.
 void addCover(Mesh &m, const RoofFootprint &footprint, float eavesZ, const std::function<float(Vec2f)> &heightAt,
               const Vec3f &normal, const UvPlane &uv) {
@@ -105,16 +162,6 @@ void addCover(Mesh &m, const RoofFootprint &footprint, float eavesZ, const std::
         for (Vec2f p : ring) rings.back().push_back(lift(p, eavesZ + heightAt(p)));
     }
     addProjectedFace(m, rings, normal, uv, RoofCovering);
-}
-
-// The footprint's rings `aboveBase` over its base.
-std::vector<std::vector<Vec3f>> ringsAt(const RoofFootprint &footprint, float aboveBase) {
-    std::vector<std::vector<Vec3f>> lifted;
-    for (const Ring &ring : ringsOf(footprint)) {
-        lifted.emplace_back();
-        for (Vec2f p : ring) lifted.back().push_back(lift(p, footprint.base + aboveBase));
-    }
-    return lifted;
 }
 
 void addFlatCover(Mesh &m, const RoofFootprint &footprint, float z) {
@@ -172,8 +219,8 @@ std::optional<std::string> joined(const std::vector<std::string> &notes) {
 
 constexpr double kCoverageTolerance = 1e-5;  // relative: float corners of roofs tens of metres wide
 
-Attempt hipRoof(const RoofFootprint &footprint, float eavesAboveBase, float slope) {
-    std::optional<SkeletonRoof> roof = skeletonRoof(footprint, footprint.base + eavesAboveBase, slope);
+Attempt hipRoof(const Eaves &eaves, float slope) {
+    std::optional<SkeletonRoof> roof = skeletonRoof(eaves.footprint, eaves.footprint.base + eaves.aboveBase, slope);
     if (!roof) return std::string("CGAL could not build the footprint's straight skeleton");
     return roofMesh(*roof);
 }
@@ -199,53 +246,86 @@ Attempt checkedCover(Attempt attempt, const RoofFootprint &footprint) {
     return attempt;
 }
 
-// Gable or half-hip ends (roof_gables.h) on the hip roof: on the chosen edge, or on every end of
-// a ridge, shortest edge first; an end whose apex an earlier gable took stays hipped by rule,
-// one the geometry refuses with a note.
-Attempt gabledRoof(const RoofFootprint &footprint, float eavesAboveBase, float slope, int gableEdge,
-                   std::optional<float> halfHipFraction, std::vector<std::string> &notes) {
-    std::optional<SkeletonRoof> roof = skeletonRoof(footprint, footprint.base + eavesAboveBase, slope);
-    if (!roof) return std::string("CGAL could not build the footprint's straight skeleton");
-    if (gableEdge >= 0) {
-        auto edge = size_t(gableEdge);
-        if (!endsARidge(*roof, edge)) return fmt::format("edge {} ends no ridge: its hip face is no triangle", edge);
-        if (auto refusal = addGableEnd(*roof, edge, halfHipFraction)) return fmt::format("edge {}: {}", edge, *refusal);
-        return checkedCover(roofMesh(*roof), footprint);
-    }
-    std::vector<std::string> refusals;
-    size_t gables = 0;
-    for (size_t edge : ridgeEnds(*roof)) {
-        if (!endsARidge(*roof, edge)) continue;
-        if (auto refusal = addGableEnd(*roof, edge, halfHipFraction)) {
-            refusals.push_back(fmt::format("edge {} stays hipped: {}", edge, *refusal));
+// Gable or half-hip ends (roof_gables.h) on the hip roof over `eaves`: on the edges `only`
+// names, each of which must take one, or else on every end of a ridge, shortest edge first,
+// where an end whose apex an earlier gable took stays hipped by rule and one the geometry
+// refuses stays hipped with a note.
+struct GabledRoof {
+    Attempt roof;
+    std::vector<size_t> gables;         // the edges that got one
+    std::vector<std::string> refusals;  // why the others did not
+};
+
+GabledRoof gableEnds(const Eaves &eaves, float slope, const std::optional<std::vector<size_t>> &only,
+                     std::optional<float> halfHipFraction) {
+    std::optional<SkeletonRoof> roof = skeletonRoof(eaves.footprint, eaves.footprint.base + eaves.aboveBase, slope);
+    if (!roof) return {std::string("CGAL could not build the footprint's straight skeleton"), {}, {}};
+    GabledRoof gabled{Mesh{}, {}, {}};
+    for (size_t edge : only ? *only : ridgeEnds(*roof)) {
+        if (!endsARidge(*roof, edge)) {
+            if (only) gabled.refusals.push_back(fmt::format("edge {} ends no ridge: its hip face is no triangle", edge));
+        } else if (auto refusal = addGableEnd(*roof, edge, halfHipFraction)) {
+            gabled.refusals.push_back(fmt::format("edge {} stays hipped: {}", edge, *refusal));
         } else {
-            ++gables;
+            gabled.gables.push_back(edge);
         }
     }
-    if (gables == 0) {
-        return refusals.empty() ? std::string("no edge ends a ridge: no hip face is a triangle") : *joined(refusals);
+    if (gabled.gables.empty() || (only && !gabled.refusals.empty())) {
+        gabled.roof = gabled.refusals.empty() ? std::string("no edge ends a ridge: no hip face is a triangle")
+                                              : *joined(gabled.refusals);
+    } else {
+        gabled.roof = checkedCover(roofMesh(*roof), eaves.footprint);
     }
-    Attempt built = checkedCover(roofMesh(*roof), footprint);
-    if (std::holds_alternative<Mesh>(built)) notes.insert(notes.end(), refusals.begin(), refusals.end());
-    return built;
+    return gabled;
 }
 
-Attempt pyramidRoof(const RoofFootprint &footprint, float eavesAboveBase, float slope) {
+// The gables stand flush with the house's walls: their edges take no overhang, the others do.
+// They are found without one first; an overhang that moves them elsewhere is left out.
+Attempt gabledRoof(const RoofFootprint &footprint, float wallTop, float slope, float overhang,
+                   const std::optional<std::vector<size_t>> &only, std::optional<float> halfHipFraction,
+                   std::vector<std::string> &notes) {
+    GabledRoof flush = gableEnds({footprint, wallTop}, slope, only, halfHipFraction);
+    GabledRoof chosen = std::move(flush);
+    if (overhang > 0 && std::holds_alternative<Mesh>(chosen.roof)) {
+        std::vector<float> reach = everyEdge(footprint, overhang);
+        for (size_t edge : chosen.gables) reach[edge] = 0;
+        std::vector<std::string> eavesNotes;
+        Eaves eaves = eavesFor(footprint, wallTop, slope, overhang, reach, eavesNotes);
+        GabledRoof over = eavesNotes.empty() ? gableEnds(eaves, slope, chosen.gables, halfHipFraction)
+                                             : GabledRoof{std::string(), {}, {}};
+        if (eavesNotes.empty() && std::holds_alternative<Mesh>(over.roof)) {
+            chosen = std::move(over);
+        } else {
+            notes.push_back(eavesNotes.empty()
+                                ? fmt::format("the gable ends do not keep their edges under an overhang of {} m; built without",
+                                              overhang)
+                                : eavesNotes.front());
+        }
+    }
+    if (std::holds_alternative<Mesh>(chosen.roof)) notes.insert(notes.end(), chosen.refusals.begin(), chosen.refusals.end());
+    return std::move(chosen.roof);
+}
+
+// The apex stands over the centroid as high as the pitch rises over the nearest edge; the faces
+// over edges farther off are shallower, so their eaves reach out farther for the overhang to
+// lower them all alike.
+Attempt pyramidRoof(const RoofFootprint &footprint, float wallTop, float slope, float overhang,
+                    std::vector<std::string> &notes) {
     const Ring &outer = footprint.outer;
     std::vector<RoofKernel::Point_2> points;
     for (Vec2f p : outer) points.emplace_back(p.x, p.y);
     if (!footprint.holes.empty()) return std::string("a pyramid needs a footprint without courtyards");
     if (!CGAL::is_convex_2(points.begin(), points.end(), RoofKernel())) return std::string("a pyramid needs a convex footprint");
-    // The apex stands over the centroid as high as the pitch rises over its nearest edge.
     Vec2f centre = areaCentroid(outer);
-    float reach = std::numeric_limits<float>::max();
-    forEachEdge(footprint, [&](Vec2f a, Vec2f b, float) {
-        reach = std::min(reach, dot(lift(a, 0) - lift(centre, 0), outwardNormal(a, b)));
-    });
-    float eavesZ = footprint.base + eavesAboveBase;
-    Vec3f apex = lift(centre, eavesZ + reach * slope);
+    std::vector<float> reach;
+    forEachEdge(footprint, [&](Vec2f a, Vec2f b, float) { reach.push_back(dot(lift(a, 0) - lift(centre, 0), outwardNormal(a, b))); });
+    float nearest = *std::min_element(reach.begin(), reach.end());
+    Vec3f apex = lift(centre, footprint.base + wallTop + nearest * slope);
+    for (float &r : reach) r *= overhang / nearest;
+    Eaves eaves = eavesFor(footprint, wallTop, slope, overhang, reach, notes);
+    float eavesZ = footprint.base + eaves.aboveBase;
     Mesh m;
-    forEachEdge(footprint, [&](Vec2f a, Vec2f b, float) {
+    forEachEdge(eaves.footprint, [&](Vec2f a, Vec2f b, float) {
         std::vector<Vec3f> corners{lift(a, eavesZ), lift(b, eavesZ), apex};
         addFace(m, corners, slopeUvPlane(corners), RoofCovering);
     });
@@ -262,10 +342,23 @@ size_t longestEdge(const Ring &ring) {
     return longest;
 }
 
+// Whether every corner lies on the inner side of the line of outline edge `edge`, or on it.
+bool liesBehindEdge(const RoofFootprint &footprint, size_t edge) {
+    const Ring &outer = footprint.outer;
+    Vec2f a = outer[edge], b = outer[(edge + 1) % outer.size()];
+    for (const Ring &ring : ringsOf(footprint)) {
+        for (Vec2f p : ring)
+            if (dot(lift(p, 0) - lift(a, 0), outwardNormal(a, b)) > kOnOutline) return false;
+    }
+    return true;
+}
+
 // One plane rising from the low edge's line at the pitch, lifted so that the footprint's lowest
 // point (the low edge's, on a convex footprint) lies at the eaves; walls close it down to the
 // eaves wherever it stands higher.
-Mesh shedRoof(const RoofFootprint &footprint, float eavesAboveBase, float slope, size_t lowEdge) {
+Mesh shedRoof(const Eaves &eaves, float slope, size_t lowEdge) {
+    const RoofFootprint &footprint = eaves.footprint;
+    float eavesAboveBase = eaves.aboveBase;
     const Ring &outer = footprint.outer;
     Vec2f low = outer[lowEdge], lowEnd = outer[(lowEdge + 1) % outer.size()];
     Vec3f inwards = -outwardNormal(low, lowEnd);
@@ -295,7 +388,9 @@ Mesh shedRoof(const RoofFootprint &footprint, float eavesAboveBase, float slope,
 
 // roofs.h's mansard, its slopes reaching kMansardInset in at the pitch (steeper where the inset
 // had to be halved).
-Attempt mansardOverFootprint(const RoofFootprint &footprint, float eavesAboveBase, float slope) {
+Attempt mansardOverFootprint(const Eaves &eaves, float slope) {
+    const RoofFootprint &footprint = eaves.footprint;
+    float eavesAboveBase = eaves.aboveBase;
     if (!footprint.holes.empty()) return std::string("a mansard needs a footprint without courtyards");
     Footprint plain{footprint.outer, std::vector<bool>(footprint.outer.size(), false), footprint.base};
     MansardRoof roof = mansardRoof(plain, eavesAboveBase, kMansardInset * slope, kMansardInset);
@@ -316,18 +411,32 @@ std::vector<RoofType> attemptOrder(RoofType type) {
     }
 }
 
-Attempt buildSloped(RoofType type, const RoofFootprint &footprint, float eavesAboveBase, float slope,
-                    const RoofOptions &options, std::vector<std::string> &notes) {
+// Hip and mansard roofs overhang on every edge; a shed only at its low edge, its walls flush
+// with the house's; pyramids and gables work out their own.
+Attempt buildSloped(RoofType type, const RoofFootprint &footprint, float wallTop, float slope, const RoofOptions &options,
+                    std::vector<std::string> &notes) {
+    float overhang = options.overhang;
+    std::optional<std::vector<size_t>> gableEdge;
+    if (options.gableEdge >= 0) gableEdge = std::vector<size_t>{size_t(options.gableEdge)};
     switch (type) {
-    case RoofType::Hip: return hipRoof(footprint, eavesAboveBase, slope);
-    case RoofType::Pyramid: return pyramidRoof(footprint, eavesAboveBase, slope);
-    case RoofType::Gable: return gabledRoof(footprint, eavesAboveBase, slope, options.gableEdge, std::nullopt, notes);
+    case RoofType::Hip:
+        return hipRoof(eavesFor(footprint, wallTop, slope, overhang, everyEdge(footprint, overhang), notes), slope);
+    case RoofType::Mansard:
+        return mansardOverFootprint(eavesFor(footprint, wallTop, slope, overhang, everyEdge(footprint, overhang), notes),
+                                    slope);
+    case RoofType::Pyramid: return pyramidRoof(footprint, wallTop, slope, overhang, notes);
+    case RoofType::Gable: return gabledRoof(footprint, wallTop, slope, overhang, gableEdge, std::nullopt, notes);
     case RoofType::HalfHip:
-        return gabledRoof(footprint, eavesAboveBase, slope, options.gableEdge, options.halfHipFraction, notes);
-    case RoofType::Mansard: return mansardOverFootprint(footprint, eavesAboveBase, slope);
+        return gabledRoof(footprint, wallTop, slope, overhang, gableEdge, options.halfHipFraction, notes);
     case RoofType::Shed: {
         size_t low = options.gableEdge >= 0 ? size_t(options.gableEdge) : longestEdge(footprint.outer);
-        return shedRoof(footprint, eavesAboveBase, slope, low);
+        // Where part of the footprint lies below the low edge's line, walls stand on that edge
+        // too, and they must stay flush with the house's.
+        float lowOverhang = liesBehindEdge(footprint, low) ? overhang : 0;
+        if (lowOverhang < overhang) notes.push_back("the shed's low edge is not its lowest line; built without an overhang");
+        std::vector<float> reach(edgeCount(footprint), 0.0f);
+        reach[low] = lowOverhang;
+        return shedRoof(eavesFor(footprint, wallTop, slope, lowOverhang, reach, notes), slope, low);
     }
     case RoofType::Flat: break;
     }
@@ -357,14 +466,6 @@ void checkArguments(const RoofFootprint &footprint, const RoofOptions &options) 
 }
 
 
-// An overhang moves the whole outline out and lowers the eaves by one amount. Gable and shed
-// walls would then stand off the house's walls, and a pyramid's faces over edges farther from
-// its apex than the nearest one are shallower and would pass below the wall tops: both leave
-// gaps, so these types take no overhang until it can differ from edge to edge.
-bool takesOverhang(RoofType type) {
-    return type == RoofType::Hip || type == RoofType::Mansard || type == RoofType::Flat;
-}
-
 }  // namespace
 
 std::string_view roofTypeName(RoofType type) {
@@ -393,33 +494,19 @@ std::optional<RoofType> roofTypeFromName(std::string_view name) {
 RoofResult buildRoof(const RoofFootprint &footprint, float eavesHeight, const RoofOptions &options) {
     checkArguments(footprint, options);
     std::vector<std::string> notes;
-    RoofFootprint eaves = footprint;
-    float overhang = options.overhang;
-    if (overhang > 0 && !takesOverhang(options.type)) {
-        notes.push_back(fmt::format("a {} roof takes no overhang yet; built without", roofTypeName(options.type)));
-        overhang = 0;
-    }
-    if (overhang > 0) {
-        RoofFootprint moved = offsetFootprint(footprint, overhang);
-        if (isCleanOffset(footprint, moved, overhang)) {
-            eaves = std::move(moved);
-        } else {
-            notes.push_back(fmt::format("the footprint cannot take an overhang of {} m; built without", overhang));
-            overhang = 0;
-        }
-    }
-    // The slopes run on over the overhang: lower eaves, the same wall tops.
     float slope = std::tan(radians(options.pitchDegrees));
-    float slopedEaves = eavesHeight - overhang * slope;
     for (RoofType type : attemptOrder(options.type)) {
-        Attempt attempt = buildSloped(type, eaves, slopedEaves, slope, options, notes);
+        std::vector<std::string> tried;
+        Attempt attempt = buildSloped(type, footprint, eavesHeight, slope, options, tried);
         if (Mesh *mesh = std::get_if<Mesh>(&attempt)) {
-            return {std::move(*mesh), type, joined(notes), ringsAt(eaves, slopedEaves), eavesHeight};
+            notes.insert(notes.end(), tried.begin(), tried.end());
+            return {std::move(*mesh), type, joined(notes)};
         }
         notes.push_back(fmt::format("no {} roof: {}", roofTypeName(type), std::get<std::string>(attempt)));
     }
-    return {flatRoof(eaves, eavesHeight, options.parapetHeight), RoofType::Flat, joined(notes), ringsAt(eaves, eavesHeight),
-            eavesHeight};
+    // A flat deck is not lowered: its parapet, not a slope, closes the walls.
+    Eaves deck = eavesFor(footprint, eavesHeight, 0, options.overhang, everyEdge(footprint, options.overhang), notes);
+    return {flatRoof(deck.footprint, eavesHeight, options.parapetHeight), RoofType::Flat, joined(notes)};
 }
 
 }  // namespace veduta

@@ -29,7 +29,7 @@ inline constexpr RoofType kRoofTypes[] = {RoofType::Flat,  RoofType::Hip,     Ro
 struct RoofOptions {
     RoofType type = RoofType::Hip;
     float pitchDegrees = 40;    // the slopes' angle; a flat roof ignores it
-    float overhang = 0;         // metres the eaves reach beyond the walls: hip, mansard and flat roofs only
+    float overhang = 0;         // metres the eaves reach beyond the walls (see buildRoof)
     float parapetHeight = 0.8f; // a flat roof's parapet, 0 for none
     // Shed: the low edge; gable and half-hip: the one edge to carry the gable end. −1: the
     // longest edge for a shed, every end of a ridge for a gable or half-hip (roof_gables.h).
@@ -44,12 +44,6 @@ struct RoofResult {
     // Why the roof departs from the options (another type, no overhang, gable ends left
     // hipped), when it does.
     std::optional<std::string> fallback;
-    // The roof's open boundary, where it rests: the footprint's rings moved out by the overhang,
-    // at the (lowered) eaves, in world coordinates.
-    std::vector<std::vector<Vec3f>> eaves;
-    // Height above the base at which walls must stop so that the roof closes them: the slopes
-    // pass the wall tops there, whatever the overhang.
-    float wallTop = 0;
 };
 
 // The fallbacks, tried in this order until one can be built: Pyramid → Hip → Flat,
@@ -69,8 +63,11 @@ std::optional<RoofType> roofTypeFromName(std::string_view name);
 // describes (RoofCovering slopes with UVs along the eaves and up the slant, RoofGableWall for
 // gable, shed and parapet walls, whose UVs continue the facades'), whose open edges are exactly
 // the footprint's (moved out by the overhang) at the eaves: with the footprint as a floor it
-// closes. An overhang lowers the eaves by overhang · tan(pitch), so that the slopes meet the
-// walls at eavesHeight. Throws std::invalid_argument for a footprint that breaks the rules
+// closes. An overhang lowers the eaves by overhang · tan(pitch), so that the slopes pass over
+// the wall tops at eavesHeight. Hip, mansard and flat roofs overhang on every edge; a shed on
+// its low edge only; a gable or half-hip everywhere but its gable ends, whose walls stand
+// flush with the house's (and run down past the wall tops to the lowered eaves); a pyramid's
+// shallower faces reach out farther, so that all its eaves are lowered alike. Throws std::invalid_argument for a footprint that breaks the rules
 // above, a pitch outside (0°, 90°) on a sloped type, a negative overhang or parapet, or a
 // gableEdge that is no edge of `outer`, or a halfHipFraction outside (0, 1).
 RoofResult buildRoof(const RoofFootprint &footprint, float eavesHeight, const RoofOptions &options);
