@@ -284,22 +284,20 @@ GabledRoof gableEnds(const Eaves &eaves, float slope, const std::optional<std::v
 Attempt gabledRoof(const RoofFootprint &footprint, float wallTop, float slope, float overhang,
                    const std::optional<std::vector<size_t>> &only, std::optional<float> halfHipFraction,
                    std::vector<std::string> &notes) {
-    GabledRoof flush = gableEnds({footprint, wallTop}, slope, only, halfHipFraction);
-    GabledRoof chosen = std::move(flush);
+    GabledRoof chosen = gableEnds({footprint, wallTop}, slope, only, halfHipFraction);
     if (overhang > 0 && std::holds_alternative<Mesh>(chosen.roof)) {
         std::vector<float> reach = everyEdge(footprint, overhang);
         for (size_t edge : chosen.gables) reach[edge] = 0;
-        std::vector<std::string> eavesNotes;
-        Eaves eaves = eavesFor(footprint, wallTop, slope, overhang, reach, eavesNotes);
-        GabledRoof over = eavesNotes.empty() ? gableEnds(eaves, slope, chosen.gables, halfHipFraction)
-                                             : GabledRoof{std::string(), {}, {}};
-        if (eavesNotes.empty() && std::holds_alternative<Mesh>(over.roof)) {
-            chosen = std::move(over);
-        } else {
-            notes.push_back(eavesNotes.empty()
-                                ? fmt::format("the gable ends do not keep their edges under an overhang of {} m; built without",
-                                              overhang)
-                                : eavesNotes.front());
+        size_t notesBefore = notes.size();  // eavesFor adds one when the footprint cannot take it
+        Eaves eaves = eavesFor(footprint, wallTop, slope, overhang, reach, notes);
+        if (notes.size() == notesBefore) {
+            GabledRoof over = gableEnds(eaves, slope, chosen.gables, halfHipFraction);
+            if (std::holds_alternative<Mesh>(over.roof)) {
+                chosen = std::move(over);
+            } else {
+                notes.push_back(fmt::format(
+                    "the gable ends do not keep their edges under an overhang of {} m; built without", overhang));
+            }
         }
     }
     if (std::holds_alternative<Mesh>(chosen.roof)) notes.insert(notes.end(), chosen.refusals.begin(), chosen.refusals.end());
