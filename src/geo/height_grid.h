@@ -1,0 +1,30 @@
+// HeightGrid: a DGM, heights on a regular grid of a projected CRS, as every reader returns it
+// (dgm_file.h) and as terrain meshing, draping and building placement read it.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "geo/map_point.h"
+
+namespace veduta {
+
+struct HeightGrid {
+    // Node (0, 0) is the south-west node; column c lies at west + c·spacing, row r at
+    // south + r·spacing. Nodes are sample points (pixel centres of a raster), not cells.
+    double west = 0, south = 0;
+    double spacing = 0;            // metres, the same east–west and north–south
+    int columns = 0, rows = 0;
+    std::vector<float> heights;    // row-major from the south row; NaN where there is no data
+
+    float node(int column, int row) const { return heights[size_t(row) * size_t(columns) + size_t(column)]; }
+    float &node(int column, int row) { return heights[size_t(row) * size_t(columns) + size_t(column)]; }
+    double east() const { return west + (columns - 1) * spacing; }
+    double north() const { return south + (rows - 1) * spacing; }
+    MapPoint nodePoint(int column, int row) const { return {west + column * spacing, south + row * spacing}; }
+    bool empty() const { return columns == 0 || rows == 0; }
+};
+
+}  // namespace veduta

@@ -1,0 +1,18 @@
+// The public sample data in ../shared/data (see its MANIFEST.md), which sits beside a
+// developer's checkout but not beside a clean clone: tests that read it skip without it.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string_view>
+
+namespace veduta::test {
+
+// ../shared/data/<relative> beside the source tree, or nullopt when it is not there.
+inline std::optional<std::filesystem::path> sharedDataFile(std::string_view relative) {
+    std::filesystem::path file = std::filesystem::path(VEDUTA_SOURCE_DIR) / "../shared/data" / relative;
+    if (!std::filesystem::exists(file)) return std::nullopt;
+    return file;
+}
+
+}  // namespace veduta::test
