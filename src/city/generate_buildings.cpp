@@ -7,23 +7,31 @@
 #include "city/assets.h"
 #include "city/building_generator.h"
 #include "city/building_rules.h"
+#include "city/plinth.h"
 #include "city/warning_list.h"
 
 namespace veduta {
 
 namespace {
 
-Footprint footprintOf(const BuildingDesc &building, std::vector<std::string> &warnings) {
+Footprint footprintOf(const BuildingDesc &building, const GroundHeight &ground, std::vector<std::string> &warnings) {
     Footprint footprint;
     footprint.points = building.footprint;
     footprint.streetEdges.assign(building.footprint.size(), false);
     for (uint32_t edge : building.streetEdges) footprint.streetEdges[edge] = true;
-    footprint.base = building.base;
     if (auto warning = normaliseFootprint(footprint, building.footprintLoc)) warnings.push_back(*warning);
+    footprint.base = building.base ? *building.base : ground ? ground(footprint.points) : 0.0f;
     return footprint;
 }
 
-void generateGroup(const BuildingGroupDesc &group, RenderSceneBuilder &builder, std::vector<std::string> &warnings) {
+void addPlinth(const BuildingSpec &spec, RenderSceneBuilder &builder) {
+    Mesh plinth = plinthMesh(spec.footprint, kPlinthDepth);
+    plinth.setMaterial(builder.findOrAddMaterial(Material::lambertian("plinth", {0.42f, 0.4f, 0.37f})));
+    builder.addWorldMesh(std::move(plinth), spec.objectId, spec.id);
+}
+
+void generateGroup(const BuildingGroupDesc &group, const GroundHeight &ground, RenderSceneBuilder &builder,
+                   std::vector<std::string> &warnings) {
     if (!std::filesystem::is_regular_file(group.rules))
         throw InputError(group.rulesLoc, fmt::format("cannot read the rule file {}", group.rules.string()));
     BuildingRules loaded(group.rules);
@@ -35,9 +43,10 @@ void generateGroup(const BuildingGroupDesc &group, RenderSceneBuilder &builder, 
         BuildingSpec spec;
         spec.id = desc.buildingId;
         spec.objectId = desc.objectId;
-        spec.footprint = footprintOf(desc, warnings);
+        spec.footprint = footprintOf(desc, ground, warnings);
         spec.settings = SettingsStack({&desc.settings, &group.settings, &rules.settings, &defaultBuildingSettings()});
         generator.generate(spec, warnings);
+        if (!desc.base && ground) addPlinth(spec, builder);
     }
     // The facade frame (right, up, out) standing on the x axis and facing −y.
     const Transform standing{{1, 0, 0, 0, 0, 0, -1, 0, 0, 1, 0, 0}};
@@ -58,10 +67,11 @@ void generateGroup(const BuildingGroupDesc &group, RenderSceneBuilder &builder, 
 
 }  // namespace
 
-void generateBuildings(const BuildingGroupDesc &group, RenderSceneBuilder &builder, std::vector<std::string> &out) {
+void generateBuildings(const BuildingGroupDesc &group, const GroundHeight &ground, RenderSceneBuilder &builder,
+                       std::vector<std::string> &out) {
     std::vector<std::string> warnings;
     try {
-        generateGroup(group, builder, warnings);
+        generateGroup(group, ground, builder, warnings);
     } catch (const InputError &) {
         appendOnce(warnings, out);  // they may say why
         throw;

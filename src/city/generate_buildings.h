@@ -2,6 +2,7 @@
 // building of the group into the render scene.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -10,8 +11,17 @@
 
 namespace veduta {
 
+// The height a footprint stands on when its building gives none: the landscape's lowest
+// terrain point under it (docs/terrain.md). Empty: flat ground at 0.
+using GroundHeight = std::function<float(const std::vector<Vec2f> &footprint)>;
+
+// How far a building's plinth reaches below its datum on terrain.
+inline constexpr float kPlinthDepth = 0.5f;
+
 // Warnings (a rule's probabilities renormalised, a clockwise footprint turned round, sizes that
 // overflow a split) are appended as "file:line:col: message"; errors throw InputError.
-void generateBuildings(const BuildingGroupDesc &group, RenderSceneBuilder &builder, std::vector<std::string> &warnings);
+// A building placed on the ground gets a plinth (city/plinth.h) in the material "plinth".
+void generateBuildings(const BuildingGroupDesc &group, const GroundHeight &ground, RenderSceneBuilder &builder,
+                       std::vector<std::string> &warnings);
 
 }  // namespace veduta

@@ -80,10 +80,8 @@ void addStreets(const StreetNetwork &streets, uint32_t objectId, RenderSceneBuil
                                                     {"street/kerb", {0.55f, 0.54f, 0.52f}},
                                                     {"street/cobblestone", {0.27f, 0.26f, 0.25f}}};
     MaterialId materials[std::size(kinds)];
-    for (size_t k = 0; k < std::size(kinds); ++k) {
-        materials[k] = builder.findMaterial(kinds[k].first);
-        if (materials[k] == kNoMaterial) materials[k] = builder.addMaterial(Material::lambertian(kinds[k].first, kinds[k].second));
-    }
+    for (size_t k = 0; k < std::size(kinds); ++k)
+        materials[k] = builder.findOrAddMaterial(Material::lambertian(kinds[k].first, kinds[k].second));
     for (MaterialId &m : mesh.triangleMaterials) m = materials[m];
     builder.addWorldMesh(std::move(mesh), objectId);
 }

@@ -57,8 +57,7 @@ MaterialPalette::MaterialPalette(RenderSceneBuilder &builder) : builder_(&builde
     for (size_t c = 0; c < kMaterialCategoryCount; ++c) {
         if (!candidates_[c].empty()) continue;
         Material stand = builtInMaterial(MaterialCategory(c));
-        MaterialId existing = builder.findMaterial(stand.name);
-        candidates_[c].push_back(existing != kNoMaterial ? existing : builder.addMaterial(stand));
+        candidates_[c].push_back(builder.findOrAddMaterial(stand));
     }
 }
 

@@ -54,7 +54,7 @@ class SceneAssembler {
             builder_.addInstance(
                 {inst.transform, it->second, override, inst.objectId, inst.buildingId, uint32_t(i + 1)});
         }
-        for (const BuildingGroupDesc &group : d_.buildingGroups) generateBuildings(group, builder_, warnings_);
+        for (const BuildingGroupDesc &group : d_.buildingGroups) generateBuildings(group, {}, builder_, warnings_);
         // A city's buildings take the ids after those the scene file gives out.
         uint32_t nextBuildingId = firstFreeBuildingId();
         for (const CityDesc &city : d_.cities) nextBuildingId += generateCity(city, nextBuildingId, builder_, warnings_);

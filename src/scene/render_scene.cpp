@@ -26,6 +26,11 @@ MaterialId RenderSceneBuilder::findMaterial(const std::string &name) const {
     return it == materialsByName_.end() ? kNoMaterial : it->second;
 }
 
+MaterialId RenderSceneBuilder::findOrAddMaterial(Material fallback) {
+    MaterialId found = findMaterial(fallback.name);
+    return found != kNoMaterial ? found : addMaterial(std::move(fallback));
+}
+
 void RenderSceneBuilder::addMesh(const Mesh &mesh, const Transform &objectToWorld, ObjectId objectId,
                                  uint32_t buildingId, uint32_t instanceId) {
     BakedMesh baked;

@@ -61,6 +61,9 @@ class RenderSceneBuilder {
     MaterialId addMaterial(Material material);
     // The id of a material added before, or kNoMaterial.
     MaterialId findMaterial(const std::string &name) const;
+    // The scene's material of `fallback`'s name if it has one, else `fallback`, added: how
+    // generators give their surfaces materials a scene may restyle.
+    MaterialId findOrAddMaterial(Material fallback);
     const std::vector<Material> &materials() const { return scene_.materials; }
 
     void addMesh(const Mesh &mesh, const Transform &objectToWorld, ObjectId objectId, uint32_t buildingId = 0,

@@ -99,7 +99,9 @@ struct BuildingDesc {
     FileLoc footprintLoc;
     std::vector<uint32_t> streetEdges;  // edge i runs from point i to point i+1
     FileLoc streetLoc;
-    float base = 0;  // the ground height it stands on
+    // The height it stands on; unset: the terrain's lowest point under it when the scene has
+    // a <landscape> (docs/terrain.md), else 0.
+    std::optional<float> base;
     SettingsMap settings;
 };
 
@@ -139,6 +141,28 @@ struct CityDesc {
     uint32_t objectId = 0;
 };
 
+// A data file a <landscape> reads, with the CRS of its coordinates.
+struct DataFileDesc {
+    std::filesystem::path file;  // resolved against the scene's folder
+    FileLoc loc;
+    int epsg = 0;  // 0: the scene's georeference CRS
+};
+
+// A <landscape> element: terrain from DGM tiles, with ATKIS layers draped on it and trees in
+// its forests (docs/terrain.md). Needs the scene's <georeference>, whose origin is the local
+// frame's.
+struct LandscapeDesc {
+    FileLoc loc;
+    std::vector<DataFileDesc> dgm;     // tiles of one grid, mosaicked
+    std::vector<DataFileDesc> layers;  // ATKIS: EDBS, NAS, Shapefile, GeoPackage, GeoJSON …
+    bool fillNoData = true;            // nodata="fill" (a warning) or "cut" (holes stay open)
+    float simplify = 0;                // the largest height error of a simplified mesh; 0: full resolution
+    bool trees = true;
+    uint32_t treeBudget = 500000;      // more trees than this is an error
+    uint32_t seed = 0;                 // with each object's id, every random choice (trees)
+    uint32_t objectId = 0;
+};
+
 struct SceneDescription {
     std::string source;  // file name, or a name for built-in text
     Camera camera;
@@ -153,6 +177,7 @@ struct SceneDescription {
     std::vector<InstanceDesc> instances;
     std::vector<BuildingGroupDesc> buildingGroups;
     std::vector<CityDesc> cities;
+    std::optional<LandscapeDesc> landscape;
 };
 
 // Parse a scene file; throws InputError with file:line:column on any problem.

@@ -66,6 +66,8 @@ class SceneFileReader {
             readBuildings(e);
         } else if (n == "city") {
             readCity(e);
+        } else if (n == "landscape") {
+            readLandscape(e);
         } else if (isGeometry(n)) {
             scene_.geometry.push_back(readGeometry(e, true));
         } else {
@@ -145,16 +147,8 @@ class SceneFileReader {
     void readGeoreference(const XmlElement &e) {
         if (scene_.georeference) e.fail("the scene has a georeference already");
         Georeference g;
+        g.epsg = epsgAttribute(e, "crs");
         std::string crs = e.string("crs");
-        bool epsgForm = crs.rfind("EPSG:", 0) == 0 && crs.size() >= 6 &&
-                        crs.find_first_not_of("0123456789", 5) == std::string::npos;
-        if (!epsgForm) {
-            e.failAt("crs", fmt::format("crs '{}' is not of the form EPSG:<code>", crs));
-        }
-        auto [end, parseError] = std::from_chars(crs.data() + 5, crs.data() + crs.size(), g.epsg);
-        if (parseError != std::errc() || end != crs.data() + crs.size()) {
-            e.failAt("crs", fmt::format("crs '{}': not a supported EPSG code", crs));
-        }
         std::vector<double> origin = e.doubles("origin");
         if (origin.size() != 2) e.failAt("origin", "origin takes two numbers, easting and northing");
         g.originEasting = origin[0];
@@ -173,6 +167,20 @@ class SceneFileReader {
         }
         e.checkLeaf();
         scene_.georeference = g;
+    }
+
+    // A crs attribute of the form EPSG:<code>; whether the code is supported is checked where
+    // it is used.
+    static int epsgAttribute(const XmlElement &e, const char *attribute) {
+        std::string crs = e.string(attribute);
+        int epsg = 0;
+        bool epsgForm = crs.rfind("EPSG:", 0) == 0 && crs.size() >= 6 &&
+                        crs.find_first_not_of("0123456789", 5) == std::string::npos;
+        if (!epsgForm) e.failAt(attribute, fmt::format("crs '{}' is not of the form EPSG:<code>", crs));
+        auto [end, parseError] = std::from_chars(crs.data() + 5, crs.data() + crs.size(), epsg);
+        if (parseError != std::errc() || end != crs.data() + crs.size())
+            e.failAt(attribute, fmt::format("crs '{}': not a supported EPSG code", crs));
+        return epsg;
     }
 
     void readEnvironment(const XmlElement &e) {
@@ -312,6 +320,34 @@ class SceneFileReader {
         scene_.cities.push_back(std::move(city));
     }
 
+    void readLandscape(const XmlElement &e) {
+        if (scene_.landscape) e.fail("the scene has a <landscape> already; give several <dgm> tiles inside one");
+        LandscapeDesc land;
+        land.loc = e.loc();
+        std::string nodata = e.string("nodata", "fill");
+        if (nodata != "fill" && nodata != "cut")
+            e.failAt("nodata", fmt::format("nodata is 'fill' or 'cut', not '{}'", nodata));
+        land.fillNoData = nodata == "fill";
+        land.simplify = e.number("simplify", 0, 0, 1000);
+        land.trees = e.boolean("trees", true);
+        land.treeBudget = e.unsignedInteger("tree_budget", land.treeBudget);
+        land.seed = e.unsignedInteger("seed", 0);
+        readObjectId(e, land.loc);
+        e.checkAllRead();
+        for (const XmlElement &child : e.children()) {
+            if (child.name() != "dgm" && child.name() != "atkis")
+                child.fail(fmt::format("<{}> cannot stand inside <landscape>; expected <dgm> or <atkis>", child.name()));
+            DataFileDesc data;
+            data.loc = child.attributeLoc("file");
+            data.file = pathAttribute(child, "file");
+            if (child.has("crs")) data.epsg = epsgAttribute(child, "crs");
+            child.checkLeaf();
+            (child.name() == "dgm" ? land.dgm : land.layers).push_back(std::move(data));
+        }
+        if (land.dgm.empty()) e.fail("a <landscape> needs at least one <dgm file=\"...\"/>");
+        scene_.landscape = std::move(land);
+    }
+
     void readBuildings(const XmlElement &e) {
         BuildingGroupDesc group;
         group.loc = e.loc();
@@ -352,7 +388,7 @@ class SceneFileReader {
                                                b.footprint.size() - 1, edge));
             b.streetEdges.push_back(uint32_t(edge));
         }
-        b.base = e.number("base", 0);
+        if (e.has("base")) b.base = e.number("base", 0);
         b.settings = readSettingsChild(e);
         return b;
     }
@@ -487,6 +523,7 @@ class SceneFileReader {
             for (FacadeDesc &f : group.facades) byPlace[{f.loc.line, f.loc.column}] = &f.objectId;
         }
         for (CityDesc &c : scene_.cities) byPlace[{c.loc.line, c.loc.column}] = &c.objectId;
+        if (scene_.landscape) byPlace[{scene_.landscape->loc.line, scene_.landscape->loc.column}] = &scene_.landscape->objectId;
         uint32_t next = 1;
         for (auto &[place, id] : byPlace) {
             auto given = idsByPlace_.find(place);

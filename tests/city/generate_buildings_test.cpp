@@ -7,6 +7,7 @@
 
 #include <unistd.h>
 
+#include "city/generate_buildings.h"
 #include "scene/build_scene.h"
 
 namespace veduta {
@@ -112,6 +113,56 @@ TEST(GenerateBuildings, ABadRuleFileIsAnErrorInThatFile) {
     EXPECT_NE(error.find(file.string() + ":3:"), std::string::npos) << error;
     EXPECT_NE(error.find("unknown symbol 'Nothing'"), std::string::npos) << error;
     std::filesystem::remove(file);
+}
+
+}  // namespace
+}  // namespace veduta
+
+namespace veduta {
+namespace {
+
+// A ground that slopes along x, with the footprint's corner (0, 0) lowest: the building stands
+// on the height the ground function gives, and a plinth reaches below it.
+TEST(GenerateBuildings, ABuildingWithoutBaseStandsOnTheGroundOverAPlinth) {
+    SceneDescription d = readSceneText(scene("<building footprint=\"0 0 14 0 14 12 0 12\" street=\"0\"/>\n"
+                                             "<building base=\"3\" footprint=\"20 0 34 0 34 12 20 12\" street=\"0\"/>\n"),
+                                       "test.xml", VEDUTA_TEST_DATA);
+    std::vector<Vec2f> asked;
+    GroundHeight ground = [&](const std::vector<Vec2f> &footprint) {
+        asked = footprint;
+        return 42.5f;
+    };
+    RenderSceneBuilder builder;
+    builder.addMaterial(Material::lambertian("default", Vec3f(0.8f)));
+    std::vector<std::string> warnings;
+    generateBuildings(d.buildingGroups[0], ground, builder, warnings);
+    RenderScene s = std::move(builder).build();
+    EXPECT_EQ(asked.size(), 4u);  // only the building without a base of its own asked
+    MaterialId plinth = kNoMaterial;
+    for (MaterialId m = 0; m < s.materials.size(); ++m)
+        if (s.materials[m].name == "plinth") plinth = m;
+    ASSERT_NE(plinth, kNoMaterial);
+    float lowestWall = 1e9f, lowestPlinth = 1e9f, highestPlinth = -1e9f, lowestOther = 1e9f;
+    for (const BakedMesh &baked : s.meshes) {
+        const Mesh &m = baked.mesh;
+        for (size_t t = 0; t < m.triangleCount(); ++t) {
+            for (int k = 0; k < 3; ++k) {
+                const Vec3f &p = m.positions[m.indices[3 * t + k]];
+                if (m.triangleMaterials[t] == plinth) {
+                    lowestPlinth = std::min(lowestPlinth, p.z);
+                    highestPlinth = std::max(highestPlinth, p.z);
+                } else if (p.x < 17) {
+                    lowestWall = std::min(lowestWall, p.z);
+                } else {
+                    lowestOther = std::min(lowestOther, p.z);
+                }
+            }
+        }
+    }
+    EXPECT_FLOAT_EQ(lowestWall, 42.5f);
+    EXPECT_FLOAT_EQ(highestPlinth, 42.5f);
+    EXPECT_FLOAT_EQ(lowestPlinth, 42.5f - kPlinthDepth);
+    EXPECT_FLOAT_EQ(lowestOther, 3.0f);  // its own base, and no plinth
 }
 
 }  // namespace
