@@ -51,6 +51,18 @@ void addTree(TreeSet &set, Vec2f position, const TreeStand &stand, uint32_t seed
 
 bool finite(Vec2f p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 
+// Local coordinates (metres from the scene origin) lie well within this; beyond it the grid
+// indices and tree counts would overflow, and float resolves only decimetres anyway.
+constexpr float kMaxLocal = 1e6f;
+
+void checkLocal(const std::vector<Vec2f> &points) {
+    for (Vec2f p : points) {
+        if (std::abs(p.x) > kMaxLocal || std::abs(p.y) > kMaxLocal) {
+            throw std::invalid_argument("tree placement: a point lies more than 1000 km from the scene origin");
+        }
+    }
+}
+
 void checkSpacing(const TreeStand &stand) {
     if (!(stand.spacing > 0) || !std::isfinite(stand.spacing)) {
         throw std::invalid_argument("tree placement: the spacing must be a positive number of metres");
@@ -192,6 +204,7 @@ void plantArea(TreeSet &set, const std::vector<Vec2f> &ring, const TreeStand &st
                uint32_t objectId) {
     checkSpacing(stand);
     if (ring.size() < 3 || !std::all_of(ring.begin(), ring.end(), finite)) return;
+    checkLocal(ring);
     AreaSampler(ring, stand.spacing).run(set, stand, seed, objectId);
 }
 
@@ -199,6 +212,7 @@ void plantLine(TreeSet &set, const std::vector<Vec2f> &line, const TreeStand &st
                uint32_t objectId) {
     checkSpacing(stand);
     if (line.empty() || !std::all_of(line.begin(), line.end(), finite)) return;
+    checkLocal(line);
     std::vector<float> along{0};  // arc length at each point
     for (size_t i = 1; i < line.size(); ++i) {
         Vec2f d = line[i] - line[i - 1];

@@ -50,11 +50,13 @@ struct TreeSet {
 // Poisson-disk samples inside the closed `ring` (concave allowed, either orientation, first
 // point not repeated), at least stand.spacing apart. Rings with fewer than three points or
 // non-finite coordinates plant nothing. Throws std::invalid_argument when stand.spacing is not
-// positive.
+// positive or a point lies more than 1000 km from the origin (not local coordinates); callers
+// turn that into an InputError naming the object.
 void plantArea(TreeSet &set, const std::vector<Vec2f> &ring, const TreeStand &stand, uint32_t seed,
                uint32_t objectId);
-// Trees along the polyline every stand.spacing metres, jittered along it, the first half a
-// spacing from its start. A line shorter than one spacing gets one tree in its middle.
+// Trees along the polyline in equal steps of about stand.spacing metres, jittered along it,
+// the first half a step from its start. A line shorter than one spacing gets one tree near its
+// middle. The same errors as plantArea.
 void plantLine(TreeSet &set, const std::vector<Vec2f> &line, const TreeStand &stand, uint32_t seed,
                uint32_t objectId);
 // One tree at each point.

@@ -174,6 +174,9 @@ TEST(TreePlacement, DegenerateInputPlantsNothing) {
     EXPECT_THROW(plantArea(set, square(0, 0, 10), none, 1, 1), std::invalid_argument);
     none.spacing = std::nanf("");
     EXPECT_THROW(plantLine(set, {{0, 0}, {10, 0}}, none, 1, 1), std::invalid_argument);
+    EXPECT_THROW(plantArea(set, {{0, 0}, {1e30f, 0}, {0, 10}}, forest(), 1, 1), std::invalid_argument);
+    EXPECT_THROW(plantLine(set, {{0, 0}, {0, -2e6f}}, forest(), 1, 1), std::invalid_argument);
+    EXPECT_TRUE(set.trees.empty());
 }
 
 float distanceToSegment(Vec2f p, Vec2f a, Vec2f b) {
