@@ -64,21 +64,17 @@ std::optional<std::string_view> attribute(const AtkisObject &object, const std::
     return it->second;
 }
 
-// A whole number written with optional blanks round it ("0065", " 65 "), or nothing.
-std::optional<long> wholeNumber(std::string_view text) {
+std::string_view withoutBlanks(std::string_view text) {
     while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
     while (!text.empty() && text.back() == ' ') text.remove_suffix(1);
-    long value = 0;
-    auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (text.empty() || error != std::errc() || end != text.data() + text.size()) return std::nullopt;
-    return value;
+    return text;
 }
 
-// A decimal number in metres as NAS and Shapefiles give them ("6.5").
-std::optional<double> metres(std::string_view text) {
-    while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
-    while (!text.empty() && text.back() == ' ') text.remove_suffix(1);
-    double value = 0;
+// A number written whole, with optional blanks round it ("0065", " 6.5 "), or nothing.
+template <typename Number>
+std::optional<Number> number(std::string_view text) {
+    text = withoutBlanks(text);
+    Number value = 0;
     auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (text.empty() || error != std::errc() || end != text.data() + text.size()) return std::nullopt;
     return value;
@@ -88,9 +84,9 @@ std::optional<double> metres(std::string_view text) {
 // breiteDerFahrbahn, breiteDesVerkehrsweges), when given and positive.
 std::optional<double> widthAttribute(const AtkisObject &object, const std::string &decimetres, const std::string &inMetres) {
     if (auto text = attribute(object, decimetres))
-        if (auto value = wholeNumber(*text); value && *value > 0) return double(*value) / 10.0;
+        if (auto value = number<long>(*text); value && *value > 0) return double(*value) / 10.0;
     if (auto text = attribute(object, inMetres))
-        if (auto value = metres(*text); value && *value > 0) return *value;
+        if (auto value = number<double>(*text); value && *value > 0) return *value;
     return std::nullopt;
 }
 
@@ -100,7 +96,7 @@ int trackCount(const AtkisObject &object) {
     for (const std::string &name : {std::string("GLS"), std::string("ANZAHLDERSTRECKENGLEISE")}) {
         auto text = attribute(object, name);
         if (!text) continue;
-        std::optional<long> value = wholeNumber(*text);
+        std::optional<long> value = number<long>(*text);
         if (!value || *value <= 0) continue;
         long tracks = *value >= 1000 ? *value / 1000 : *value;
         return int(std::clamp(tracks, 1L, 8L));
@@ -169,12 +165,12 @@ TreeKind treeKind(const AtkisObject &object) {
     // ATKIS-OK VEG: 1000 Laubholz, 2000 Nadelholz, 3000 Laub- und Nadelholz. AAA
     // vegetationsmerkmal (NAS): 1100 Laubholz, 1200 Nadelholz, 1300 and its 13x0 variants mixed.
     if (auto text = attribute(object, "VEG")) {
-        std::optional<long> value = wholeNumber(*text);
+        std::optional<long> value = number<long>(*text);
         if (value == 1000) return TreeKind::Broadleaf;
         if (value == 2000) return TreeKind::Conifer;
     }
     if (auto text = attribute(object, "VEGETATIONSMERKMAL")) {
-        std::optional<long> value = wholeNumber(*text);
+        std::optional<long> value = number<long>(*text);
         if (value == 1100) return TreeKind::Broadleaf;
         if (value == 1200) return TreeKind::Conifer;
     }
