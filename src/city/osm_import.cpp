@@ -17,6 +17,7 @@
 
 #include "city/footprint.h"
 #include "city/osm_config.h"
+#include "io/gdal_messages.h"
 
 namespace veduta {
 
@@ -139,23 +140,6 @@ struct OsmArea {
 struct OsmContent {
     std::vector<OsmLine> highways;
     std::vector<OsmArea> residentialAreas, buildings;
-};
-
-// GDAL's messages on this thread while it lives, instead of on standard error.
-class GdalMessages {
-  public:
-    GdalMessages() { CPLPushErrorHandlerEx(&collect, this); }
-    ~GdalMessages() { CPLPopErrorHandler(); }
-    GdalMessages(const GdalMessages &) = delete;
-    GdalMessages &operator=(const GdalMessages &) = delete;
-
-    std::vector<std::string> failures, warnings;
-
-  private:
-    static void CPL_STDCALL collect(CPLErr level, CPLErrorNum, const char *message) {
-        auto *self = static_cast<GdalMessages *>(CPLGetErrorHandlerUserData());
-        (level >= CE_Failure ? self->failures : self->warnings).push_back(message);
-    }
 };
 
 // The compiled-in driver configuration as a GDAL in-memory file, made once.
