@@ -24,5 +24,6 @@ void addMergeCommand(CLI::App &app, int &exitCode);
 void addFacadeCommand(CLI::App &app, int &exitCode);
 void addBuildingCommand(CLI::App &app, int &exitCode);
 void addExportCommand(CLI::App &app, int &exitCode);
+void addCrsCommand(CLI::App &app, int &exitCode);
 
 }  // namespace veduta

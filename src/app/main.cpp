@@ -22,5 +22,6 @@ int main(int argc, char **argv) {
     veduta::addFacadeCommand(app, exitCode);
     veduta::addBuildingCommand(app, exitCode);
     veduta::addExportCommand(app, exitCode);
+    veduta::addCrsCommand(app, exitCode);
     return veduta::runApp(app, argc, argv, exitCode);
 }
