@@ -25,5 +25,6 @@ void addFacadeCommand(CLI::App &app, int &exitCode);
 void addBuildingCommand(CLI::App &app, int &exitCode);
 void addExportCommand(CLI::App &app, int &exitCode);
 void addAtkisCommand(CLI::App &app, int &exitCode);
+void addCrsCommand(CLI::App &app, int &exitCode);
 
 }  // namespace veduta

@@ -23,5 +23,6 @@ int main(int argc, char **argv) {
     veduta::addBuildingCommand(app, exitCode);
     veduta::addExportCommand(app, exitCode);
     veduta::addAtkisCommand(app, exitCode);
+    veduta::addCrsCommand(app, exitCode);
     return veduta::runApp(app, argc, argv, exitCode);
 }

@@ -5,6 +5,9 @@
 
 #include <string_view>
 
+#include "geo/crs.h"
+#include "geo/map_point.h"
+
 namespace veduta {
 
 // The scene origin (0, 0) sits at (originEasting, originNorthing) of the CRS `epsg`; scene
@@ -14,19 +17,16 @@ struct Georeference {
     double originEasting = 0, originNorthing = 0;
 };
 
-struct GeographicPoint {
-    double latitude = 0, longitude = 0;  // degrees, on the CRS's own datum
-};
+using ProjectedPoint = MapPoint;
 
-struct ProjectedPoint {
-    double easting = 0, northing = 0;  // metres
-};
-
-// The supported CRSs: EPSG 25832, 25833 (ETRS89 / UTM 32N, 33N), 32632, 32633 (WGS 84 / UTM
-// 32N, 33N), 31466–31469 (DHDN / 3-degree Gauss-Krüger zones 2–5). Every function here
-// throws std::invalid_argument for any other code; the scene reader calls crsName to check.
+// The projected CRSs of geo/crs.h: EPSG 25832, 25833 (ETRS89 / UTM 32N, 33N), 32632, 32633
+// (WGS 84 / UTM 32N, 33N), 31466–31469 (DHDN / 3-degree Gauss-Krüger zones 2–5). Every
+// function here throws std::invalid_argument for any other code, a geographic one included;
+// the scene reader calls crsName to check.
 std::string_view crsName(int epsg);
 
+// Latitude and longitude on the CRS's own datum (DHDN for Gauss-Krüger): a datum shift would
+// move a point some 100 m, which turns the sun by far less than 0.001°.
 GeographicPoint toGeographic(const Georeference &georef, double easting, double northing);
 ProjectedPoint toProjected(const Georeference &georef, const GeographicPoint &point);
 
