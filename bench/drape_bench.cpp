@@ -81,3 +81,5 @@ BENCHMARK(surfaceAndRibbons)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace veduta
+
+BENCHMARK_MAIN();

@@ -3,6 +3,7 @@
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Constrained_triangulation_plus_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <tbb/parallel_for.h>
@@ -12,6 +13,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <set>
 #include <unordered_map>
 
@@ -25,22 +27,28 @@ namespace veduta {
 
 namespace {
 
-// Exact constructions: the points where outlines cross each other or a cell's diagonal are
-// computed exactly, so every piece lies exactly on one side of the diagonal.
-using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
-using Point = Kernel::Point_2;
-
+// Two triangulations of a touched cell. Usually no two constraints cross inside a cell but
+// the outlines and the diagonal, whose crossings are cut in beforehand (cutAtDiagonal), so a
+// triangulation over doubles with exact predicates needs no constructions at all and is
+// exact. Where outlines cross each other inside a cell (overlapping areas) it throws, and the
+// cell is triangulated again with exact constructions (CGAL's Epeck), the diagonal left
+// whole and every crossing computed exactly.
 struct NodeInfo {
     int64_t node = -1;  // the grid node a cell corner is, or −1
 };
+template <typename K, typename Tag>
+using CellCdt = CGAL::Constrained_Delaunay_triangulation_2<
+    K,
+    CGAL::Triangulation_data_structure_2<CGAL::Triangulation_vertex_base_with_info_2<NodeInfo, K>,
+                                         CGAL::Constrained_triangulation_face_base_2<K>>,
+    Tag>;
+using Inexact = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Exact = CGAL::Exact_predicates_exact_constructions_kernel;
+using FastCdt = CellCdt<Inexact, CGAL::No_constraint_intersection_requiring_constructions_tag>;
 // The _plus_ variant keeps the input constraints, so crossing outlines are intersected once
 // from their input segments, not again from pieces already cut (CGAL's advice for exact
 // number types).
-using Cdt = CGAL::Constrained_triangulation_plus_2<CGAL::Constrained_Delaunay_triangulation_2<
-    Kernel,
-    CGAL::Triangulation_data_structure_2<CGAL::Triangulation_vertex_base_with_info_2<NodeInfo, Kernel>,
-                                         CGAL::Constrained_triangulation_face_base_2<Kernel>>,
-    CGAL::Exact_intersections_tag>>;
+using ExactCdt = CGAL::Constrained_triangulation_plus_2<CellCdt<Exact, CGAL::Exact_intersections_tag>>;
 
 struct OutlineEdge {
     Vec2d a, b;
@@ -125,7 +133,7 @@ void forEachEdge(const std::vector<Vec2d> &ring, F &&f) {
 
 // The outline edges by grid row, for the inside tests: every edge that is not horizontal lies
 // within one row's band once the outlines are cut. Rows hold edges beyond the grid's columns
-// too, since a ray along the row crosses them.
+// too, since a ray along the row crosses them, and are sorted by each edge's east end.
 std::vector<std::vector<OutlineEdge>> edgesByRow(const std::vector<std::vector<Vec2d>> &rings, const DrapeGrid &g) {
     std::vector<std::vector<OutlineEdge>> rows(size_t(g.cellRows));
     for (size_t i = 0; i < rings.size(); ++i) {
@@ -133,6 +141,11 @@ std::vector<std::vector<OutlineEdge>> edgesByRow(const std::vector<std::vector<V
             if (a.y == b.y) return;
             GridLines::CellSpan span = g.lines.rowsHolding(std::min(a.y, b.y), std::max(a.y, b.y));
             if (span.count == 1) rows[size_t(span.first)].push_back({a, b, uint32_t(i)});
+        });
+    }
+    for (std::vector<OutlineEdge> &row : rows) {  // by their east end, for areaAt
+        std::stable_sort(row.begin(), row.end(), [](const OutlineEdge &e, const OutlineEdge &f) {
+            return std::max(e.a.x, e.b.x) < std::max(f.a.x, f.b.x);
         });
     }
     return rows;
@@ -169,18 +182,18 @@ class AreaRanking {
     bool better(uint32_t a, uint32_t b) const {
         return b == kNoArea || priorities_[a] > priorities_[b] || (priorities_[a] == priorities_[b] && a < b);
     }
-    // `crossed` lists an area once per crossing; it is sorted in place.
-    uint32_t winner(std::vector<uint32_t> &crossed) const {
-        std::sort(crossed.begin(), crossed.end());
+    // `crossed` lists an area once per crossing; `parity` is all zero, one per area, and is
+    // left so.
+    uint32_t winner(const std::vector<uint32_t> &crossed, std::vector<uint8_t> &parity) const {
+        for (uint32_t area : crossed) parity[area] ^= 1;
         uint32_t best = kNoArea;
-        for (size_t i = 0; i < crossed.size();) {
-            size_t j = i;
-            while (j < crossed.size() && crossed[j] == crossed[i]) ++j;
-            if ((j - i) % 2 == 1 && better(crossed[i], best)) best = crossed[i];
-            i = j;
+        for (uint32_t area : crossed) {
+            if (parity[area] && better(area, best)) best = area;
         }
+        for (uint32_t area : crossed) parity[area] = 0;
         return best;
     }
+    size_t size() const { return priorities_.size(); }
 
   private:
     std::vector<int> priorities_;
@@ -190,12 +203,18 @@ class AreaRanking {
 // +x and the even–odd rule, each edge counting half-open in y. Cheap bounds decide most
 // edges; the rest take CGAL's exact predicates, so a thin piece along an outline is judged
 // right.
-uint32_t areaAt(const Point &p, const std::vector<OutlineEdge> &row, const AreaRanking &ranking,
-                std::vector<uint32_t> &crossed) {
+template <typename K>
+uint32_t areaAt(const typename K::Point_2 &p, const std::vector<OutlineEdge> &row, const AreaRanking &ranking,
+                std::vector<uint32_t> &crossed, std::vector<uint8_t> &parity) {
+    using Point = typename K::Point_2;
     constexpr double kMargin = 1e-6;  // metres; far above the centroid's rounding
     double px = CGAL::to_double(p.x()), py = CGAL::to_double(p.y());
     crossed.clear();
-    for (const OutlineEdge &e : row) {
+    // Edges ending west of p cannot cross the ray.
+    auto first = std::lower_bound(row.begin(), row.end(), px - kMargin,
+                                  [](const OutlineEdge &e, double x) { return std::max(e.a.x, e.b.x) < x; });
+    for (auto it = first; it != row.end(); ++it) {
+        const OutlineEdge &e = *it;
         double yLo = std::min(e.a.y, e.b.y), yHi = std::max(e.a.y, e.b.y);
         if (yHi < py - kMargin || yLo > py + kMargin || std::max(e.a.x, e.b.x) < px - kMargin) continue;
         if (std::min(e.a.x, e.b.x) > px + kMargin && yLo < py - kMargin && yHi > py + kMargin) {
@@ -209,45 +228,130 @@ uint32_t areaAt(const Point &p, const std::vector<OutlineEdge> &row, const AreaR
         CGAL::Orientation side = CGAL::orientation(a, b, p);
         if (side == (aBelow ? CGAL::LEFT_TURN : CGAL::RIGHT_TURN)) crossed.push_back(e.area);
     }
-    return ranking.winner(crossed);
+    return ranking.winner(crossed, parity);
 }
 
-// The pieces of a cell that outlines touch: a constrained Delaunay triangulation of the cell's
-// corners, its diagonal and the outline items, each face given the area around its centroid.
-std::vector<Piece> triangulateCell(const DrapeGrid &g, int c, int r, const CellItem *items, size_t count,
-                                   const std::vector<OutlineEdge> &row, const AreaRanking &ranking) {
-    Cdt cdt;
-    const std::vector<double> &xs = g.lines.xs, &ys = g.lines.ys;
-    std::array<Cdt::Vertex_handle, 4> corners;
-    for (int k = 0; k < 4; ++k) {
-        int nc = c + (k & 1), nr = r + (k >> 1);
-        corners[size_t(k)] = cdt.insert(Point(xs[size_t(nc)], ys[size_t(nr)]));
-        corners[size_t(k)]->info().node = g.nodeIndex(nc, nr);
-    }
-    cdt.insert_constraint(corners[0], corners[3]);
+using Segment = std::pair<Vec2d, Vec2d>;
+
+// The cell's outline items with every crossing of the SW–NE diagonal cut in (the point
+// rounded to double, so within a rounding of the diagonal), and the diagonal in pieces
+// through those points and through outline points lying on it.
+struct CutCell {
+    std::vector<Vec2d> points;
+    std::vector<Segment> segments;
+    std::vector<Vec2d> diagonal;  // from the SW corner to the NE corner
+};
+
+// nullopt where a cut point rounds onto the cell's side (a crossing within a rounding of a
+// corner): the neighbour would not have it, so the exact triangulation takes the cell.
+std::optional<CutCell> cutAtDiagonal(Vec2d sw, Vec2d ne, const CellItem *items, size_t count) {
+    using P = Inexact::Point_2;
+    P p0(sw.x, sw.y), p1(ne.x, ne.y);
+    auto side = [&](Vec2d p) { return CGAL::orientation(p0, p1, P(p.x, p.y)); };
+    auto determinant = [&](Vec2d p) { return (ne.x - sw.x) * (p.y - sw.y) - (ne.y - sw.y) * (p.x - sw.x); };
+    CutCell cell;
+    std::vector<Vec2d> onDiagonal;
     for (size_t i = 0; i < count; ++i) {
-        const CellItem &item = items[i];
-        if (item.a == item.b) {
-            cdt.insert(Point(item.a.x, item.a.y));
-        } else {
-            cdt.insert_constraint(Point(item.a.x, item.a.y), Point(item.b.x, item.b.y));
+        Vec2d a = items[i].a, b = items[i].b;
+        if (side(a) == CGAL::COLLINEAR) onDiagonal.push_back(a);
+        if (a == b) {
+            cell.points.push_back(a);
+            continue;
         }
+        if (side(b) == CGAL::COLLINEAR) onDiagonal.push_back(b);
+        CGAL::Orientation sa = side(a), sb = side(b);
+        if (sa == CGAL::COLLINEAR || sb == CGAL::COLLINEAR || sa == sb) {
+            cell.segments.push_back({a, b});
+            continue;
+        }
+        double da = determinant(a), db = determinant(b), t = da / (da - db);
+        Vec2d cut{std::clamp(a.x + t * (b.x - a.x), std::min(a.x, b.x), std::max(a.x, b.x)),
+                  std::clamp(a.y + t * (b.y - a.y), std::min(a.y, b.y), std::max(a.y, b.y))};
+        bool onSide = cut.x == sw.x || cut.x == ne.x || cut.y == sw.y || cut.y == ne.y;
+        if (onSide && !(cut == sw) && !(cut == ne)) return std::nullopt;
+        onDiagonal.push_back(cut);
+        if (!(cut == a)) cell.segments.push_back({a, cut});
+        if (!(cut == b)) cell.segments.push_back({cut, b});
     }
-    std::vector<Piece> pieces;
+    std::sort(onDiagonal.begin(), onDiagonal.end(), [](Vec2d a, Vec2d b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    onDiagonal.erase(std::unique(onDiagonal.begin(), onDiagonal.end()), onDiagonal.end());
+    cell.diagonal.push_back(sw);
+    for (Vec2d p : onDiagonal) {
+        if (!(p == sw) && !(p == ne)) cell.diagonal.push_back(p);
+    }
+    cell.diagonal.push_back(ne);
+    return cell;
+}
+
+// The faces of a finished triangulation as pieces, each given the area around its centroid
+// and its corners their heights.
+template <typename Cdt>
+void collectPieces(const Cdt &cdt, const DrapeGrid &g, int c, int r, const std::vector<OutlineEdge> &row,
+                   const AreaRanking &ranking, std::vector<Piece> &pieces) {
+    using K = typename Cdt::Geom_traits;
     std::vector<uint32_t> crossed;
+    std::vector<uint8_t> parity(ranking.size(), 0);
     for (auto face = cdt.finite_faces_begin(); face != cdt.finite_faces_end(); ++face) {
         Piece piece;
         for (int k = 0; k < 3; ++k) {
-            Cdt::Vertex_handle v = face->vertex(k);
+            auto v = face->vertex(k);
             PieceVertex &out = piece.corners[size_t(k)];
             out.node = v->info().node;
             out.at = {CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y())};
             out.height = out.node >= 0 ? g.heights.heights[size_t(out.node)] : g.heightIn(c, r, out.at);
         }
-        Point centroid = CGAL::centroid(face->vertex(0)->point(), face->vertex(1)->point(), face->vertex(2)->point());
-        piece.area = areaAt(centroid, row, ranking, crossed);
+        typename K::Point_2 centroid =
+            CGAL::centroid(face->vertex(0)->point(), face->vertex(1)->point(), face->vertex(2)->point());
+        piece.area = areaAt<K>(centroid, row, ranking, crossed, parity);
         pieces.push_back(piece);
     }
+}
+
+template <typename Cdt>
+void insertCorners(Cdt &cdt, const DrapeGrid &g, int c, int r) {
+    for (int k = 0; k < 4; ++k) {
+        int nc = c + (k & 1), nr = r + (k >> 1);
+        auto v = cdt.insert(typename Cdt::Point(g.lines.xs[size_t(nc)], g.lines.ys[size_t(nr)]));
+        v->info().node = g.nodeIndex(nc, nr);
+    }
+}
+
+// The pieces of a cell that outlines touch: a constrained Delaunay triangulation of the cell's
+// corners, its diagonal and the outline items.
+std::vector<Piece> triangulateCell(const DrapeGrid &g, int c, int r, const CellItem *items, size_t count,
+                                   const std::vector<OutlineEdge> &row, const AreaRanking &ranking) {
+    Vec2d sw{g.lines.xs[size_t(c)], g.lines.ys[size_t(r)]}, ne{g.lines.xs[size_t(c) + 1], g.lines.ys[size_t(r) + 1]};
+    std::vector<Piece> pieces;
+    try {
+        using P = FastCdt::Point;
+        std::optional<CutCell> cutCell = cutAtDiagonal(sw, ne, items, count);
+        if (!cutCell) throw FastCdt::Intersection_of_constraints_exception();
+        const CutCell &cut = *cutCell;
+        FastCdt cdt;
+        insertCorners(cdt, g, c, r);
+        for (Vec2d p : cut.points) cdt.insert(P(p.x, p.y));
+        for (size_t i = 1; i < cut.diagonal.size(); ++i) {
+            cdt.insert_constraint(P(cut.diagonal[i - 1].x, cut.diagonal[i - 1].y), P(cut.diagonal[i].x, cut.diagonal[i].y));
+        }
+        for (const Segment &e : cut.segments) cdt.insert_constraint(P(e.first.x, e.first.y), P(e.second.x, e.second.y));
+        collectPieces(cdt, g, c, r, row, ranking, pieces);
+        return pieces;
+    } catch (const FastCdt::Intersection_of_constraints_exception &) {
+        pieces.clear();
+    }
+    using P = ExactCdt::Point;
+    ExactCdt cdt;
+    insertCorners(cdt, g, c, r);
+    cdt.insert_constraint(P(sw.x, sw.y), P(ne.x, ne.y));
+    for (size_t i = 0; i < count; ++i) {
+        const CellItem &item = items[i];
+        if (item.a == item.b) {
+            cdt.insert(P(item.a.x, item.a.y));
+        } else {
+            cdt.insert_constraint(P(item.a.x, item.a.y), P(item.b.x, item.b.y));
+        }
+    }
+    collectPieces(cdt, g, c, r, row, ranking, pieces);
     return pieces;
 }
 
@@ -292,7 +396,9 @@ struct PointHash {
 class TerrainBuilder {
   public:
     TerrainBuilder(const DrapeGrid &g, DrapedTerrain &out)
-        : g_(g), out_(out), nodeVertices_(g.heights.heights.size(), kNoVertex) {}
+        : g_(g), out_(out), nodeVertices_(g.heights.heights.size(), kNoVertex) {
+        plan_.reserve(out.mesh.positions.capacity());
+    }
 
     void add(const Piece &piece) {
         std::array<uint32_t, 3> v;
@@ -432,6 +538,11 @@ DrapedTerrain drapeAreas(const HeightGrid &grid, const LocalFrame &frame, const 
         touched[k] = triangulateCell(g, c, r, &items[runs[k]], runs[k + 1] - runs[k], rowEdges[size_t(r)], ranking);
     });
 
+    size_t pieceCount = 0;
+    for (const std::vector<Piece> &pieces : touched) pieceCount += pieces.size();
+    terrain.mesh.positions.reserve(grid.heights.size() + items.size());
+    terrain.mesh.indices.reserve(3 * (2 * size_t(g.cellColumns) * size_t(g.cellRows) + pieceCount));
+    terrain.triangleArea.reserve(terrain.mesh.indices.capacity() / 3);
     TerrainBuilder builder(g, terrain);
     size_t nextTouched = 0;
     for (int r = 0; r < g.cellRows; ++r) {
