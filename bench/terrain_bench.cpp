@@ -6,7 +6,7 @@
 // Both DGMs are generated: smooth hills with value noise on top, a pure function of the node.
 //
 //   build/release/bench/bench_terrain [--benchmark_repetitions=5]
-//   build/release/bench/bench_terrain --benchmark_filter='BM_RenderReady34x20km/0$'   (its peak memory alone)
+//   build/release/bench/bench_terrain --benchmark_filter='BM_RenderReady34x20km/0/'   (its peak memory alone)
 #include <sys/resource.h>
 #include <unistd.h>
 

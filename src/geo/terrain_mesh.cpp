@@ -44,6 +44,7 @@ void writeVertex(const HeightGrid &grid, const LocalFrame &frame, float uvTile, 
 }
 
 void resizeVertices(Mesh &mesh, size_t vertices, size_t triangles, MaterialId material) {
+    mesh.positions.reserve(vertices + 1);  // the padding that lets Embree share the vertices (render/bvh.cpp)
     mesh.positions.resize(vertices);
     mesh.normals.resize(vertices);
     mesh.uvs.resize(vertices);
