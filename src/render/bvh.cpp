@@ -49,18 +49,31 @@ void *newBuffer(RTCGeometry geometry, RTCBufferType type, RTCFormat format, size
     return buffer;
 }
 
+// The mesh's own arrays are handed to Embree, not copied (a 13.6-million-triangle terrain
+// would otherwise hold 250 MB twice): the RenderScene outlives the Bvh (bvh.h). Embree reads
+// vertices with 16-byte loads, so a float3 buffer needs 4 readable bytes after its last
+// vertex; spare capacity in `positions` gives them, else the vertices are copied.
 RTCGeometry makeTriangles(RTCDevice device, const Mesh &mesh) {
     RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto *vertices = static_cast<float *>(
-        newBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.vertexCount()));
-    for (size_t i = 0; i < mesh.vertexCount(); ++i) {
-        vertices[3 * i] = mesh.positions[i].x;
-        vertices[3 * i + 1] = mesh.positions[i].y;
-        vertices[3 * i + 2] = mesh.positions[i].z;
+    static_assert(sizeof(Vec3f) == 3 * sizeof(float));
+    if (mesh.positions.capacity() > mesh.positions.size()) {
+        rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, mesh.positions.data(), 0,
+                                   sizeof(Vec3f), mesh.vertexCount());
+    } else {
+        auto *vertices = static_cast<float *>(
+            newBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.vertexCount()));
+        for (size_t i = 0; i < mesh.vertexCount(); ++i) {
+            vertices[3 * i] = mesh.positions[i].x;
+            vertices[3 * i + 1] = mesh.positions[i].y;
+            vertices[3 * i + 2] = mesh.positions[i].z;
+        }
     }
-    auto *indices = static_cast<uint32_t *>(
-        newBuffer(geometry, RTC_BUFFER_TYPE_INDEX, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), mesh.triangleCount()));
-    std::copy(mesh.indices.begin(), mesh.indices.end(), indices);
+    if (mesh.indices.empty()) {
+        newBuffer(geometry, RTC_BUFFER_TYPE_INDEX, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), 0);
+    } else {
+        rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, mesh.indices.data(), 0,
+                                   3 * sizeof(uint32_t), mesh.triangleCount());
+    }
     rtcCommitGeometry(geometry);
     return geometry;
 }

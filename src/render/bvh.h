@@ -28,6 +28,8 @@ struct BvhStats {
 
 class Bvh {
   public:
+    // Embree reads the scene's vertex and index arrays in place: `scene` must outlive the Bvh
+    // and stay unchanged while it lives.
     explicit Bvh(const RenderScene &scene);
     ~Bvh();
     Bvh(const Bvh &) = delete;

@@ -1,0 +1,216 @@
+// Terrain from a DGM made render-ready: mesh, RenderScene and Embree BVH. The terrain issue
+// asks, on 2 cores, for a 1 km² DGM at 1 m (1001 × 1001 nodes) → mesh + BVH in ≤ 1 s, and for
+// a 34 × 20 km DGM at 10 m (3401 × 2001 nodes, read from a float32 GeoTIFF) → read + mesh +
+// BVH in ≤ 10 s with ≤ 3 GB peak memory. Each runs at full resolution (argument 0) and
+// simplified (the argument is maxError in centimetres); the phases are timed alone too.
+// Both DGMs are generated: smooth hills with value noise on top, a pure function of the node.
+//
+//   build/release/bench/bench_terrain [--benchmark_repetitions=5]
+//   build/release/bench/bench_terrain --benchmark_filter='BM_RenderReady34x20km/0/'   (its peak memory alone)
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+#include <fmt/format.h>
+#include <gdal_priv.h>
+#include <ogr_spatialref.h>
+
+#include "core/hash.h"
+#include "geo/dgm_file.h"
+#include "geo/terrain_mesh.h"
+#include "median_reporter.h"
+#include "render/bvh.h"
+#include "scene/render_scene.h"
+
+namespace veduta {
+namespace {
+
+constexpr uint32_t kSeed = 2024;
+
+// Value noise in −1…1 over a lattice of `cell` metres, smoothly interpolated.
+double valueNoise(double x, double y, double cell, uint32_t octave) {
+    double fx = x / cell, fy = y / cell;
+    double ix = std::floor(fx), iy = std::floor(fy);
+    double tx = fx - ix, ty = fy - iy;
+    tx = tx * tx * (3 - 2 * tx), ty = ty * ty * (3 - 2 * ty);
+    auto lattice = [&](double i, double j) {
+        return 2 * bitsToUnitFloat(hashValues({kSeed, octave, uint32_t(int64_t(i)), uint32_t(int64_t(j))})) - 1;
+    };
+    double south = lattice(ix, iy) + tx * (lattice(ix + 1, iy) - lattice(ix, iy));
+    double north = lattice(ix, iy + 1) + tx * (lattice(ix + 1, iy + 1) - lattice(ix, iy + 1));
+    return south + ty * (north - south);
+}
+
+float terrainHeight(double x, double y) {
+    return float(250 + 60 * std::sin(x / 900) * std::cos(y / 700) + 20 * std::sin((x + 2 * y) / 310) +
+                 4 * valueNoise(x, y, 40, 1) + 0.5 * valueNoise(x, y, 5, 2));
+}
+
+HeightGrid generatedDgm(int columns, int rows, double spacing) {
+    HeightGrid grid;
+    grid.west = 400000;
+    grid.south = 5600000;
+    grid.spacing = spacing;
+    grid.columns = columns;
+    grid.rows = rows;
+    grid.heights.resize(size_t(columns) * size_t(rows));
+    for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < columns; ++c) grid.node(c, r) = terrainHeight(c * spacing, r * spacing);
+    return grid;
+}
+
+void writeGeoTiff(const HeightGrid &grid, const std::filesystem::path &file) {
+    GDALAllRegister();
+    GDALDriver *driver = GetGDALDriverManager()->GetDriverByName("GTiff");
+    GDALDatasetUniquePtr out(driver->Create(file.c_str(), grid.columns, grid.rows, 1, GDT_Float32, nullptr));
+    double transform[6] = {grid.west - grid.spacing / 2, grid.spacing, 0, grid.north() + grid.spacing / 2, 0, -grid.spacing};
+    out->SetGeoTransform(transform);
+    OGRSpatialReference crs;
+    crs.importFromEPSG(25832);
+    out->SetSpatialRef(&crs);
+    std::vector<float> northFirst;
+    northFirst.reserve(grid.heights.size());
+    for (int r = grid.rows - 1; r >= 0; --r)
+        northFirst.insert(northFirst.end(), grid.heights.begin() + ptrdiff_t(size_t(r) * size_t(grid.columns)),
+                          grid.heights.begin() + ptrdiff_t(size_t(r + 1) * size_t(grid.columns)));
+    if (out->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, grid.columns, grid.rows, northFirst.data(), grid.columns,
+                                        grid.rows, GDT_Float32, 0, 0, nullptr) != CE_None)
+        throw std::runtime_error("cannot write " + file.string());
+}
+
+struct Fixture {
+    HeightGrid km = generatedDgm(1001, 1001, 1);
+    std::filesystem::path tif =
+        std::filesystem::temp_directory_path() / fmt::format("veduta_terrain_bench_{}.tif", getpid());
+    Fixture() { writeGeoTiff(generatedDgm(3401, 2001, 10), tif); }
+    ~Fixture() { std::filesystem::remove(tif); }
+};
+
+Fixture &fixture() {
+    static Fixture f;
+    return f;
+}
+
+LocalFrame centreOf(const HeightGrid &grid) {
+    return {{grid.west + (grid.columns - 1) * grid.spacing / 2, grid.south + (grid.rows - 1) * grid.spacing / 2}};
+}
+
+TerrainMeshOptions optionsFor(const benchmark::State &state) {
+    TerrainMeshOptions options;
+    options.maxError = double(state.range(0)) / 100;
+    return options;
+}
+
+RenderScene sceneOf(Mesh mesh) {
+    RenderSceneBuilder builder;
+    builder.addWorldMesh(std::move(mesh), 1);
+    return std::move(builder).build();
+}
+
+void countTriangles(benchmark::State &state, const Mesh &mesh) {
+    state.counters["triangles"] = double(mesh.triangleCount());
+}
+
+void BM_Mesh1km(benchmark::State &state) {
+    const HeightGrid &grid = fixture().km;
+    for (auto _ : state) {
+        Mesh mesh = terrainMesh(grid, centreOf(grid), optionsFor(state));
+        state.PauseTiming();
+        countTriangles(state, mesh);
+        mesh = Mesh();
+        state.ResumeTiming();
+    }
+}
+
+void BM_RenderReady1km(benchmark::State &state) {
+    const HeightGrid &grid = fixture().km;
+    for (auto _ : state) {
+        Mesh mesh = terrainMesh(grid, centreOf(grid), optionsFor(state));
+        size_t triangles = mesh.triangleCount();
+        RenderScene scene = sceneOf(std::move(mesh));
+        Bvh bvh(scene);
+        benchmark::DoNotOptimize(bvh.embreeScene());
+        state.counters["triangles"] = double(triangles);
+    }
+}
+
+void BM_Read34x20km(benchmark::State &state) {
+    for (auto _ : state) benchmark::DoNotOptimize(readDgm(fixture().tif));
+}
+
+void BM_Mesh34x20km(benchmark::State &state) {
+    HeightGrid grid = readDgm(fixture().tif).grid;
+    for (auto _ : state) {
+        Mesh mesh = terrainMesh(grid, centreOf(grid), optionsFor(state));
+        state.PauseTiming();
+        countTriangles(state, mesh);
+        mesh = Mesh();
+        state.ResumeTiming();
+    }
+}
+
+void BM_Bvh34x20km(benchmark::State &state) {
+    HeightGrid grid = readDgm(fixture().tif).grid;
+    RenderScene scene = sceneOf(terrainMesh(grid, centreOf(grid), optionsFor(state)));
+    for (auto _ : state) {
+        Bvh bvh(scene);
+        state.counters["embree MB"] = double(bvh.stats().peakBytes) / 1e6;
+    }
+}
+
+// Everything between the file and the first ray: read, mesh, scene, BVH.
+void BM_RenderReady34x20km(benchmark::State &state) {
+    const std::filesystem::path &tif = fixture().tif;
+    for (auto _ : state) {
+        HeightGrid grid = readDgm(tif).grid;
+        Mesh mesh = terrainMesh(grid, centreOf(grid), optionsFor(state));
+        grid = HeightGrid();
+        size_t triangles = mesh.triangleCount();
+        RenderScene scene = sceneOf(std::move(mesh));
+        Bvh bvh(scene);
+        benchmark::DoNotOptimize(bvh.embreeScene());
+        state.counters["triangles"] = double(triangles);
+    }
+}
+
+// maxError in centimetres: 0 is full resolution.
+void maxErrors(benchmark::internal::Benchmark *b) { b->Arg(0)->Arg(10)->Arg(50); }
+
+BENCHMARK(BM_Mesh1km)->Apply(maxErrors)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_RenderReady1km)->Apply(maxErrors)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Read34x20km)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Mesh34x20km)->Apply(maxErrors)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Bvh34x20km)->Apply(maxErrors)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_RenderReady34x20km)->Apply(maxErrors)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+}  // namespace veduta
+
+int main(int argc, char **argv) {
+    using namespace veduta;
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    MedianReporter reporter;
+    benchmark::RunSpecifiedBenchmarks(&reporter);
+    std::printf("\n");
+    for (const char *arg : {"0", "10", "50"}) {
+        const char *what = arg[0] == '0' ? "full resolution" : arg[0] == '1' ? "maxError 0.1 m" : "maxError 0.5 m";
+        if (const auto *run = reporter.find(std::string("BM_RenderReady1km/") + arg))
+            std::printf("1 km² at 1 m, %s: mesh + BVH %.2f s (target <= 1 s)\n", what, run->GetAdjustedRealTime() / 1000);
+        if (const auto *run = reporter.find(std::string("BM_RenderReady34x20km/") + arg))
+            std::printf("34 × 20 km at 10 m, %s: read + mesh + BVH %.2f s (target <= 10 s)\n", what,
+                        run->GetAdjustedRealTime() / 1000);
+    }
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    std::printf("peak resident memory of this run (all benchmarks, fixture included): %.2f GB (target <= 3 GB)\n",
+                double(usage.ru_maxrss) / 1e6);
+    benchmark::Shutdown();
+    return 0;
+}

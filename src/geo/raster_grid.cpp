@@ -1,0 +1,116 @@
+#include "geo/raster_grid.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <gdal_priv.h>
+#include <ogr_spatialref.h>
+
+#include "core/error.h"
+#include "geo/gdal_messages.h"
+
+namespace veduta {
+
+namespace {
+
+constexpr double kMaxNodes = 1e9;  // as for XYZ files: 4 GB of heights
+
+void registerGdalDrivers() {
+    static std::once_flag once;
+    std::call_once(once, [] { GDALAllRegister(); });
+}
+
+// The EPSG code of the raster's CRS, 0 when it has none or GDAL finds no EPSG code for it
+// (an ESRI .prj names its CRS by a WKT without authority).
+int epsgOf(const GDALDataset &dataset) {
+    const OGRSpatialReference *crs = dataset.GetSpatialRef();
+    if (!crs || crs->IsEmpty()) return 0;
+    std::unique_ptr<OGRSpatialReference> copy(crs->Clone());
+    auto code = [&]() -> int {
+        const char *authority = copy->GetAuthorityName(nullptr);
+        const char *value = copy->GetAuthorityCode(nullptr);
+        return authority && value && std::strcmp(authority, "EPSG") == 0 ? std::atoi(value) : 0;
+    };
+    if (int epsg = code()) return epsg;
+    if (copy->AutoIdentifyEPSG() == OGRERR_NONE)
+        if (int epsg = code()) return epsg;
+    int count = 0;
+    int *confidences = nullptr;
+    OGRSpatialReferenceH *matches = copy->FindMatches(nullptr, &count, &confidences);
+    int epsg = 0;
+    if (count > 0 && confidences[0] >= 90) {
+        copy.reset(OGRSpatialReference::FromHandle(matches[0])->Clone());
+        epsg = code();
+    }
+    OSRFreeSRSArray(matches);
+    CPLFree(confidences);
+    return epsg;
+}
+
+void flipRows(HeightGrid &grid) {
+    size_t width = size_t(grid.columns);
+    for (int low = 0, high = grid.rows - 1; low < high; ++low, --high) {
+        std::swap_ranges(grid.heights.begin() + ptrdiff_t(low * width), grid.heights.begin() + ptrdiff_t((low + 1) * width),
+                         grid.heights.begin() + ptrdiff_t(high * width));
+    }
+}
+
+}  // namespace
+
+Dgm readRasterGrid(const std::filesystem::path &path) {
+    registerGdalDrivers();
+    FileLoc loc{path.string(), 0, 0};
+    GdalMessages messages;
+    GDALDatasetUniquePtr dataset(
+        GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
+    if (!dataset) throw InputError(loc, "GDAL cannot read this as a raster" + messages.detail());
+    if (dataset->GetRasterCount() < 1) throw InputError(loc, "the raster has no band");
+
+    double transform[6] = {0, 1, 0, 0, 0, 1};
+    if (dataset->GetGeoTransform(transform) != CE_None)
+        throw InputError(loc, "the raster has no georeference (no geotransform)");
+    if (transform[2] != 0 || transform[4] != 0) throw InputError(loc, "the raster is rotated; only north-up rasters are read");
+    double dx = transform[1], dy = transform[5];
+    if (!(dx > 0)) throw InputError(loc, fmt::format("the pixel width is {}; it must be positive", dx));
+    if (!(std::abs(dx - std::abs(dy)) < 1e-6 * dx))
+        throw InputError(loc, fmt::format("the pixels are not square ({} m × {} m); a DGM needs one spacing", dx, std::abs(dy)));
+
+    Dgm dgm;
+    HeightGrid &grid = dgm.grid;
+    grid.columns = dataset->GetRasterXSize();
+    grid.rows = dataset->GetRasterYSize();
+    if (double(grid.columns) * grid.rows > kMaxNodes)
+        throw InputError(loc, fmt::format("the raster has {} × {} pixels, more than the {:.0e} a DGM may have",
+                                          grid.columns, grid.rows, kMaxNodes));
+    grid.spacing = dx;
+    grid.west = transform[0] + 0.5 * dx;
+    // Row 0 of a north-up raster is its north edge; the grid counts from the south.
+    grid.south = dy < 0 ? transform[3] + (grid.rows - 0.5) * dy : transform[3] + 0.5 * dy;
+
+    GDALRasterBand *band = dataset->GetRasterBand(1);
+    grid.heights.resize(size_t(grid.columns) * size_t(grid.rows));
+    if (band->RasterIO(GF_Read, 0, 0, grid.columns, grid.rows, grid.heights.data(), grid.columns, grid.rows,
+                       GDT_Float32, 0, 0, nullptr) != CE_None)
+        throw InputError(loc, "GDAL cannot read the heights" + messages.detail());
+    if (dy < 0) flipRows(grid);
+
+    int hasNoData = 0;
+    double noData = band->GetNoDataValue(&hasNoData);
+    if (hasNoData) {
+        // Compared as float32, the type the heights were read as.
+        float marker = float(noData);
+        for (float &h : grid.heights)
+            if (h == marker) h = std::numeric_limits<float>::quiet_NaN();
+    }
+    dgm.epsg = epsgOf(*dataset);
+    return dgm;
+}
+
+}  // namespace veduta
