@@ -133,7 +133,7 @@ LandClass landClass(const AtkisObject &object) {
     case 4106: return LandClass::Grassland;
     case 4107: return LandClass::Forest;
     case 4108: return LandClass::Shrubs;
-    case 5101:
+    case 5101: return LandClass::River;
     case 5112: return LandClass::Water;
     case 4201:
     case 4202: return LandClass::TreeRow;
@@ -155,6 +155,7 @@ std::string_view landClassName(LandClass c) {
     case LandClass::Forest: return "forest";
     case LandClass::Shrubs: return "shrubs";
     case LandClass::Water: return "water";
+    case LandClass::River: return "river";
     case LandClass::TreeRow: return "tree_row";
     case LandClass::Hedge: return "hedge";
     }

@@ -45,7 +45,8 @@ enum class LandClass {
     Grassland,   // 4102 Grünland, 4104–4106 heath, moor, swamp
     Forest,      // 4107 Wald, Forst
     Shrubs,      // 4108 Gehölz
-    Water,       // 5101 Strom/Fluss/Bach, 5112 Binnensee/Stausee/Teich, …
+    Water,       // standing water: 5112 Binnensee/Stausee/Teich; levelled when draped
+    River,       // flowing water: 5101 Strom/Fluss/Bach; follows the terrain downstream
     TreeRow,     // 4202 Baumreihe (a line), 4201 Baum (a point)
     Hedge,       // 4203 Hecke
 };

@@ -494,7 +494,8 @@ void flattenWater(const DrapeGrid &g, const std::vector<DrapeArea> &areas, const
 
 int drapePriority(LandClass landClass) {
     switch (landClass) {
-    case LandClass::Water: return 9;
+    case LandClass::Water:
+    case LandClass::River: return 9;
     case LandClass::Road:
     case LandClass::Path:
     case LandClass::Rail: return 8;

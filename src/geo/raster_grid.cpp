@@ -14,7 +14,7 @@
 #include <ogr_spatialref.h>
 
 #include "core/error.h"
-#include "geo/gdal_messages.h"
+#include "io/gdal_messages.h"
 
 namespace veduta {
 

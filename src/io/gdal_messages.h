@@ -1,5 +1,5 @@
-// GDAL's messages on the current thread, collected while a GdalMessages lives instead of
-// printed on standard error, so that readers can turn them into errors or warnings.
+// GDAL reports problems through a global error handler that prints to standard error; the
+// readers that use GDAL collect them instead, to put them into an InputError or a warning.
 #pragma once
 
 #include <string>
@@ -9,6 +9,7 @@
 
 namespace veduta {
 
+// GDAL's messages on this thread while it lives, instead of on standard error.
 class GdalMessages {
   public:
     GdalMessages() { CPLPushErrorHandlerEx(&collect, this); }
@@ -17,6 +18,9 @@ class GdalMessages {
     GdalMessages &operator=(const GdalMessages &) = delete;
 
     std::vector<std::string> failures, warnings;
+
+    // ": first failure" or "", to end a message with what GDAL said.
+    std::string detail() const { return failures.empty() ? std::string() : ": " + failures.front(); }
 
   private:
     static void CPL_STDCALL collect(CPLErr level, CPLErrorNum, const char *message) {

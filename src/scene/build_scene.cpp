@@ -8,6 +8,7 @@
 
 #include "city/generate_buildings.h"
 #include "city/generate_city.h"
+#include "geo/generate_landscape.h"
 #include "io/image_library.h"
 #include "io/mesh_import.h"
 #include "scene/build_environment.h"
@@ -54,7 +55,9 @@ class SceneAssembler {
             builder_.addInstance(
                 {inst.transform, it->second, override, inst.objectId, inst.buildingId, uint32_t(i + 1)});
         }
-        for (const BuildingGroupDesc &group : d_.buildingGroups) generateBuildings(group, {}, builder_, warnings_);
+        GroundHeight ground;
+        if (d_.landscape) ground = generateLandscape(*d_.landscape, d_.georeference, builder_, warnings_);
+        for (const BuildingGroupDesc &group : d_.buildingGroups) generateBuildings(group, ground, builder_, warnings_);
         // A city's buildings take the ids after those the scene file gives out.
         uint32_t nextBuildingId = firstFreeBuildingId();
         for (const CityDesc &city : d_.cities) nextBuildingId += generateCity(city, nextBuildingId, builder_, warnings_);

@@ -34,7 +34,7 @@ TEST(Atkis, LandClasses) {
     for (int g : {4102, 4104, 4105, 4106}) EXPECT_EQ(landClass(object(g)), LandClass::Grassland);
     EXPECT_EQ(landClass(object(4107)), LandClass::Forest);
     EXPECT_EQ(landClass(object(4108)), LandClass::Shrubs);
-    EXPECT_EQ(landClass(object(5101)), LandClass::Water);
+    EXPECT_EQ(landClass(object(5101)), LandClass::River);
     EXPECT_EQ(landClass(object(5112)), LandClass::Water);
     EXPECT_EQ(landClass(object(4202)), LandClass::TreeRow);
     EXPECT_EQ(landClass(object(4203)), LandClass::Hedge);

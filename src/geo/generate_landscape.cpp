@@ -1,0 +1,269 @@
+#include "geo/generate_landscape.h"
+
+#include <fstream>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "core/hash.h"
+#include "geo/atkis.h"
+#include "geo/crs.h"
+#include "geo/dgm_file.h"
+#include "geo/drape_areas.h"
+#include "geo/edbs.h"
+#include "geo/local_frame.h"
+#include "geo/ribbons.h"
+#include "geo/terrain_mesh.h"
+#include "geo/terrain_surface.h"
+#include "geo/tree_models.h"
+#include "geo/tree_placement.h"
+#include "geo/vector_file.h"
+
+namespace veduta {
+
+namespace {
+
+// The material each land class gets unless the scene defines one of the same name.
+Material landMaterial(LandClass c) {
+    std::string name = fmt::format("land/{}", landClassName(c));
+    switch (c) {
+        case LandClass::Road: return Material::lambertian(name, {0.13f, 0.13f, 0.14f});
+        case LandClass::Path: return Material::lambertian(name, {0.42f, 0.38f, 0.31f});
+        case LandClass::Rail: return Material::lambertian(name, {0.27f, 0.24f, 0.22f});
+        case LandClass::Settlement: return Material::lambertian(name, {0.21f, 0.24f, 0.14f});  // gardens and yards
+        case LandClass::Park: return Material::lambertian(name, {0.12f, 0.22f, 0.07f});
+        case LandClass::Farmland: return Material::lambertian(name, {0.34f, 0.27f, 0.16f});
+        case LandClass::Grassland: return Material::lambertian(name, {0.13f, 0.23f, 0.06f});
+        case LandClass::Forest: return Material::lambertian(name, {0.08f, 0.09f, 0.04f});
+        case LandClass::Shrubs:
+        case LandClass::TreeRow:
+        case LandClass::Hedge: return Material::lambertian(name, {0.1f, 0.15f, 0.06f});
+        case LandClass::Water:
+        case LandClass::River: {
+            Material water = Material::lambertian(name, {0.015f, 0.03f, 0.035f});
+            water.specular = Vec3f(0.25f);
+            water.shininess = 800;
+            water.reflectivity = Vec3f(0.04f);
+            return water;
+        }
+        case LandClass::Other: break;
+    }
+    return Material::lambertian("land/bare", {0.2f, 0.24f, 0.11f});
+}
+
+// The CRS a data file's coordinates are in: the scene file's word, else the file's, else the
+// scene's.
+int dataEpsg(const DataFileDesc &d, int fileEpsg, int sceneEpsg) {
+    if (d.epsg != 0) return d.epsg;
+    return fileEpsg != 0 ? fileEpsg : sceneEpsg;
+}
+
+HeightGrid readTerrain(const LandscapeDesc &land, int sceneEpsg, std::vector<std::string> &warnings) {
+    std::vector<std::filesystem::path> files;
+    for (const DataFileDesc &d : land.dgm) files.push_back(d.file);
+    Dgm dgm = readDgmTiles(files, land.fillNoData ? NoDataPolicy::Fill : NoDataPolicy::Cut, warnings);
+    const DataFileDesc &first = land.dgm.front();
+    int epsg = dataEpsg(first, dgm.epsg, sceneEpsg);
+    if (epsg != sceneEpsg) {
+        throw InputError(first.loc, fmt::format("the DGM is in EPSG:{} and the scene in EPSG:{}; a DGM is not "
+                                                "reprojected: give it in the scene's CRS (gdalwarp does it)",
+                                                epsg, sceneEpsg));
+    }
+    return std::move(dgm.grid);
+}
+
+bool isEdbs(const std::filesystem::path &file) {
+    std::ifstream in(file, std::ios::binary);
+    char head[4] = {};
+    in.read(head, 4);
+    return in && std::string_view(head, 4) == "EDBS";
+}
+
+void convertPoints(AtkisData &data, const Crs &from, const Crs &to) {
+    auto convertPoint = [&](MapPoint &p) {
+        CrsCoordinate c = convert(from, to, {p.easting, p.northing, 0});
+        p = {c.x, c.y};
+    };
+    for (AtkisObject &o : data.objects) {
+        for (MapRing &ring : o.areas) for (MapPoint &p : ring) convertPoint(p);
+        for (MapLine &line : o.lines) for (MapPoint &p : line) convertPoint(p);
+        for (MapPoint &p : o.points) convertPoint(p);
+    }
+}
+
+// A layer's objects in the scene's CRS. EDBS areas must close (an open outline names its
+// object); other sources are read through GDAL.
+AtkisData readLayer(const DataFileDesc &d, int sceneEpsg, std::vector<std::string> &warnings) {
+    if (!std::filesystem::is_regular_file(d.file))
+        throw InputError(d.loc, fmt::format("cannot read the ATKIS file {}", d.file.string()));
+    AtkisData data;
+    if (isEdbs(d.file)) {
+        EdbsConversion conversion = toAtkis(readEdbs(d.file), IncompleteObjects::Error);
+        warnings.insert(warnings.end(), conversion.warnings.begin(), conversion.warnings.end());
+        data = std::move(conversion.atkis);
+    } else {
+        data = readVectorFile(d.file, warnings);
+    }
+    int epsg = dataEpsg(d, data.epsg, sceneEpsg);
+    if (epsg != sceneEpsg) {
+        try {
+            convertPoints(data, crsByEpsg(epsg), crsByEpsg(sceneEpsg));
+        } catch (const std::invalid_argument &e) {
+            throw InputError(d.loc, fmt::format("{}: {}", d.file.string(), e.what()));
+        }
+    }
+    data.epsg = sceneEpsg;
+    return data;
+}
+
+// The stable identity of an object for its random choices: its ATKIS id, or else its place
+// in the layers.
+uint32_t objectKey(const AtkisObject &o, size_t index) {
+    return o.id.empty() ? hashValues({uint32_t(index), 0x4f424aau}) : hashString(o.id);
+}
+
+std::vector<Vec2f> toLocal(const std::vector<MapPoint> &points, const LocalFrame &frame) {
+    std::vector<Vec2f> local;
+    local.reserve(points.size());
+    for (const MapPoint &p : points) local.push_back(frame.toLocal(p));
+    return local;
+}
+
+class LandscapeBuilder {
+  public:
+    LandscapeBuilder(const LandscapeDesc &land, const Georeference &georef, RenderSceneBuilder &builder,
+                     std::vector<std::string> &warnings)
+        : land_(land), frame_{{georef.originEasting, georef.originNorthing}}, builder_(builder), warnings_(warnings) {
+        grid_ = readTerrain(land, georef.epsg, warnings);
+        for (const DataFileDesc &d : land.layers) {
+            AtkisData layer = readLayer(d, georef.epsg, warnings);
+            for (AtkisObject &o : layer.objects) objects_.push_back(std::move(o));
+        }
+    }
+
+    GroundHeight build() {
+        addTerrain();
+        addRibbons();
+        if (land_.trees) addTrees();
+        std::shared_ptr<const TerrainSurface> surface = surface_;
+        return [surface](const std::vector<Vec2f> &footprint) {
+            std::optional<double> lowest = surface->minOver(footprint);
+            return lowest ? float(*lowest) : 0.0f;
+        };
+    }
+
+  private:
+    void addTerrain() {
+        std::vector<DrapeArea> areas;
+        for (size_t i = 0; i < objects_.size(); ++i) {
+            const AtkisObject &o = objects_[i];
+            LandClass c = landClass(o);
+            if (o.geometry != AtkisGeometry::Area || c == LandClass::Other) continue;
+            for (const MapRing &ring : o.areas) areas.push_back({ring, c, uint32_t(i)});
+        }
+        Mesh mesh;
+        if (areas.empty()) {
+            TerrainMeshOptions options;
+            options.maxError = land_.simplify;
+            options.material = builder_.findOrAddMaterial(landMaterial(LandClass::Other));
+            mesh = terrainMesh(grid_, frame_, options);
+        } else {
+            if (land_.simplify > 0)
+                warnings_.push_back(fmt::format("{}: the terrain keeps its full resolution under draped ATKIS areas; "
+                                                "simplify applies to bare terrain only",
+                                                land_.loc.toString()));
+            DrapedTerrain draped = drapeAreas(grid_, frame_, areas, {});
+            MaterialId bare = builder_.findOrAddMaterial(landMaterial(LandClass::Other));
+            for (size_t t = 0; t < draped.triangleArea.size(); ++t) {
+                uint32_t a = draped.triangleArea[t];
+                draped.mesh.triangleMaterials[t] =
+                    a == kNoArea ? bare : builder_.findOrAddMaterial(landMaterial(areas[a].landClass));
+            }
+            mesh = std::move(draped.mesh);
+        }
+        surface_ = std::make_shared<TerrainSurface>(mesh, gridLines(grid_, frame_));
+        builder_.addWorldMesh(std::move(mesh), land_.objectId);
+    }
+
+    // The roads, paths and rails, all in one mesh.
+    void addRibbons() {
+        Mesh ribbons;
+        for (const AtkisObject &o : objects_) {
+            LandClass c = landClass(o);
+            if (o.geometry != AtkisGeometry::Line || (c != LandClass::Road && c != LandClass::Path && c != LandClass::Rail))
+                continue;
+            RibbonOptions options;
+            options.lift = ribbonLift(c);
+            MaterialId material = builder_.findOrAddMaterial(landMaterial(c));
+            for (const MapLine &line : o.lines) {
+                Mesh ribbon = drapeRibbon(line, ribbonWidth(o), *surface_, frame_, options);
+                ribbon.setMaterial(material);
+                ribbons.append(ribbon, Transform());
+            }
+        }
+        if (ribbons.triangleCount() > 0) builder_.addWorldMesh(std::move(ribbons), land_.objectId);
+    }
+
+    void addTrees() {
+        TreeSet set;
+        set.limit = land_.treeBudget;
+        for (size_t i = 0; i < objects_.size(); ++i) {
+            const AtkisObject &o = objects_[i];
+            TreeStand stand = treeStand(landClass(o), treeKind(o));
+            if (stand.spacing <= 0) continue;
+            uint32_t key = objectKey(o, i);
+            try {
+                for (const MapRing &ring : o.areas) plantArea(set, toLocal(ring, frame_), stand, land_.seed, key);
+                for (const MapLine &line : o.lines) plantLine(set, toLocal(line, frame_), stand, land_.seed, key);
+                if (!o.points.empty()) plantPoints(set, toLocal(o.points, frame_), stand, land_.seed, key);
+            } catch (const std::invalid_argument &e) {
+                throw InputError(land_.loc, fmt::format("{}: {}", o.where, e.what()));
+            }
+        }
+        if (set.limitReached)
+            throw InputError(land_.loc, fmt::format("the landscape would have more than {} trees (tree_budget); "
+                                                    "raise tree_budget or set trees=\"false\"",
+                                                    land_.treeBudget));
+        addTreeInstances(set);
+    }
+
+    void addTreeInstances(const TreeSet &set) {
+        TreeMaterials broadleaf{builder_.findOrAddMaterial(Material::lambertian("land/bark", {0.16f, 0.12f, 0.09f})),
+                                builder_.findOrAddMaterial(Material::lambertian("land/foliage", {0.09f, 0.19f, 0.04f}))};
+        TreeMaterials conifer{broadleaf.bark,
+                              builder_.findOrAddMaterial(Material::lambertian("land/needles", {0.04f, 0.1f, 0.04f}))};
+        PrototypeId prototypes[2][kTreeVariants] = {};
+        bool made[2][kTreeVariants] = {};
+        for (const PlacedTree &tree : set.trees) {
+            std::optional<double> ground = surface_->heightAt({tree.position.x, tree.position.y});
+            if (!ground) continue;  // over a hole in the DGM
+            int k = tree.kind == TreeKind::Conifer ? 1 : 0;
+            if (!made[k][tree.variant]) {
+                const TreeMaterials &materials = k == 1 ? conifer : broadleaf;
+                prototypes[k][tree.variant] = builder_.addPrototype(treeModel(tree.kind, tree.variant, land_.seed, materials));
+                made[k][tree.variant] = true;
+            }
+            builder_.addInstance({treeTransform(tree, float(*ground)), prototypes[k][tree.variant], kNoMaterial,
+                                  land_.objectId, 0, 0});
+        }
+    }
+
+    const LandscapeDesc &land_;
+    LocalFrame frame_;
+    RenderSceneBuilder &builder_;
+    std::vector<std::string> &warnings_;
+    HeightGrid grid_;
+    std::vector<AtkisObject> objects_;
+    std::shared_ptr<TerrainSurface> surface_;
+};
+
+}  // namespace
+
+GroundHeight generateLandscape(const LandscapeDesc &land, const std::optional<Georeference> &georeference,
+                               RenderSceneBuilder &builder, std::vector<std::string> &warnings) {
+    if (!georeference)
+        throw InputError(land.loc, "a <landscape> needs the scene's <georeference crs=\"EPSG:…\" origin=\"E N\">");
+    return LandscapeBuilder(land, *georeference, builder, warnings).build();
+}
+
+}  // namespace veduta
