@@ -79,12 +79,23 @@ bool isEdbs(const std::filesystem::path &file) {
     return in && std::string_view(head, 4) == "EDBS";
 }
 
+// Every point from `from` to `to`; a point that cannot be one of `from` (GeoJSON without a
+// crs member is WGS 84 longitude and latitude) is an error naming its object.
 void convertPoints(AtkisData &data, const Crs &from, const Crs &to) {
+    const AtkisObject *object = nullptr;
     auto convertPoint = [&](MapPoint &p) {
+        try {
+            checkAxis(from, 0, p.easting);
+            checkAxis(from, 1, p.northing);
+        } catch (const std::out_of_range &e) {
+            throw std::invalid_argument(fmt::format("{}: ({}, {}) is no point of EPSG:{}: {}", object->where, p.easting,
+                                                    p.northing, from.epsg, e.what()));
+        }
         CrsCoordinate c = convert(from, to, {p.easting, p.northing, 0});
         p = {c.x, c.y};
     };
     for (AtkisObject &o : data.objects) {
+        object = &o;
         for (MapRing &ring : o.areas) for (MapPoint &p : ring) convertPoint(p);
         for (MapLine &line : o.lines) for (MapPoint &p : line) convertPoint(p);
         for (MapPoint &p : o.points) convertPoint(p);
@@ -109,7 +120,7 @@ AtkisData readLayer(const DataFileDesc &d, int sceneEpsg, std::vector<std::strin
         try {
             convertPoints(data, crsByEpsg(epsg), crsByEpsg(sceneEpsg));
         } catch (const std::invalid_argument &e) {
-            throw InputError(d.loc, fmt::format("{}: {}", d.file.string(), e.what()));
+            throw InputError(d.loc, e.what());
         }
     }
     data.epsg = sceneEpsg;

@@ -16,6 +16,7 @@
 
 #include "core/error.h"
 #include "geo/no_data_fill.h"
+#include "geo/terrain_mesh.h"
 #include "shared_data.h"
 
 namespace veduta {
@@ -140,6 +141,23 @@ TEST_F(DgmFileTest, ThreeFormatsGiveTheSameGrid) {
     EXPECT_EQ(xyz.epsg, 0);
     EXPECT_EQ(asc.epsg, 0);
     EXPECT_EQ(tif.epsg, 25832);
+}
+
+// The acceptance: the same area in the three formats gives identical meshes, bit for bit.
+TEST_F(DgmFileTest, ThreeFormatsGiveTheSameMesh) {
+    SmallDgm d;
+    LocalFrame frame{{350003.5, 5650002.25}};
+    Mesh xyz = terrainMesh(readDgm(writeXyz("small.xyz", d)).grid, frame, {});
+    Mesh asc = terrainMesh(readDgm(writeAsc("small.asc", d)).grid, frame, {});
+    Mesh tif = terrainMesh(readDgm(writeGeoTiff("small.tif", d)).grid, frame, {});
+    ASSERT_GT(xyz.triangleCount(), 0u);
+    for (const Mesh *other : {&asc, &tif}) {
+        EXPECT_EQ(other->indices, xyz.indices);
+        ASSERT_EQ(other->positions.size(), xyz.positions.size());
+        EXPECT_EQ(std::memcmp(other->positions.data(), xyz.positions.data(), xyz.positions.size() * sizeof(Vec3f)), 0);
+        EXPECT_EQ(std::memcmp(other->normals.data(), xyz.normals.data(), xyz.normals.size() * sizeof(Vec3f)), 0);
+        EXPECT_EQ(std::memcmp(other->uvs.data(), xyz.uvs.data(), xyz.uvs.size() * sizeof(Vec2f)), 0);
+    }
 }
 
 TEST_F(DgmFileTest, XyzRowOrderDoesNotMatter) {

@@ -1,0 +1,193 @@
+// <landscape> in scene files: the DGM and ATKIS layers read, draped and planted into the
+// render scene, buildings seated on the terrain, and the landscape's errors.
+#include "geo/generate_landscape.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include "geo/terrain_surface.h"
+#include "scene/build_scene.h"
+
+namespace veduta {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr double kWest = 530000, kSouth = 5326000, kSpacing = 10;
+constexpr int kColumns = 21, kRows = 21;
+
+// A slope rising to the north-east with a pit at node (9, 9), inside the house below but
+// away from its corners.
+double height(int c, int r) { return 500 + 0.8 * c + 0.5 * r - (c == 9 && r == 9 ? 3.0 : 0.0); }
+
+class Landscape : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               fmt::format("veduta_land_{}_{}", ::testing::UnitTest::GetInstance()->current_test_info()->name(), getpid());
+        fs::create_directories(dir_);
+        std::string asc = fmt::format("ncols {}\nnrows {}\nxllcorner {}\nyllcorner {}\ncellsize {}\nNODATA_value -9999\n",
+                                      kColumns, kRows, kWest - kSpacing / 2, kSouth - kSpacing / 2, kSpacing);
+        for (int r = kRows - 1; r >= 0; --r) {
+            for (int c = 0; c < kColumns; ++c) asc += fmt::format("{}{:.3f}", c ? " " : "", height(c, r));
+            asc += "\n";
+        }
+        write("dgm.asc", asc);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    void write(const std::string &name, const std::string &text) const { std::ofstream(dir_ / name) << text; }
+
+    // A scene with the georeference at the grid's centre node (10, 10).
+    SceneDescription scene(const std::string &landscape, const std::string &rest = "") const {
+        std::string xml = "<scene version=\"1\">\n<georeference crs=\"EPSG:25832\" origin=\"530100 5326100\"/>\n" +
+                          landscape + rest + "</scene>\n";
+        return readSceneText(xml, "test.xml", dir_);
+    }
+
+    RenderScene build(const SceneDescription &d, std::vector<std::string> *warnings = nullptr) const {
+        return buildRenderScene(d, warnings);
+    }
+
+    fs::path dir_;
+};
+
+std::string errorOf(const std::function<void()> &f) {
+    try {
+        f();
+    } catch (const InputError &e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+MaterialId materialNamed(const RenderScene &s, const std::string &name) {
+    for (MaterialId m = 0; m < s.materials.size(); ++m)
+        if (s.materials[m].name == name) return m;
+    return kNoMaterial;
+}
+
+TEST_F(Landscape, TheTerrainIsTheDgmInTheLocalFrame) {
+    RenderScene s = build(scene("<landscape><dgm file=\"dgm.asc\"/></landscape>\n"));
+    ASSERT_EQ(s.meshes.size(), 1u);
+    const Mesh &m = s.meshes[0].mesh;
+    EXPECT_EQ(m.triangleCount(), size_t(2 * (kColumns - 1) * (kRows - 1)));
+    // Node (c, r) lies at (c − 10, r − 10) · 10 m from the origin, at its height.
+    std::map<std::pair<int, int>, float> heights;
+    for (const Vec3f &p : m.positions) heights[{int(std::lround(p.x / kSpacing)) + 10, int(std::lround(p.y / kSpacing)) + 10}] = p.z;
+    ASSERT_EQ(heights.size(), size_t(kColumns * kRows));
+    for (auto &[node, z] : heights) EXPECT_FLOAT_EQ(z, float(height(node.first, node.second)));
+    EXPECT_NE(materialNamed(s, "land/bare"), kNoMaterial);
+}
+
+TEST_F(Landscape, NeedsAGeoreference) {
+    std::string xml = "<scene version=\"1\">\n<landscape><dgm file=\"dgm.asc\"/></landscape>\n</scene>\n";
+    SceneDescription d = readSceneText(xml, "test.xml", dir_);
+    EXPECT_EQ(errorOf([&] { build(d); }), "test.xml:2:1: a <landscape> needs the scene's <georeference crs=\"EPSG:…\" origin=\"E N\">");
+}
+
+TEST_F(Landscape, ADgmInAnotherCrsIsAnError) {
+    SceneDescription d = scene("<landscape><dgm file=\"dgm.asc\" crs=\"EPSG:31467\"/></landscape>\n");
+    std::string error = errorOf([&] { build(d); });
+    EXPECT_NE(error.find("test.xml:3:23: the DGM is in EPSG:31467 and the scene in EPSG:25832"), std::string::npos) << error;
+}
+
+TEST_F(Landscape, BadElementsAndAttributesAreErrorsAtTheirPlace) {
+    EXPECT_EQ(errorOf([&] { scene("<landscape nodata=\"drop\"><dgm file=\"dgm.asc\"/></landscape>\n"); }),
+              "test.xml:3:20: nodata is 'fill' or 'cut', not 'drop'");
+    EXPECT_EQ(errorOf([&] { scene("<landscape/>\n"); }), "test.xml:3:1: a <landscape> needs at least one <dgm file=\"...\"/>");
+    EXPECT_EQ(errorOf([&] { scene("<landscape><osm file=\"x\"/></landscape>\n"); }),
+              "test.xml:3:12: <osm> cannot stand inside <landscape>; expected <dgm> or <atkis>");
+}
+
+// The issue's rule: the base is the lowest terrain point under the footprint, interior
+// included (the pit is no corner), the plinth reaches below it, and a given base stays.
+TEST_F(Landscape, BuildingsStandOnTheLowestTerrainUnderTheirFootprint) {
+    std::string buildings = "<buildings rules=\"" VEDUTA_SOURCE_DIR "/rules/gruenderzeit/FacadeStructure.xml\">\n"
+                            "<building footprint=\"-25 -25 5 -25 5 5 -25 5\" street=\"0\"/>\n"
+                            "<building base=\"600\" footprint=\"30 30 45 30 45 45 30 45\" street=\"0\"/>\n"
+                            "</buildings>\n";
+    RenderScene s = build(scene("<landscape><dgm file=\"dgm.asc\"/></landscape>\n", buildings));
+    MaterialId plinth = materialNamed(s, "plinth");
+    ASSERT_NE(plinth, kNoMaterial);
+    float lowest[3] = {1e9f, 1e9f, 1e9f};  // by building id (0: the terrain), plinths apart
+    float lowestPlinth = 1e9f;
+    for (const BakedMesh &b : s.meshes) {
+        for (size_t t = 0; t < b.mesh.triangleCount(); ++t)
+            for (int k = 0; k < 3; ++k) {
+                float z = b.mesh.positions[b.mesh.indices[3 * t + k]].z;
+                if (b.mesh.triangleMaterials[t] == plinth) lowestPlinth = std::min(lowestPlinth, z);
+                else lowest[b.buildingId] = std::min(lowest[b.buildingId], z);
+            }
+    }
+    // The footprint's corners are nodes (7, 7), (10, 7), (10, 10), (7, 10); the lowest corner
+    // is 500 + 5.6 + 3.5 = 509.1, the pit at (9, 9) 500 + 7.2 + 4.5 − 3 = 508.7.
+    EXPECT_FLOAT_EQ(lowest[1], 508.7f);
+    EXPECT_FLOAT_EQ(lowestPlinth, 508.7f - kPlinthDepth);
+    EXPECT_FLOAT_EQ(lowest[2], 600.0f);
+}
+
+// Areas become materials of the terrain, lines ribbons, forests trees; the trees stand on the
+// terrain and are the same on every run.
+TEST_F(Landscape, AtkisLayersBecomeSurfacesRibbonsAndTrees) {
+    write("layer.geojson", R"({"type": "FeatureCollection",
+ "crs": {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::25832"}},
+ "features": [
+  {"type": "Feature", "properties": {"OBJART": 4107, "VEG": "2000", "OBJID": "F1"},
+   "geometry": {"type": "Polygon", "coordinates": [[[530010, 5326010], [530090, 5326010], [530090, 5326090], [530010, 5326090], [530010, 5326010]]]}},
+  {"type": "Feature", "properties": {"OBJART": 5112, "OBJID": "W1"},
+   "geometry": {"type": "Polygon", "coordinates": [[[530120, 5326120], [530170, 5326125], [530160, 5326170], [530120, 5326120]]]}},
+  {"type": "Feature", "properties": {"OBJART": 3101, "BRF": "0065", "OBJID": "R1"},
+   "geometry": {"type": "LineString", "coordinates": [[530005, 5326100], [530100, 5326103], [530195, 5326140]]}}
+ ]})");
+    SceneDescription d = scene("<landscape seed=\"7\"><dgm file=\"dgm.asc\"/><atkis file=\"layer.geojson\"/></landscape>\n");
+    RenderScene s = build(d);
+    for (const char *name : {"land/forest", "land/water", "land/road", "land/bark", "land/needles"})
+        EXPECT_NE(materialNamed(s, name), kNoMaterial) << name;
+    ASSERT_FALSE(s.instances.empty());
+    // Trees in the forest (local −90…−10), each at the terrain's height under it.
+    const Mesh &terrain = s.meshes[0].mesh;
+    TerrainSurface surface(terrain, {});
+    for (const Instance &tree : s.instances) {
+        Vec3f at{tree.objectToWorld.m[3], tree.objectToWorld.m[7], tree.objectToWorld.m[11]};
+        EXPECT_GE(at.x, -90.0f);
+        EXPECT_LE(at.x, -10.0f);
+        EXPECT_NEAR(at.z, *surface.heightAt({at.x, at.y}), 1e-3);
+    }
+    RenderScene again = build(d);
+    ASSERT_EQ(again.instances.size(), s.instances.size());
+    for (size_t i = 0; i < s.instances.size(); ++i) EXPECT_EQ(again.instances[i].objectToWorld, s.instances[i].objectToWorld);
+}
+
+TEST_F(Landscape, TooManyTreesIsAnError) {
+    write("forest.geojson", R"({"type": "FeatureCollection",
+ "crs": {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::25832"}}, "features": [
+  {"type": "Feature", "properties": {"OBJART": 4107},
+   "geometry": {"type": "Polygon", "coordinates": [[[530010, 5326010], [530190, 5326010], [530190, 5326190], [530010, 5326190], [530010, 5326010]]]}}]})");
+    SceneDescription d = scene("<landscape tree_budget=\"50\"><dgm file=\"dgm.asc\"/><atkis file=\"forest.geojson\"/></landscape>\n");
+    EXPECT_EQ(errorOf([&] { build(d); }),
+              "test.xml:3:1: the landscape would have more than 50 trees (tree_budget); raise tree_budget or set trees=\"false\"");
+}
+
+// GeoJSON without a crs member is WGS 84 (RFC 7946): UTM coordinates in it are no longitudes.
+TEST_F(Landscape, PointsOutsideTheirCrsAreErrorsNamingTheObject) {
+    write("lonlat.geojson", R"({"type": "FeatureCollection", "features": [
+  {"type": "Feature", "properties": {"OBJART": 4107},
+   "geometry": {"type": "Polygon", "coordinates": [[[530010, 5326010], [530190, 5326010], [530190, 5326190], [530010, 5326010]]]}}]})");
+    SceneDescription d = scene("<landscape><dgm file=\"dgm.asc\"/><atkis file=\"lonlat.geojson\"/></landscape>\n");
+    std::string error = errorOf([&] { build(d); });
+    EXPECT_NE(error.find("test.xml:3:46: "), std::string::npos) << error;
+    EXPECT_NE(error.find("lonlat.geojson: layer lonlat, feature 0: (530010, 5326010) is no point of EPSG:4326"),
+              std::string::npos)
+        << error;
+}
+
+}  // namespace
+}  // namespace veduta
