@@ -32,7 +32,7 @@ HeightGrid bigGrid() {
 std::vector<DrapeArea> manyAreas(const HeightGrid &grid) {
     std::vector<DrapeArea> areas;
     LandClass classes[] = {LandClass::Forest, LandClass::Farmland, LandClass::Settlement, LandClass::Grassland,
-                           LandClass::Park, LandClass::Shrubs, LandClass::Water, LandClass::Other};
+                           LandClass::Park, LandClass::Shrubs, LandClass::Water, LandClass::Other, {}};
     for (uint32_t i = 0; i < 200; ++i) {
         double cx = grid.west + 1000 * unit(2, i), cy = grid.south + 1000 * unit(3, i), radius = 15 + 65 * unit(4, i);
         int points = 40 + int(80 * unit(5, i));
@@ -41,7 +41,7 @@ std::vector<DrapeArea> manyAreas(const HeightGrid &grid) {
             double angle = 2 * M_PI * k / points, r = radius * (0.6 + 0.4 * unit(6 + i, uint32_t(k)));
             ring.push_back({cx + r * std::cos(angle), cy + r * std::sin(angle)});
         }
-        areas.push_back({ring, classes[i % 8], i});
+        areas.push_back({ring, classes[i % 8], i, {}});
     }
     return areas;
 }

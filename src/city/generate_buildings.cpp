@@ -20,7 +20,16 @@ Footprint footprintOf(const BuildingDesc &building, const GroundHeight &ground, 
     footprint.streetEdges.assign(building.footprint.size(), false);
     for (uint32_t edge : building.streetEdges) footprint.streetEdges[edge] = true;
     if (auto warning = normaliseFootprint(footprint, building.footprintLoc)) warnings.push_back(*warning);
-    footprint.base = building.base ? *building.base : ground ? ground(footprint.points) : 0.0f;
+    if (building.base) {
+        footprint.base = *building.base;
+    } else if (ground) {
+        std::optional<float> datum = ground(footprint.points);
+        if (!datum) {
+            warnings.push_back(fmt::format("{}: building {} stands off the terrain; it is placed at height 0",
+                                           building.loc.toString(), building.buildingId));
+        }
+        footprint.base = datum.value_or(0.0f);
+    }
     return footprint;
 }
 

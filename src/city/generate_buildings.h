@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,8 +13,9 @@
 namespace veduta {
 
 // The height a footprint stands on when its building gives none: the landscape's lowest
-// terrain point under it (docs/terrain.md). Empty: flat ground at 0.
-using GroundHeight = std::function<float(const std::vector<Vec2f> &footprint)>;
+// terrain point under it (docs/landscape.md); nullopt where the footprint misses the terrain.
+// An empty function: flat ground at 0.
+using GroundHeight = std::function<std::optional<float>(const std::vector<Vec2f> &footprint)>;
 
 // How far a building's plinth reaches below its datum on terrain.
 inline constexpr float kPlinthDepth = 0.5f;

@@ -18,11 +18,14 @@ struct FileLoc {
 class InputError : public std::runtime_error {
   public:
     InputError(const FileLoc &loc, const std::string &message)
-        : std::runtime_error(loc.toString() + ": " + message), loc_(loc) {}
+        : std::runtime_error(loc.toString() + ": " + message), loc_(loc), message_(message) {}
     const FileLoc &loc() const { return loc_; }
+    // What is wrong, without the place: for a caller that knows the place better.
+    const std::string &message() const { return message_; }
 
   private:
     FileLoc loc_;
+    std::string message_;
 };
 
 }  // namespace veduta

@@ -82,11 +82,14 @@ std::optional<Number> number(std::string_view text) {
 
 // A width attribute in decimetres (EDBS and ATKIS Shape exports: BRF, BRV) or metres (NAS:
 // breiteDerFahrbahn, breiteDesVerkehrsweges), when given and positive.
+// Metres; a wider width attribute ("inf", a unit mistake) is unreadable and the class default holds.
+constexpr double kWidestRibbon = 200;
+
 std::optional<double> widthAttribute(const AtkisObject &object, const std::string &decimetres, const std::string &inMetres) {
     if (auto text = attribute(object, decimetres))
-        if (auto value = number<long>(*text); value && *value > 0) return double(*value) / 10.0;
+        if (auto value = number<long>(*text); value && *value > 0 && *value <= 10 * kWidestRibbon) return double(*value) / 10.0;
     if (auto text = attribute(object, inMetres))
-        if (auto value = number<double>(*text); value && *value > 0) return *value;
+        if (auto value = number<double>(*text); value && *value > 0 && *value <= kWidestRibbon) return *value;
     return std::nullopt;
 }
 

@@ -98,7 +98,7 @@ struct DrapeGrid {
 };
 
 std::string areaName(const std::vector<DrapeArea> &areas, size_t i) {
-    return fmt::format("drape area {} (object {})", i, areas[i].objectIndex);
+    return areas[i].name.empty() ? fmt::format("drape area {} (object {})", i, areas[i].objectIndex) : areas[i].name;
 }
 
 // The outlines in the local frame, cut at the grid lines, without repeated points.

@@ -17,7 +17,8 @@ namespace veduta {
 struct DrapeArea {
     MapRing outline;  // a simple polygon of the grid's CRS, either winding; self-crossings count even–odd
     LandClass landClass = LandClass::Other;
-    uint32_t objectIndex = 0;  // the caller's object, for messages and materials
+    uint32_t objectIndex = 0;  // the caller's object, for materials
+    std::string name;          // the object for messages ("file.gpkg: layer x, feature 7"); empty: its index
 };
 
 struct DrapeOptions {

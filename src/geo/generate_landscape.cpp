@@ -1,7 +1,11 @@
 #include "geo/generate_landscape.h"
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
+#include <map>
 #include <memory>
+#include <type_traits>
 
 #include <fmt/format.h>
 
@@ -140,6 +144,53 @@ std::vector<Vec2f> toLocal(const std::vector<MapPoint> &points, const LocalFrame
     return local;
 }
 
+// The most memory the simplification's error bounds may take.
+constexpr double kSimplifyBytes = 8e9;
+
+// Metres a tree keeps from a ribbon's edge.
+constexpr float kTreeClearance = 1.5f;
+
+// Polylines with a clearance each, bucketed on a square grid: whether a point comes closer
+// to any of them than its clearance.
+class SegmentClearance {
+  public:
+    void add(const std::vector<Vec2f> &line, float clearance) {
+        for (size_t i = 0; i + 1 < line.size(); ++i) {
+            auto index = uint32_t(segments_.size());
+            segments_.push_back({line[i], line[i + 1], clearance});
+            Vec2f lo{std::min(line[i].x, line[i + 1].x) - clearance, std::min(line[i].y, line[i + 1].y) - clearance};
+            Vec2f hi{std::max(line[i].x, line[i + 1].x) + clearance, std::max(line[i].y, line[i + 1].y) + clearance};
+            for (int64_t y = cell(lo.y); y <= cell(hi.y); ++y)
+                for (int64_t x = cell(lo.x); x <= cell(hi.x); ++x) buckets_[{x, y}].push_back(index);
+        }
+    }
+
+    bool covers(Vec2f p) const {
+        auto it = buckets_.find({cell(p.x), cell(p.y)});
+        if (it == buckets_.end()) return false;
+        for (uint32_t s : it->second) {
+            const Segment &g = segments_[s];
+            Vec2f d = g.b - g.a, ap = p - g.a;
+            float length2 = d.x * d.x + d.y * d.y;
+            float t = length2 > 0 ? std::clamp((ap.x * d.x + ap.y * d.y) / length2, 0.0f, 1.0f) : 0.0f;
+            Vec2f off = ap - Vec2f{d.x * t, d.y * t};
+            if (off.x * off.x + off.y * off.y < g.clearance * g.clearance) return true;
+        }
+        return false;
+    }
+
+  private:
+    static constexpr float kCell = 25;  // metres
+    static int64_t cell(float v) { return int64_t(std::floor(v / kCell)); }
+
+    struct Segment {
+        Vec2f a, b;
+        float clearance;
+    };
+    std::vector<Segment> segments_;
+    std::map<std::pair<int64_t, int64_t>, std::vector<uint32_t>> buckets_;
+};
+
 class LandscapeBuilder {
   public:
     LandscapeBuilder(const LandscapeDesc &land, const Georeference &georef, RenderSceneBuilder &builder,
@@ -157,9 +208,10 @@ class LandscapeBuilder {
         addRibbons();
         if (land_.trees) addTrees();
         std::shared_ptr<const TerrainSurface> surface = surface_;
-        return [surface](const std::vector<Vec2f> &footprint) {
+        return [surface](const std::vector<Vec2f> &footprint) -> std::optional<float> {
             std::optional<double> lowest = surface->minOver(footprint);
-            return lowest ? float(*lowest) : 0.0f;
+            if (!lowest) return std::nullopt;
+            return float(*lowest);
         };
     }
 
@@ -170,10 +222,11 @@ class LandscapeBuilder {
             const AtkisObject &o = objects_[i];
             LandClass c = landClass(o);
             if (o.geometry != AtkisGeometry::Area || c == LandClass::Other) continue;
-            for (const MapRing &ring : o.areas) areas.push_back({ring, c, uint32_t(i)});
+            for (const MapRing &ring : o.areas) areas.push_back({ring, c, uint32_t(i), o.where});
         }
         Mesh mesh;
         if (areas.empty()) {
+            checkSimplifiable();
             TerrainMeshOptions options;
             options.maxError = land_.simplify;
             options.material = builder_.findOrAddMaterial(landMaterial(LandClass::Other));
@@ -183,12 +236,14 @@ class LandscapeBuilder {
                 warnings_.push_back(fmt::format("{}: the terrain keeps its full resolution under draped ATKIS areas; "
                                                 "simplify applies to bare terrain only",
                                                 land_.loc.toString()));
-            DrapedTerrain draped = drapeAreas(grid_, frame_, areas, {});
+            DrapedTerrain draped = atLandscape([&] { return drapeAreas(grid_, frame_, areas, {}); });
             MaterialId bare = builder_.findOrAddMaterial(landMaterial(LandClass::Other));
+            triangleObject_.resize(draped.triangleArea.size(), kNoArea);
             for (size_t t = 0; t < draped.triangleArea.size(); ++t) {
                 uint32_t a = draped.triangleArea[t];
                 draped.mesh.triangleMaterials[t] =
                     a == kNoArea ? bare : builder_.findOrAddMaterial(landMaterial(areas[a].landClass));
+                if (a != kNoArea) triangleObject_[t] = areas[a].objectIndex;
             }
             mesh = std::move(draped.mesh);
         }
@@ -206,10 +261,12 @@ class LandscapeBuilder {
             RibbonOptions options;
             options.lift = ribbonLift(c);
             MaterialId material = builder_.findOrAddMaterial(landMaterial(c));
+            double width = ribbonWidth(o);
             for (const MapLine &line : o.lines) {
-                Mesh ribbon = drapeRibbon(line, ribbonWidth(o), *surface_, frame_, options);
+                Mesh ribbon = atLandscape([&] { return drapeRibbon(line, width, *surface_, frame_, options); }, &o);
                 ribbon.setMaterial(material);
                 ribbons.append(ribbon, Transform());
+                ribbonClearance_.add(toLocal(line, frame_), float(width / 2 + kTreeClearance));
             }
         }
         if (ribbons.triangleCount() > 0) builder_.addWorldMesh(std::move(ribbons), land_.objectId);
@@ -218,6 +275,7 @@ class LandscapeBuilder {
     void addTrees() {
         TreeSet set;
         set.limit = land_.treeBudget;
+        std::vector<uint32_t> planter;  // per tree: the object it was planted for
         for (size_t i = 0; i < objects_.size(); ++i) {
             const AtkisObject &o = objects_[i];
             TreeStand stand = treeStand(landClass(o), treeKind(o));
@@ -230,32 +288,70 @@ class LandscapeBuilder {
             } catch (const std::invalid_argument &e) {
                 throw InputError(land_.loc, fmt::format("{}: {}", o.where, e.what()));
             }
+            planter.resize(set.trees.size(), uint32_t(i));
         }
         if (set.limitReached)
             throw InputError(land_.loc, fmt::format("the landscape would have more than {} trees (tree_budget); "
                                                     "raise tree_budget or set trees=\"false\"",
                                                     land_.treeBudget));
-        addTreeInstances(set);
+        addTreeInstances(set, planter);
     }
 
-    void addTreeInstances(const TreeSet &set) {
+    // Whether a tree planted for object `planter` may stand at `on`: a tree of an area only
+    // where that area won the draping (not in a lake or on a road area drawn over the forest),
+    // a tree of a row or a point not in water or on a traffic area; and none on a ribbon.
+    bool treeMayStand(const PlacedTree &tree, uint32_t planter, const TerrainSurface::PointOnSurface &on) const {
+        if (ribbonClearance_.covers(tree.position)) return false;
+        uint32_t owner = triangleObject_.empty() ? kNoArea : triangleObject_[on.triangle];
+        if (objects_[planter].geometry == AtkisGeometry::Area) return owner == planter;
+        if (owner == kNoArea) return true;
+        LandClass c = landClass(objects_[owner]);
+        return c != LandClass::Water && c != LandClass::River && c != LandClass::Road && c != LandClass::Path &&
+               c != LandClass::Rail;
+    }
+
+    void addTreeInstances(const TreeSet &set, const std::vector<uint32_t> &planter) {
         TreeMaterials broadleaf{builder_.findOrAddMaterial(Material::lambertian("land/bark", {0.16f, 0.12f, 0.09f})),
                                 builder_.findOrAddMaterial(Material::lambertian("land/foliage", {0.09f, 0.19f, 0.04f}))};
         TreeMaterials conifer{broadleaf.bark,
                               builder_.findOrAddMaterial(Material::lambertian("land/needles", {0.04f, 0.1f, 0.04f}))};
         PrototypeId prototypes[2][kTreeVariants] = {};
         bool made[2][kTreeVariants] = {};
-        for (const PlacedTree &tree : set.trees) {
-            std::optional<double> ground = surface_->heightAt({tree.position.x, tree.position.y});
-            if (!ground) continue;  // over a hole in the DGM
+        for (size_t i = 0; i < set.trees.size(); ++i) {
+            const PlacedTree &tree = set.trees[i];
+            std::optional<TerrainSurface::PointOnSurface> on = surface_->triangleAt({tree.position.x, tree.position.y});
+            if (!on || !treeMayStand(tree, planter[i], *on)) continue;  // off the DGM, or not its place
             int k = tree.kind == TreeKind::Conifer ? 1 : 0;
             if (!made[k][tree.variant]) {
                 const TreeMaterials &materials = k == 1 ? conifer : broadleaf;
                 prototypes[k][tree.variant] = builder_.addPrototype(treeModel(tree.kind, tree.variant, land_.seed, materials));
                 made[k][tree.variant] = true;
             }
-            builder_.addInstance({treeTransform(tree, float(*ground)), prototypes[k][tree.variant], kNoMaterial,
+            builder_.addInstance({treeTransform(tree, float(on->height)), prototypes[k][tree.variant], kNoMaterial,
                                   land_.objectId, 0, 0});
+        }
+    }
+
+    // The simplification pads the grid to a square of 2^k + 1 nodes with a 4-byte bound each:
+    // a long thin DGM would ask for its longer side squared.
+    void checkSimplifiable() const {
+        if (land_.simplify <= 0) return;
+        double side = 1;
+        while (side < std::max(grid_.columns, grid_.rows)) side = 2 * side;
+        double bytes = 4 * (side + 1) * (side + 1);
+        if (bytes > kSimplifyBytes)
+            throw InputError(land_.loc, fmt::format("simplifying this {} × {} DGM needs {:.1f} GB (it is padded to a "
+                                                    "square); cut it into square tiles or leave simplify at 0",
+                                                    grid_.columns, grid_.rows, bytes / 1e9));
+    }
+
+    // An error of draping or a ribbon at the <landscape>, naming the object when known.
+    template <typename Make>
+    std::invoke_result_t<Make> atLandscape(Make make, const AtkisObject *object = nullptr) const {
+        try {
+            return make();
+        } catch (const InputError &e) {
+            throw InputError(land_.loc, object ? fmt::format("{}: {}", object->where, e.message()) : e.message());
         }
     }
 
@@ -266,6 +362,8 @@ class LandscapeBuilder {
     HeightGrid grid_;
     std::vector<AtkisObject> objects_;
     std::shared_ptr<TerrainSurface> surface_;
+    std::vector<uint32_t> triangleObject_;  // per terrain triangle: the object whose area won it, or kNoArea
+    SegmentClearance ribbonClearance_;
 };
 
 }  // namespace

@@ -30,7 +30,9 @@ std::vector<Vec2d> centreLine(const MapLine &centre, const TerrainSurface &surfa
         if (kept.empty() || std::hypot(cut[i].x - kept.back().x, cut[i].y - kept.back().y) >= kShortest) {
             kept.push_back(cut[i]);
         } else if (i + 1 == cut.size() && kept.size() > 1) {
-            kept.back() = cut[i];  // keep the true end
+            kept.back() = cut[i];  // keep the true end, unless that brings it too close to the point before
+            size_t n = kept.size();
+            if (std::hypot(kept[n - 1].x - kept[n - 2].x, kept[n - 1].y - kept[n - 2].y) < kShortest) kept.pop_back();
         }
     }
     return kept;

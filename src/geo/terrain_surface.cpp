@@ -112,9 +112,10 @@ std::vector<uint32_t> TerrainSurface::trianglesNear(double x0, double y0, double
     return found;
 }
 
-std::optional<double> TerrainSurface::heightAt(Vec2d p) const {
+std::optional<TerrainSurface::PointOnSurface> TerrainSurface::triangleAt(Vec2d p) const {
     constexpr double kSlack = 1e-9;  // barycentric: a point on an edge is in both triangles
-    double bestMin = -std::numeric_limits<double>::infinity(), height = 0;
+    double bestMin = -std::numeric_limits<double>::infinity();
+    PointOnSurface best;
     for (uint32_t t : trianglesNear(p.x, p.y, p.x, p.y)) {
         const Vec3f &a = positions_[indices_[3 * t]], &b = positions_[indices_[3 * t + 1]], &c = positions_[indices_[3 * t + 2]];
         double d = (double(b.y) - c.y) * (double(a.x) - c.x) + (double(c.x) - b.x) * (double(a.y) - c.y);
@@ -123,10 +124,19 @@ std::optional<double> TerrainSurface::heightAt(Vec2d p) const {
         double lb = ((double(c.y) - a.y) * (p.x - c.x) + (double(a.x) - c.x) * (p.y - c.y)) / d;
         double lc = 1 - la - lb;
         double lowest = std::min({la, lb, lc});
-        if (lowest > bestMin) bestMin = lowest, height = la * a.z + lb * b.z + lc * c.z;
+        if (lowest > bestMin) {
+            bestMin = lowest;
+            best.triangle = t;
+            best.height = la * a.z + lb * b.z + lc * c.z;
+        }
     }
     if (bestMin < -kSlack) return std::nullopt;
-    return height;
+    return best;
+}
+
+std::optional<double> TerrainSurface::heightAt(Vec2d p) const {
+    std::optional<PointOnSurface> on = triangleAt(p);
+    return on ? std::optional<double>(on->height) : std::nullopt;
 }
 
 std::optional<double> TerrainSurface::extreme(std::span<const Vec2d> polygon, const HeightPlane &plane,

@@ -29,6 +29,13 @@ class TerrainSurface {
     // The surface's height at p, or nullopt off the mesh. A point on an edge or vertex reads
     // any triangle holding it (they agree there up to rounding).
     std::optional<double> heightAt(Vec2d p) const;
+    // The triangle (an index into the mesh's triangles) under p and the height there, or
+    // nullopt off the mesh; on a shared edge, the triangle p lies deepest in.
+    struct PointOnSurface {
+        uint32_t triangle = 0;
+        double height = 0;
+    };
+    std::optional<PointOnSurface> triangleAt(Vec2d p) const;
     // The highest and lowest point of the surface over a simple polygon (either winding),
     // boundary included, or nullopt where the polygon misses the mesh. Exact for the
     // piecewise-linear surface up to double rounding: the extreme is at a polygon corner, a

@@ -130,7 +130,7 @@ TEST(GenerateBuildings, ABuildingWithoutBaseStandsOnTheGroundOverAPlinth) {
     std::vector<Vec2f> asked;
     GroundHeight ground = [&](const std::vector<Vec2f> &footprint) {
         asked = footprint;
-        return 42.5f;
+        return std::optional<float>(42.5f);
     };
     RenderSceneBuilder builder;
     builder.addMaterial(Material::lambertian("default", Vec3f(0.8f)));

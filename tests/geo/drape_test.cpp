@@ -60,23 +60,23 @@ void expectWatertight(const DrapedTerrain &terrain, const HeightGrid &grid) {
 std::vector<DrapeArea> testAreas(const HeightGrid &grid) {
     std::vector<DrapeArea> areas;
     // Classes below the park's and the shrubs' so that those keep their whole outline.
-    LandClass classes[] = {LandClass::Farmland, LandClass::Grassland, LandClass::Other, LandClass::Grassland};
+    LandClass classes[] = {LandClass::Farmland, LandClass::Grassland, LandClass::Other, LandClass::Grassland, {}};
     for (uint32_t i = 0; i < 8; ++i) {
         MapPoint centre{grid.west + 20 + 160 * unitRandom(7, i), grid.south + 20 + 120 * unitRandom(8, i)};
-        areas.push_back({star(centre, 12 + 10 * unitRandom(9, i), 24, i), classes[i % 4], i});
+        areas.push_back({star(centre, 12 + 10 * unitRandom(9, i), 24, i), classes[i % 4], i, {}});
     }
     double s = grid.spacing;
     MapPoint n = grid.nodePoint(10, 10);
     areas.push_back({{n, {n.easting + 6 * s, n.northing}, {n.easting + 6 * s, n.northing + 4 * s}, {n.easting, n.northing + 4 * s}},
-                     LandClass::Park, 100});
+                     LandClass::Park, 100, {}});
     MapPoint m = grid.nodePoint(60, 20);  // touches row line 20 at one point from above
     areas.push_back({{{m.easting + 0.3 * s, m.northing}, {m.easting + 2.7 * s, m.northing + 1.5 * s},
                       {m.easting - 1.2 * s, m.northing + 2.2 * s}},
-                     LandClass::Shrubs, 101});
-    areas.push_back({star({grid.west, grid.south + 60}, 30, 17, 55), LandClass::Road, 102});  // half outside
+                     LandClass::Shrubs, 101, {}});
+    areas.push_back({star({grid.west, grid.south + 60}, 30, 17, 55), LandClass::Road, 102, {}});  // half outside
     areas.push_back({{{grid.west + 31.1, grid.south + 101.05}, {grid.west + 75.3, grid.south + 101.0501},
                       {grid.west + 53.2, grid.south + 101.07}},
-                     LandClass::Other, 103});  // a sliver
+                     LandClass::Other, 103, {}});  // a sliver
     return areas;
 }
 
@@ -183,9 +183,9 @@ TEST(DrapeAreas, OverlapsGoToTheHigherPriority) {
         MapPoint p{grid.west + x0, grid.south + y0};
         return MapRing{p, {p.easting + size, p.northing}, {p.easting + size, p.northing + size}, {p.easting, p.northing + size}};
     };
-    std::vector<DrapeArea> areas{{square(10.3, 10.7, 100), LandClass::Farmland, 0},
-                                 {square(60.1, 50.9, 100), LandClass::Forest, 1},
-                                 {square(30.2, 20.4, 20), LandClass::Water, 2}};
+    std::vector<DrapeArea> areas{{square(10.3, 10.7, 100), LandClass::Farmland, 0, {}},
+                                 {square(60.1, 50.9, 100), LandClass::Forest, 1, {}},
+                                 {square(30.2, 20.4, 20), LandClass::Water, 2, {}}};
     DrapedTerrain terrain = drapeAreas(grid, kFrame, areas, {});
     expectWatertight(terrain, grid);
     std::vector<double> sums(3, 0);
@@ -201,8 +201,8 @@ TEST(DrapeAreas, OverlapsGoToTheHigherPriority) {
 
 TEST(DrapeAreas, WaterIsFlatAtTheLowestPointOfItsOutline) {
     HeightGrid grid = test::roughTerrain(81, 61, 2.5, kSouthWest, 5);
-    DrapeArea lake{star({grid.west + 90, grid.south + 75}, 40, 31, 11), LandClass::Water, 0};
-    DrapeArea forest{star({grid.west + 120, grid.south + 70}, 40, 31, 12), LandClass::Forest, 1};
+    DrapeArea lake{star({grid.west + 90, grid.south + 75}, 40, 31, 11), LandClass::Water, 0, {}};
+    DrapeArea forest{star({grid.west + 120, grid.south + 70}, 40, 31, 12), LandClass::Forest, 1, {}};
     DrapedTerrain terrain = drapeAreas(grid, kFrame, {lake, forest}, {});
     expectWatertight(terrain, grid);
     float level = terrain.waterLevel[0];
@@ -240,7 +240,7 @@ TEST(DrapeAreas, WaterIsFlatAtTheLowestPointOfItsOutline) {
 TEST(DrapeAreas, CellsWithoutDataAreLeftOut) {
     HeightGrid grid = test::roughTerrain(31, 31, 3.0, kSouthWest, 6);
     grid.node(10, 12) = NAN;
-    std::vector<DrapeArea> areas{{star({grid.west + 30, grid.south + 36}, 15, 20, 3), LandClass::Forest, 0}};
+    std::vector<DrapeArea> areas{{star({grid.west + 30, grid.south + 36}, 15, 20, 3), LandClass::Forest, 0, {}}};
     DrapedTerrain terrain = drapeAreas(grid, kFrame, areas, {});
     GridLines lines = gridLines(grid, kFrame);
     double hole = 4 * 9.0;  // the four cells around the node
@@ -267,8 +267,8 @@ TEST(DrapeAreas, LandscapeUvsAreLocalMetresOverTheTile) {
 TEST(DrapeAreas, RejectsBrokenOutlines) {
     HeightGrid grid = test::flatTerrain(5, 5, 1.0, kSouthWest, 0);
     MapPoint p = grid.nodePoint(1, 1);
-    EXPECT_THROW(drapeAreas(grid, kFrame, {{{p, p, {p.easting + 1, p.northing}}, LandClass::Forest, 0}}, {}), InputError);
-    EXPECT_THROW(drapeAreas(grid, kFrame, {{{p, {NAN, 1}, {p.easting + 1, p.northing}}, LandClass::Forest, 0}}, {}),
+    EXPECT_THROW(drapeAreas(grid, kFrame, {{{p, p, {p.easting + 1, p.northing}}, LandClass::Forest, 0, {}}}, {}), InputError);
+    EXPECT_THROW(drapeAreas(grid, kFrame, {{{p, {NAN, 1}, {p.easting + 1, p.northing}}, LandClass::Forest, 0, {}}}, {}),
                  InputError);
 }
 

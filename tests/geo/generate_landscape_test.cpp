@@ -159,11 +159,34 @@ TEST_F(Landscape, AtkisLayersBecomeSurfacesRibbonsAndTrees) {
         Vec3f at{tree.objectToWorld.m[3], tree.objectToWorld.m[7], tree.objectToWorld.m[11]};
         EXPECT_GE(at.x, -90.0f);
         EXPECT_LE(at.x, -10.0f);
-        EXPECT_NEAR(at.z, *surface.heightAt({at.x, at.y}), 1e-3);
+        std::optional<double> ground = surface.heightAt({at.x, at.y});
+        ASSERT_TRUE(ground);
+        EXPECT_NEAR(at.z, *ground, 1e-3);
     }
     RenderScene again = build(d);
     ASSERT_EQ(again.instances.size(), s.instances.size());
     for (size_t i = 0; i < s.instances.size(); ++i) EXPECT_EQ(again.instances[i].objectToWorld, s.instances[i].objectToWorld);
+}
+
+// A forest with a road through it and a pond in it: no tree on the road or in the pond.
+TEST_F(Landscape, TreesKeepOffRoadsAndWater) {
+    write("forest.geojson", R"({"type": "FeatureCollection",
+ "crs": {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::25832"}},
+ "features": [
+  {"type": "Feature", "properties": {"OBJART": 4107, "OBJID": "F1"},
+   "geometry": {"type": "Polygon", "coordinates": [[[530010, 5326010], [530190, 5326010], [530190, 5326190], [530010, 5326190], [530010, 5326010]]]}},
+  {"type": "Feature", "properties": {"OBJART": 5112, "OBJID": "W1"},
+   "geometry": {"type": "Polygon", "coordinates": [[[530120, 5326120], [530170, 5326120], [530170, 5326170], [530120, 5326170], [530120, 5326120]]]}},
+  {"type": "Feature", "properties": {"OBJART": 3101, "BRF": "0060", "OBJID": "R1"},
+   "geometry": {"type": "LineString", "coordinates": [[530000, 5326080], [530200, 5326080]]}}
+ ]})");
+    RenderScene s = build(scene("<landscape><dgm file=\"dgm.asc\"/><atkis file=\"forest.geojson\"/></landscape>\n"));
+    ASSERT_GT(s.instances.size(), 500u);
+    for (const Instance &tree : s.instances) {
+        float x = tree.objectToWorld.m[3], y = tree.objectToWorld.m[7];  // local: the origin is (530100, 5326100)
+        EXPECT_GE(std::abs(y - -20.0f), 3.0f + 1.5f) << x << ", " << y;  // the road: 6 m wide, 1.5 m clearance
+        EXPECT_FALSE(x > 20 && x < 70 && y > 20 && y < 70) << x << ", " << y;  // the pond
+    }
 }
 
 TEST_F(Landscape, TooManyTreesIsAnError) {

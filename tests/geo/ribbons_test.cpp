@@ -100,7 +100,7 @@ TEST(Ribbons, CornersKeepTheWidthUpToTheMiterLimit) {
 // ribbons keep their lift (5–9 cm) above, far beyond the float rounding of a vertex (< 0.1 mm).
 TEST(Ribbons, NeverBelowTheTerrain) {
     HeightGrid grid = test::roughTerrain(161, 161, 1.0, kSouthWest, 31);
-    DrapeArea lake{{at(grid, 20, 20), at(grid, 60, 25), at(grid, 55, 50), at(grid, 25, 45)}, LandClass::Water, 0};
+    DrapeArea lake{{at(grid, 20, 20), at(grid, 60, 25), at(grid, 55, 50), at(grid, 25, 45)}, LandClass::Water, 0, {}};
     Terrain terrain(grid, {lake});
 
     struct Line {
