@@ -147,7 +147,7 @@ def main(folder):
         line(3101, hill_road, BRF="0055", OBJID="DEBWT002"),
         line(3102, forest_track, OBJID="DEBWT003"),
         line(3201, rail, GLS="1000", OBJID="DEBWT004"),
-        line(4202, [(1230, 785), (1500, 758), (1790, 702)], OBJID="DEBWV009"),
+        line(4202, [(1230, 797), (1500, 770), (1790, 713)], OBJID="DEBWV009"),  # 10 m north of the road
     ]
     write_layer(folder, "water", water)
     write_layer(folder, "landcover", cover)
