@@ -182,15 +182,18 @@ class AreaRanking {
     bool better(uint32_t a, uint32_t b) const {
         return b == kNoArea || priorities_[a] > priorities_[b] || (priorities_[a] == priorities_[b] && a < b);
     }
-    // `crossed` lists an area once per crossing; `parity` is all zero, one per area, and is
-    // left so.
-    uint32_t winner(const std::vector<uint32_t> &crossed, std::vector<uint8_t> &parity) const {
-        for (uint32_t area : crossed) parity[area] ^= 1;
+    // `crossed` lists an area once per crossing (and is sorted here): the areas crossed an odd
+    // number of times hold the point. Sorting the few crossings costs nothing per area, so
+    // thousands of areas do not slow each piece down.
+    uint32_t winner(std::vector<uint32_t> &crossed) const {
+        std::sort(crossed.begin(), crossed.end());
         uint32_t best = kNoArea;
-        for (uint32_t area : crossed) {
-            if (parity[area] && better(area, best)) best = area;
+        for (size_t i = 0; i < crossed.size();) {
+            size_t end = i;
+            while (end < crossed.size() && crossed[end] == crossed[i]) ++end;
+            if ((end - i) % 2 == 1 && better(crossed[i], best)) best = crossed[i];
+            i = end;
         }
-        for (uint32_t area : crossed) parity[area] = 0;
         return best;
     }
     size_t size() const { return priorities_.size(); }
@@ -205,7 +208,7 @@ class AreaRanking {
 // right.
 template <typename K>
 uint32_t areaAt(const typename K::Point_2 &p, const std::vector<OutlineEdge> &row, const AreaRanking &ranking,
-                std::vector<uint32_t> &crossed, std::vector<uint8_t> &parity) {
+                std::vector<uint32_t> &crossed) {
     using Point = typename K::Point_2;
     constexpr double kMargin = 1e-6;  // metres; far above the centroid's rounding
     double px = CGAL::to_double(p.x()), py = CGAL::to_double(p.y());
@@ -228,7 +231,7 @@ uint32_t areaAt(const typename K::Point_2 &p, const std::vector<OutlineEdge> &ro
         CGAL::Orientation side = CGAL::orientation(a, b, p);
         if (side == (aBelow ? CGAL::LEFT_TURN : CGAL::RIGHT_TURN)) crossed.push_back(e.area);
     }
-    return ranking.winner(crossed, parity);
+    return ranking.winner(crossed);
 }
 
 using Segment = std::pair<Vec2d, Vec2d>;
@@ -290,7 +293,6 @@ void collectPieces(const Cdt &cdt, const DrapeGrid &g, int c, int r, const std::
                    const AreaRanking &ranking, std::vector<Piece> &pieces) {
     using K = typename Cdt::Geom_traits;
     std::vector<uint32_t> crossed;
-    std::vector<uint8_t> parity(ranking.size(), 0);
     for (auto face = cdt.finite_faces_begin(); face != cdt.finite_faces_end(); ++face) {
         Piece piece;
         for (int k = 0; k < 3; ++k) {
@@ -302,7 +304,7 @@ void collectPieces(const Cdt &cdt, const DrapeGrid &g, int c, int r, const std::
         }
         typename K::Point_2 centroid =
             CGAL::centroid(face->vertex(0)->point(), face->vertex(1)->point(), face->vertex(2)->point());
-        piece.area = areaAt<K>(centroid, row, ranking, crossed, parity);
+        piece.area = areaAt<K>(centroid, row, ranking, crossed);
         pieces.push_back(piece);
     }
 }

@@ -161,7 +161,13 @@ class VectorReader {
         AtkisData data;
         data.epsg = headerEpsg;
         for (OGRLayer *layer : dataset.GetLayers()) {
-            if (data.epsg == 0) data.epsg = layerEpsg(*layer);
+            // AtkisData has one CRS: layers of a file that name two are refused, not mixed.
+            int epsg = headerEpsg != 0 ? headerEpsg : layerEpsg(*layer);
+            if (data.epsg != 0 && epsg != 0 && epsg != data.epsg)
+                throw InputError(FileLoc{path_}, fmt::format("layer {} is in EPSG:{}, an earlier layer in EPSG:{}; "
+                                                             "give the layers of one file one CRS",
+                                                             layer->GetName(), epsg, data.epsg));
+            if (data.epsg == 0) data.epsg = epsg;
             layer->ResetReading();
             for (auto &feature : *layer) addFeature(*layer, *feature, data);
         }

@@ -183,6 +183,32 @@ TEST(VectorFile, NasClassesAndCrsNames) {
     EXPECT_EQ(advCrsEpsg("EPSG:4326"), 0);
 }
 
+// One file, one CRS: a GeoPackage whose second layer is in UTM 32 after a Gauss-Krüger one.
+TEST(VectorFile, LayersInTwoCrssAreAnError) {
+    TempFolder folder;
+    fs::path file = folder.path / "mixed.gpkg";
+    writeAtkisLayer(file, "GPKG");
+    {
+        GDALDatasetUniquePtr dataset(GDALDataset::Open(file.c_str(), GDAL_OF_VECTOR | GDAL_OF_UPDATE));
+        ASSERT_NE(dataset, nullptr);
+        OGRSpatialReference utm;
+        utm.importFromEPSG(25832);
+        OGRLayer *layer = dataset->CreateLayer("utm", &utm, wkbPoint, nullptr);
+        ASSERT_NE(layer, nullptr);
+        OGRFeatureUniquePtr feature(OGRFeature::CreateFeature(layer->GetLayerDefn()));
+        feature->SetGeometryDirectly(new OGRPoint(500000, 5600000));
+        ASSERT_EQ(layer->CreateFeature(feature.get()), OGRERR_NONE);
+    }
+    std::vector<std::string> warnings;
+    try {
+        readVectorFile(file, warnings);
+        FAIL() << "no error";
+    } catch (const InputError &e) {
+        EXPECT_NE(std::string(e.what()).find("layer utm is in EPSG:25832, an earlier layer in EPSG:31467"), std::string::npos)
+            << e.what();
+    }
+}
+
 TEST(VectorFile, UnreadableFile) {
     TempFolder folder;
     std::vector<std::string> warnings;
