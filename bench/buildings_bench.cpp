@@ -132,10 +132,8 @@ BENCHMARK(BM_Buildings)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond)->U
 
 int main(int argc, char **argv) {
     using namespace veduta;
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
     MedianReporter reporter;
-    benchmark::RunSpecifiedBenchmarks(&reporter);
+    if (!runBenchmarks(argc, argv, reporter)) return 1;
     const auto *small = reporter.find("BM_Buildings/1000");
     const auto *large = reporter.find("BM_Buildings/10000");
     if (small && large) {

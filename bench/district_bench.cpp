@@ -181,10 +181,8 @@ BENCHMARK(BM_Buildings)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 int main(int argc, char **argv) {
     using namespace veduta;
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
     MedianReporter reporter;
-    benchmark::RunSpecifiedBenchmarks(&reporter);
+    if (!runBenchmarks(argc, argv, reporter)) return 1;
     const auto *whole = reporter.find("BM_District");
     if (whole) {
         double total = whole->GetAdjustedRealTime();

@@ -36,4 +36,13 @@ class MedianReporter : public benchmark::ConsoleReporter {
     std::map<std::string, Run> medians_;
 };
 
+// The start of every benchmark program's main: Google Benchmark's options read, the
+// benchmarks run with `reporter`. False when the command line has options it does not know.
+inline bool runBenchmarks(int &argc, char **argv, MedianReporter &reporter) {
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return false;
+    benchmark::RunSpecifiedBenchmarks(&reporter);
+    return true;
+}
+
 }  // namespace veduta

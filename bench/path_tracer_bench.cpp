@@ -120,10 +120,8 @@ BENCHMARK(BM_EmbreeIncoherentIntersect1)->Arg(0)->Arg(1)->Unit(benchmark::kMilli
 }  // namespace veduta
 
 int main(int argc, char **argv) {
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
     veduta::MedianReporter reporter;
-    benchmark::RunSpecifiedBenchmarks(&reporter);
+    if (!veduta::runBenchmarks(argc, argv, reporter)) return 1;
     for (const std::string scene : {"0", "1"}) {
         const auto *traced = reporter.find("BM_PathTracerRays/" + scene);
         const auto *raw = reporter.find("BM_EmbreeIncoherentIntersect1/" + scene);

@@ -5,7 +5,6 @@
 #include <cstring>
 #include <limits>
 #include <memory>
-#include <mutex>
 #include <string>
 #include <vector>
 
@@ -21,11 +20,6 @@ namespace veduta {
 namespace {
 
 constexpr double kMaxNodes = 1e9;  // as for XYZ files: 4 GB of heights
-
-void registerGdalDrivers() {
-    static std::once_flag once;
-    std::call_once(once, [] { GDALAllRegister(); });
-}
 
 // The EPSG code of the raster's CRS, 0 when it has none or GDAL finds no EPSG code for it
 // (an ESRI .prj names its CRS by a WKT without authority).

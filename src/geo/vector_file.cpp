@@ -5,7 +5,6 @@
 #include <atomic>
 #include <cctype>
 #include <fstream>
-#include <mutex>
 #include <optional>
 #include <sstream>
 
@@ -57,8 +56,6 @@ std::string upper(std::string_view s) {
     for (char &c : out) c = char(std::toupper(static_cast<unsigned char>(c)));
     return out;
 }
-
-std::once_flag gdalRegistered;
 
 // NAS and GML readers write a .gfs schema file beside the file they read; reading a copy in
 // GDAL's memory file system keeps them from writing into the user's folders.
@@ -256,7 +253,7 @@ int advCrsEpsg(std::string_view urn) {
 AtkisData readVectorFile(const std::filesystem::path &path, std::vector<std::string> &warnings) {
     FileLoc loc{path.string(), 0, 0};
     if (!std::filesystem::exists(path)) throw InputError(loc, "cannot open file");
-    std::call_once(gdalRegistered, [] { GDALAllRegister(); });
+    registerGdalDrivers();
     GdalMessages messages;
     GDALDriverH driver = GDALIdentifyDriverEx(path.c_str(), GDAL_OF_VECTOR, nullptr, nullptr);
     std::string driverName = driver ? GDALGetDriverShortName(driver) : "";

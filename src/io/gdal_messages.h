@@ -2,12 +2,20 @@
 // readers that use GDAL collect them instead, to put them into an InputError or a warning.
 #pragma once
 
+#include <mutex>
 #include <string>
 #include <vector>
 
 #include <cpl_error.h>
+#include <gdal.h>
 
 namespace veduta {
+
+// GDAL's drivers, registered once per process before the first file is opened.
+inline void registerGdalDrivers() {
+    static std::once_flag once;
+    std::call_once(once, [] { GDALAllRegister(); });
+}
 
 // GDAL's messages on this thread while it lives, instead of on standard error.
 class GdalMessages {
