@@ -23,7 +23,7 @@
 #include "film/passes.h"
 #include "rel_mse.h"
 #include "render/renderer.h"
-#include "scene/build_scene.h"
+#include "assembly/build_scene.h"
 
 namespace veduta {
 namespace {

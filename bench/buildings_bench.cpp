@@ -20,7 +20,7 @@
 #include "city/building_rules.h"
 #include "core/hash.h"
 #include "median_reporter.h"
-#include "scene/material_file.h"
+#include "description/material_file.h"
 
 namespace veduta {
 namespace {

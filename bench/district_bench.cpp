@@ -18,7 +18,7 @@
 #include "city/generate_city.h"
 #include "city/roof_choice.h"
 #include "median_reporter.h"
-#include "scene/material_file.h"
+#include "description/material_file.h"
 
 namespace veduta {
 namespace {

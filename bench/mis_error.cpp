@@ -21,7 +21,7 @@
 #include "io/cubemap_files.h"
 #include "rel_mse.h"
 #include "render/renderer.h"
-#include "scene/build_scene.h"
+#include "assembly/build_scene.h"
 
 namespace veduta {
 namespace {

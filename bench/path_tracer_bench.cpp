@@ -25,7 +25,7 @@
 #include "render/renderer.h"
 #include "render/sampling.h"
 #include "render/surface_interaction.h"
-#include "scene/build_scene.h"
+#include "assembly/build_scene.h"
 
 namespace veduta {
 namespace {

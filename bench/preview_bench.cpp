@@ -28,7 +28,7 @@
 #include "osmesa_renderer.h"
 #include "preview/preview.h"
 #include "io/output_files.h"
-#include "scene/build_scene.h"
+#include "assembly/build_scene.h"
 #include "scene/shapes.h"
 
 namespace veduta {

@@ -12,7 +12,7 @@
 #include "app/commands.h"
 #include "app/run_guarded.h"
 #include "core/error.h"
-#include "geo/crs.h"
+#include "geodesy/crs.h"
 
 namespace veduta {
 

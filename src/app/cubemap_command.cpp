@@ -11,8 +11,8 @@
 #include "app/run_guarded.h"
 #include "app/scene_loading.h"
 #include "io/cubemap_files.h"
-#include "scene/build_environment.h"
-#include "scene/build_scene.h"
+#include "assembly/build_environment.h"
+#include "assembly/build_scene.h"
 #include "scene/cubemap_layout.h"
 
 namespace veduta {

@@ -12,7 +12,7 @@
 #include "app/scene_loading.h"
 #include "app/study_scene.h"
 #include "io/scene_export.h"
-#include "scene/build_scene.h"
+#include "assembly/build_scene.h"
 
 namespace veduta {
 

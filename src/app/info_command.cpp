@@ -7,7 +7,7 @@
 #include "app/run_guarded.h"
 #include "app/scene_loading.h"
 #include "render/bvh.h"
-#include "scene/build_scene.h"
+#include "assembly/build_scene.h"
 
 namespace veduta {
 

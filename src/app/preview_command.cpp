@@ -11,7 +11,7 @@
 #include "app/scene_loading.h"
 #include "preview/preview.h"
 #include "io/output_files.h"
-#include "scene/build_scene.h"
+#include "assembly/build_scene.h"
 
 namespace veduta {
 

@@ -21,7 +21,7 @@
 #include "io/output_files.h"
 #include "render/bvh.h"
 #include "render/renderer.h"
-#include "scene/build_scene.h"
+#include "assembly/build_scene.h"
 #include "scene/scene_hash.h"
 
 namespace veduta {

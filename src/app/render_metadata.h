@@ -9,7 +9,7 @@
 #include "core/layered_image.h"
 #include "core/render_attributes.h"
 #include "render/renderer.h"
-#include "scene/scene_description.h"
+#include "description/scene_description.h"
 
 namespace veduta {
 

@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "scene/build_scene.h"
+#include "assembly/build_scene.h"
 
 namespace veduta {
 

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "scene/render_scene.h"
-#include "scene/scene_description.h"
+#include "description/scene_description.h"
 
 namespace veduta {
 

@@ -6,7 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "scene/scene_description.h"
+#include "description/scene_description.h"
 
 namespace veduta {
 

@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "scene/material_file.h"
+#include "description/material_file.h"
 
 namespace veduta {
 

@@ -8,7 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "scene/scene_description.h"
+#include "description/scene_description.h"
 
 namespace veduta {
 

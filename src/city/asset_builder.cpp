@@ -5,6 +5,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "core/check.h"
+
 namespace veduta {
 
 namespace {
@@ -39,7 +41,7 @@ std::vector<uint32_t> triangulate(std::span<const Vec2f> outline) {
         size_t i = 0;
         while (i < left.size() && !isEar(i)) ++i;
         // Built-in outlines are simple polygons; one without an ear is a bug in its model.
-        if (i == left.size()) throw std::logic_error("asset outline is not a simple polygon");
+        VEDUTA_CHECK(i != left.size(), "asset outline is not a simple polygon");
         size_t n = left.size();
         triangles.insert(triangles.end(), {left[(i + n - 1) % n], left[i], left[(i + 1) % n]});
         left.erase(left.begin() + std::ptrdiff_t(i));

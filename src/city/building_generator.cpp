@@ -8,6 +8,7 @@
 #include "city/asset_fitting.h"
 #include "city/roof_choice.h"
 #include "city/start_shapes.h"
+#include "core/check.h"
 #include "core/hash.h"
 
 namespace veduta {
@@ -23,8 +24,8 @@ BuildingGenerator::BuildingGenerator(const Grammar &grammar, const AssetLibrary 
     : grammar_(grammar), assets_(assets), builder_(builder), palette_(builder), seed_(seed), limits_(limits),
       plainWall_(*assets.find("Wall0")) {
     for (size_t a = 0; a < assets.size(); ++a)
-        if (assets[uint32_t(a)].surfaces.size() > kMaxSurfaces)
-            throw std::logic_error(fmt::format("the model {} has more surfaces than a prototype key holds", assets[uint32_t(a)].name));
+        VEDUTA_CHECK(assets[uint32_t(a)].surfaces.size() <= kMaxSurfaces,
+                     fmt::format("the model {} has more surfaces than a prototype key holds", assets[uint32_t(a)].name));
 }
 
 PrototypeId BuildingGenerator::prototypeFor(const PrototypeKey &key) {

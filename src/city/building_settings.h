@@ -10,18 +10,9 @@
 #include <vector>
 
 #include "city/rules.h"
+#include "description/settings_map.h"
 
 namespace veduta {
-
-using SettingsMap = std::unordered_map<std::string, SettingValue>;
-
-// A setting's value from its text: a number when the whole text reads as one.
-SettingValue settingValue(std::string text, const FileLoc &loc);
-
-class XmlElement;
-// seed 000's <BuildingSettings>: each child element's name is a setting and its text the value,
-// a number or a string. A setting given twice is an error.
-SettingsMap readBuildingSettings(const XmlElement &element);
 
 // Layers looked up front to back: the first layer that defines a name wins. The layers are
 // pointers: the maps must outlive the stack.

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "core/check.h"
 #include "core/hash.h"
 
 namespace veduta {
@@ -26,7 +27,7 @@ Grammar::Grammar(const RuleSet &rules, const ModelIndex &modelIndex) : rules_(&r
                 else if (auto model = modelIndex(successor.name))
                     targets.push_back({true, *model});
                 else  // readRuleFile reports these at their place
-                    throw std::logic_error(fmt::format("the rule set was not checked: '{}' is unknown", successor.name));
+                    VEDUTA_UNREACHABLE(fmt::format("the rule set was not checked: '{}' is unknown", successor.name));
             }
         }
     }

@@ -2,20 +2,14 @@
 // building of the group into the render scene.
 #pragma once
 
-#include <functional>
-#include <optional>
 #include <string>
 #include <vector>
 
+#include "description/scene_description.h"
+#include "geo/ground_height.h"
 #include "scene/render_scene.h"
-#include "scene/scene_description.h"
 
 namespace veduta {
-
-// The height a footprint stands on when its building gives none: the landscape's lowest
-// terrain point under it (docs/landscape.md); nullopt where the footprint misses the terrain.
-// An empty function: flat ground at 0.
-using GroundHeight = std::function<std::optional<float>(const std::vector<Vec2f> &footprint)>;
 
 // How far a building's plinth reaches below its datum on terrain.
 inline constexpr float kPlinthDepth = 0.5f;

@@ -11,7 +11,7 @@
 #include "city/footprint.h"
 #include "city/street_geometry.h"
 #include "scene/render_scene.h"
-#include "scene/scene_description.h"
+#include "description/scene_description.h"
 
 namespace veduta {
 

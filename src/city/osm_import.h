@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "city/city_data.h"
-#include "scene/georeference.h"
+#include "geodesy/georeference.h"
 
 namespace veduta {
 

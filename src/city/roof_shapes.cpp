@@ -14,6 +14,7 @@
 
 #include "city/roof_faces.h"
 #include "city/roof_gables.h"
+#include "core/check.h"
 
 namespace veduta {
 
@@ -438,7 +439,7 @@ Attempt buildSloped(RoofType type, const RoofFootprint &footprint, float wallTop
     }
     case RoofType::Flat: break;
     }
-    throw std::logic_error("a flat roof is not sloped");
+    VEDUTA_UNREACHABLE("a flat roof is not sloped");
 }
 
 void checkArguments(const RoofFootprint &footprint, const RoofOptions &options) {

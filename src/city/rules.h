@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "core/vecmath.h"
+#include "description/settings_map.h"
 
 namespace veduta {
 
@@ -68,14 +69,6 @@ struct Branch {
 struct Rule {
     std::string predecessor;
     std::vector<Branch> branches;
-    FileLoc loc;
-};
-
-// A setting given in a <BuildingSettings> element: the element's name and its text, a number
-// or a string.
-struct SettingValue {
-    std::string text;
-    std::optional<float> number;
     FileLoc loc;
 };
 

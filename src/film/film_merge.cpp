@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "core/check.h"
 #include "core/error.h"
 #include "core/render_attributes.h"
 #include "film/passes.h"
@@ -239,9 +240,8 @@ void copyWindow(const std::vector<float> &from, const PixelWindow &fromWindow, s
 }  // namespace
 
 LayeredImage mergeFilms(const std::vector<LayeredImage> &images, const std::vector<std::string> &names) {
-    if (images.empty() || images.size() != names.size()) {
-        throw std::logic_error("mergeFilms needs one name per part and at least one part");
-    }
+    VEDUTA_CHECK(!images.empty() && images.size() == names.size(),
+                 "mergeFilms needs one name per part and at least one part");
     std::vector<Part> parts;
     for (size_t i = 0; i < images.size(); ++i) parts.push_back(readPart(images[i], names[i]));
     for (const Part &part : parts) checkSameRender(part, parts[0]);

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "core/check.h"
+
 namespace veduta {
 
 namespace {
@@ -96,7 +98,7 @@ RgbaImage combinedImage(const LayeredImage &image) {
     RgbaImage rgba(image.dataWindow.width(), image.dataWindow.height());
     for (int c = 0; c < 4; ++c) {
         const LayeredImage::Channel *channel = image.find(passChannel("Combined", names[c]));
-        if (!channel) throw std::logic_error("the image has no Combined pass");
+        VEDUTA_CHECK(channel, "the image has no Combined pass");
         for (size_t p = 0; p < channel->values.size(); ++p) rgba.pixels()[p * 4 + size_t(c)] = channel->values[p];
     }
     return rgba;

@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "geo/map_point.h"
+#include "geodesy/map_point.h"
 
 namespace veduta {
 

@@ -9,7 +9,7 @@
 
 #include "geo/atkis.h"
 #include "geo/height_grid.h"
-#include "geo/local_frame.h"
+#include "geodesy/local_frame.h"
 #include "scene/mesh.h"
 
 namespace veduta {

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "geo/atkis.h"
-#include "geo/map_point.h"
+#include "geodesy/map_point.h"
 
 namespace veduta {
 

@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "geo/map_point.h"
+#include "geodesy/map_point.h"
 
 namespace veduta {
 

@@ -11,11 +11,11 @@
 
 #include "core/hash.h"
 #include "geo/atkis.h"
-#include "geo/crs.h"
+#include "geodesy/crs.h"
 #include "geo/dgm_file.h"
 #include "geo/drape_areas.h"
 #include "geo/edbs.h"
-#include "geo/local_frame.h"
+#include "geodesy/local_frame.h"
 #include "geo/ribbons.h"
 #include "geo/terrain_mesh.h"
 #include "geo/terrain_surface.h"

@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "city/generate_buildings.h"
-#include "scene/georeference.h"
+#include "geodesy/georeference.h"
+#include "geo/ground_height.h"
 #include "scene/render_scene.h"
-#include "scene/scene_description.h"
+#include "description/scene_description.h"
 
 namespace veduta {
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "geo/height_grid.h"
-#include "geo/local_frame.h"
+#include "geodesy/local_frame.h"
 
 namespace veduta {
 

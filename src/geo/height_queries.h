@@ -10,7 +10,7 @@
 #include <optional>
 
 #include "geo/height_grid.h"
-#include "geo/map_point.h"
+#include "geodesy/map_point.h"
 
 namespace veduta {
 

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "geo/atkis.h"
-#include "geo/local_frame.h"
+#include "geodesy/local_frame.h"
 #include "geo/terrain_surface.h"
 #include "scene/mesh.h"
 

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "geo/height_grid.h"
-#include "geo/local_frame.h"
+#include "geodesy/local_frame.h"
 #include "scene/mesh.h"
 
 namespace veduta {

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "film/film.h"
-#include "render/renderer.h"
+#include "film/render_stats.h"
 
 namespace veduta {
 

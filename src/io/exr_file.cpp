@@ -16,7 +16,7 @@
 #include <OpenEXR/ImfStringAttribute.h>
 #include <fmt/format.h>
 
-#include "io/atomic_file.h"
+#include "core/atomic_file.h"
 
 namespace veduta {
 

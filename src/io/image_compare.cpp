@@ -12,7 +12,7 @@
 
 #include "core/error.h"
 #include "core/rel_mse.h"
-#include "io/atomic_file.h"
+#include "core/atomic_file.h"
 
 namespace veduta {
 

@@ -8,7 +8,7 @@
 #include <png.h>
 #include <unistd.h>
 
-#include "io/atomic_file.h"
+#include "core/atomic_file.h"
 #include "io/exr_file.h"
 
 // Written with OpenEXR and libpng directly rather than through OpenImageIO: Debian's

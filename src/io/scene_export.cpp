@@ -17,7 +17,7 @@
 #include <fmt/format.h>
 
 #include "core/axes.h"
-#include "io/atomic_file.h"
+#include "core/atomic_file.h"
 
 namespace veduta {
 

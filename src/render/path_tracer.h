@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "film/film.h"
+#include "film/render_stats.h"
 #include "render/bvh.h"
 #include "render/lights.h"
 #include "render/material_lookup.h"
@@ -14,20 +15,6 @@
 #include "render/surface_interaction.h"
 
 namespace veduta {
-
-struct RayCounts {
-    uint64_t camera = 0;
-    uint64_t bounce = 0;
-    uint64_t shadow = 0;
-
-    uint64_t total() const { return camera + bounce + shadow; }
-    RayCounts &operator+=(const RayCounts &o) {
-        camera += o.camera;
-        bounce += o.bounce;
-        shadow += o.shadow;
-        return *this;
-    }
-};
 
 class PathTracer {
   public:

@@ -8,18 +8,11 @@
 
 #include "core/layered_image.h"
 #include "film/film.h"
+#include "film/render_stats.h"
 #include "render/bvh.h"
 #include "render/path_tracer.h"
 
 namespace veduta {
-
-// What a render has done so far; with the film, all a resumed render needs.
-struct RenderStats {
-    uint32_t samplesDone = 0;  // passes completed: no pixel has more samples than this
-    RayCounts rays;
-    double seconds = 0;
-    uint64_t nonFiniteSamples = 0;  // samples that came out NaN or infinite, counted as black
-};
 
 struct RenderOptions {
     bool showProgress = false;

@@ -8,7 +8,7 @@
 #include <unistd.h>
 
 #include "city/generate_buildings.h"
-#include "scene/build_scene.h"
+#include "assembly/build_scene.h"
 
 namespace veduta {
 namespace {

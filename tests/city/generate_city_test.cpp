@@ -4,7 +4,7 @@
 #include <set>
 
 #include "city/generate_city.h"
-#include "scene/build_scene.h"
+#include "assembly/build_scene.h"
 
 namespace veduta {
 namespace {

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "geo/crs.h"
+#include "geodesy/crs.h"
 
 namespace veduta {
 namespace {

@@ -13,7 +13,7 @@
 #include <unistd.h>
 
 #include "geo/terrain_surface.h"
-#include "scene/build_scene.h"
+#include "assembly/build_scene.h"
 
 namespace veduta {
 namespace {

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "scene/georeference.h"
+#include "geodesy/georeference.h"
 
 namespace veduta {
 namespace {

@@ -11,9 +11,9 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
-#include "scene/build_scene.h"
-#include "scene/material_file.h"
-#include "scene/scene_description.h"
+#include "assembly/build_scene.h"
+#include "description/material_file.h"
+#include "description/scene_description.h"
 
 namespace veduta {
 namespace {

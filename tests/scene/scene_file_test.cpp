@@ -1,8 +1,8 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
-#include "scene/build_scene.h"
-#include "scene/scene_description.h"
+#include "assembly/build_scene.h"
+#include "description/scene_description.h"
 #include "test_scenes.h"
 
 namespace veduta {

@@ -5,8 +5,8 @@
 
 #include <string_view>
 
-#include "geo/crs.h"
-#include "geo/map_point.h"
+#include "geodesy/crs.h"
+#include "geodesy/map_point.h"
 
 namespace veduta {
 

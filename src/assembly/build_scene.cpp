@@ -1,4 +1,4 @@
-#include "scene/build_scene.h"
+#include "assembly/build_scene.h"
 
 #include <algorithm>
 #include <map>
@@ -11,7 +11,7 @@
 #include "geo/generate_landscape.h"
 #include "io/image_library.h"
 #include "io/mesh_import.h"
-#include "scene/build_environment.h"
+#include "assembly/build_environment.h"
 
 namespace veduta {
 

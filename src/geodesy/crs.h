@@ -9,7 +9,7 @@
 #include <span>
 #include <string_view>
 
-#include "geo/map_point.h"
+#include "geodesy/map_point.h"
 
 namespace veduta {
 

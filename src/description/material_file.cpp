@@ -1,4 +1,4 @@
-#include "scene/material_file.h"
+#include "description/material_file.h"
 
 #include <array>
 #include <string_view>

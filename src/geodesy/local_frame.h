@@ -5,7 +5,7 @@
 #pragma once
 
 #include "core/vecmath.h"
-#include "geo/map_point.h"
+#include "geodesy/map_point.h"
 
 namespace veduta {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "scene/render_scene.h"
-#include "scene/scene_description.h"
+#include "description/scene_description.h"
 
 namespace veduta {
 

@@ -1,4 +1,4 @@
-#include "geo/crs.h"
+#include "geodesy/crs.h"
 
 #include <array>
 #include <cctype>

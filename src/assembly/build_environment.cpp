@@ -1,4 +1,4 @@
-#include "scene/build_environment.h"
+#include "assembly/build_environment.h"
 
 #include <fmt/format.h>
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "io/xml_reader.h"
-#include "scene/scene_description.h"
+#include "description/scene_description.h"
 
 namespace veduta {
 

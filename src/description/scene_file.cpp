@@ -8,8 +8,8 @@
 #include <fmt/format.h>
 
 #include "io/xml_reader.h"
-#include "scene/material_file.h"
-#include "scene/scene_description.h"
+#include "description/material_file.h"
+#include "description/scene_description.h"
 
 namespace veduta {
 

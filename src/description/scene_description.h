@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "city/building_settings.h"
 #include "core/error.h"
+#include "description/settings_map.h"
 #include "scene/camera.h"
 #include "scene/environment.h"
-#include "scene/georeference.h"
+#include "geodesy/georeference.h"
 #include "scene/material.h"
 #include "scene/render_settings.h"
 #include "scene/shapes.h"

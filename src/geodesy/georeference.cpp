@@ -1,4 +1,4 @@
-#include "scene/georeference.h"
+#include "geodesy/georeference.h"
 
 #include <cmath>
 #include <stdexcept>

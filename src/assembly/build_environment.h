@@ -4,7 +4,7 @@
 #pragma once
 
 #include "scene/environment.h"
-#include "scene/scene_description.h"
+#include "description/scene_description.h"
 
 namespace veduta {
 
