@@ -28,7 +28,7 @@ std::string roofTypeNames() {
 // one at random. Unset: seed 000's choice.
 RoofType chosenType(const Footprint &footprint, const SettingsStack &settings, uint32_t seed, uint32_t buildingId) {
     const SettingValue *value = settings.find("RoofType");
-    if (!value) return chooseRoofKind(footprint) == RoofKind::Gable ? RoofType::Gable : RoofType::Mansard;
+    if (!value) return thesisRoofType(footprint);
     std::string text = value->text;
     std::replace(text.begin(), text.end(), ',', ' ');
     std::istringstream words(text);
@@ -66,6 +66,13 @@ std::optional<float> pitchSetting(const SettingsStack &settings) {
 }
 
 }  // namespace
+
+RoofType thesisRoofType(const Footprint &footprint) {
+    bool gable = footprint.edgeCount() == 4 &&
+                 std::count(footprint.streetEdges.begin(), footprint.streetEdges.end(), true) == 1 &&
+                 isRightAngled(footprint);
+    return gable ? RoofType::Gable : RoofType::Mansard;
+}
 
 RoofOptions roofOptionsFor(const Footprint &footprint, const SettingsStack &settings, const BuildingHeights &heights,
                            uint32_t seed, uint32_t buildingId) {

@@ -14,6 +14,11 @@ namespace veduta {
 
 inline constexpr float kDefaultParapetHeight = 0.8f;  // ParapetHeight, metres
 
+// Seed 000's choice (Bilke 2009, §2.4.3, CreateRoof), what a building gets without RoofType: a
+// gable when the footprint has four vertices, exactly one street edge and right angles (within
+// kRightAngleToleranceDegrees); a mansard otherwise.
+RoofType thesisRoofType(const Footprint &footprint);
+
 // The roof options for one building. RoofHeight 0 gives a flat roof. Without RoofPitch, the
 // pitch is the one that raises the roof RoofHeight over the building's half depth (the half
 // shorter side of a rectangle, else 2·area / perimeter, the radius of a circle of the same

@@ -2,9 +2,7 @@
 
 #include "city/roof_faces.h"
 
-#include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 namespace veduta {
 
@@ -28,11 +26,6 @@ void addFlatTop(Mesh &m, const std::vector<Vec2f> &outline, float z) {
     }
     for (uint32_t index : triangulatePolygon(outline)) m.indices.push_back(base + index);
     m.triangleMaterials.resize(m.triangleCount(), RoofCovering);
-}
-
-size_t firstStreetEdge(const Footprint &footprint) {
-    auto street = std::find(footprint.streetEdges.begin(), footprint.streetEdges.end(), true);
-    return street == footprint.streetEdges.end() ? 0 : size_t(street - footprint.streetEdges.begin());
 }
 
 // An inset outline is a roof top when every edge still runs the way its footprint edge does,
@@ -66,38 +59,6 @@ bool isRightAngled(const Footprint &footprint) {
         if (std::abs(cosine) > tolerance) return false;
     }
     return true;
-}
-
-RoofKind chooseRoofKind(const Footprint &footprint) {
-    bool gable = footprint.edgeCount() == 4 &&
-                 std::count(footprint.streetEdges.begin(), footprint.streetEdges.end(), true) == 1 &&
-                 isRightAngled(footprint);
-    return gable ? RoofKind::Gable : RoofKind::Mansard;
-}
-
-Mesh gableRoof(const Footprint &footprint, float eavesHeight, float roofHeight) {
-    if (footprint.edgeCount() != 4) throw std::invalid_argument("a gable roof needs a footprint of four points");
-    if (!(roofHeight > 0)) throw std::invalid_argument("a gable roof needs a positive roof height");
-    // P1 → P2 is the street edge; the thesis' corners, in its order.
-    size_t street = firstStreetEdge(footprint);
-    float eavesZ = footprint.base + eavesHeight;
-    Vec3f p[4];
-    for (size_t k = 0; k < 4; ++k) p[k] = lift(footprint.points[(street + k) % 4], eavesZ);
-    Vec3f rise{0, 0, roofHeight};
-    Vec3f ridge1 = (p[3] + p[0]) * 0.5f + rise, ridge2 = (p[1] + p[2]) * 0.5f + rise;
-
-    Mesh m;
-    addSlope(m, {p[0], p[1], ridge2, ridge1});
-    addSlope(m, {p[2], p[3], ridge1, ridge2});
-    // The gable ends carry on their facades' walls: metres along the perimeter and up, as the
-    // walls' texture runs (building_generator.h).
-    for (size_t k : {size_t(1), size_t(3)}) {
-        size_t edge = (street + k) % 4;
-        UvPlane wall = wallUvPlane(footprint.edgeStart(edge), footprint.edgeDirection(edge),
-                                   footprint.perimeterBefore(edge), footprint.base);
-        addFace(m, {p[k], p[(k + 1) % 4], k == 1 ? ridge2 : ridge1}, wall, RoofGableWall);
-    }
-    return m;
 }
 
 MansardRoof mansardRoof(const Footprint &footprint, float eavesHeight, float roofHeight, float inset) {

@@ -1,6 +1,6 @@
-// Seed 000's roofs (CreateRoof, thesis L1320–1355, digest-000 §4): a gable roof over a
-// rectangular house on one street, a flat-topped mansard roof over everything else. Further
-// roof kinds join RoofKind and get their own builders.
+// Seed 000's mansard roof (CreateRoof, Bilke 2009, §2.4.3: a flat-topped mansard over every house
+// but the rectangular ones on one street, which get a gable; roof_shapes.h builds that gable and
+// every other roof type, roof_choice.h makes the thesis' choice).
 #pragma once
 
 #include <vector>
@@ -10,12 +10,7 @@
 
 namespace veduta {
 
-enum class RoofKind { Gable, Mansard };
-
-// Seed 000's choice: a gable when the footprint has four vertices, exactly one street edge and
-// right angles (within kRightAngleToleranceDegrees); a mansard otherwise.
 inline constexpr float kRightAngleToleranceDegrees = 1;
-RoofKind chooseRoofKind(const Footprint &footprint);
 // Whether every corner of the footprint is a right angle within kRightAngleToleranceDegrees.
 bool isRightAngled(const Footprint &footprint);
 
@@ -23,12 +18,6 @@ bool isRightAngled(const Footprint &footprint);
 // in metres, and triangleMaterials holding RoofSurface values. Heights are above the
 // footprint's base.
 enum RoofSurface : MaterialId { RoofCovering = 0, RoofGableWall = 1 };
-
-// A ridge parallel to the first street edge (edge 0 when none faces a street), through the
-// midpoints of the two edges next to it, roofHeight above the eaves: two slopes (RoofCovering)
-// and two gable ends (RoofGableWall, walls whose UVs continue their facade's). Needs a
-// footprint of four points.
-Mesh gableRoof(const Footprint &footprint, float eavesHeight, float roofHeight);
 
 struct MansardRoof {
     Mesh mesh;

@@ -7,6 +7,7 @@
 #include <tuple>
 #include <vector>
 
+#include "city/roof_choice.h"
 #include "city/roofs.h"
 
 namespace veduta {
@@ -65,93 +66,16 @@ void expectUvsInMetres(const Mesh &m) {
     for (size_t t = 0; t < m.triangleCount(); ++t) EXPECT_NEAR(uvArea(m, t), area(m, t), 1e-3f) << "triangle " << t;
 }
 
-TEST(Roofs, GableOverTheRectangle) {
-    Mesh m = gableRoof(rectangle({true, false, false, false}), 15, 4);
-    expectWellFormed(m);
-    EXPECT_EQ(distinctPositions(m), 6u);
-    // The thesis draws 2 gable triangles and 2 slope quads, 2·3 + 2·4 = 14 indices; stored as
-    // triangles the quads take 2 each: 6 triangles, 18 indices.
-    EXPECT_EQ(countSurface(m, RoofGableWall), 2u);
-    EXPECT_EQ(countSurface(m, RoofCovering), 2u * 2);
-    EXPECT_EQ(m.indices.size(), 18u);
-    std::vector<Vec3f> ridge;
-    for (const Vec3f &p : m.positions) {
-        if (p.z > 15) ridge.push_back(p);
-        EXPECT_TRUE(p.z == 15 || p.z == 19) << p.z;
-    }
-    // The ridge joins the midpoints of the east and west edges, which meet the street edge:
-    // it runs parallel to the street, 4 m above the eaves.
-    ASSERT_FALSE(ridge.empty());
-    for (const Vec3f &p : ridge) {
-        EXPECT_TRUE(p == Vec3f(0, 6, 19) || p == Vec3f(20, 6, 19)) << p.x << " " << p.y << " " << p.z;
-    }
-    EXPECT_TRUE(std::any_of(ridge.begin(), ridge.end(), [](Vec3f p) { return p.x == 0; }));
-    EXPECT_TRUE(std::any_of(ridge.begin(), ridge.end(), [](Vec3f p) { return p.x == 20; }));
-}
-
-TEST(Roofs, GableFacesPointOutAndUp) {
-    Mesh m = gableRoof(rectangle({true, false, false, false}), 15, 4);
-    Vec3f middle{10, 6, 15};
-    for (size_t t = 0; t < m.triangleCount(); ++t) {
-        Vec3f n = geometricNormal(m, t);
-        EXPECT_GT(dot(n, centroid(m, t) - middle), 0) << "triangle " << t;
-        if (m.triangleMaterials[t] == RoofCovering) {
-            // The slopes rise 4 m over 6 m: normals (0, ∓4, 6)/√52.
-            EXPECT_NEAR(n.z, 6 / std::sqrt(52.0f), 1e-5f);
-            EXPECT_NEAR(std::abs(n.y), 4 / std::sqrt(52.0f), 1e-5f);
-        } else {
-            EXPECT_NEAR(std::abs(n.x), 1, 1e-6f) << "the gables stand on the east and west walls";
-        }
-    }
-}
-
-TEST(Roofs, GableUvs) {
-    Mesh m = gableRoof(rectangle({true, false, false, false}), 15, 4);
-    for (size_t t = 0; t < m.triangleCount(); ++t) {
-        if (m.triangleMaterials[t] == RoofCovering) {
-            EXPECT_NEAR(uvArea(m, t), area(m, t), 1e-3f) << "triangle " << t;
-            continue;
-        }
-        // The gables continue their walls' texture: u in metres along the perimeter from point
-        // 0 (the east wall starts 20 m along it, the west wall 52 m), v the height above the base.
-        for (int k = 0; k < 3; ++k) {
-            uint32_t v = m.indices[3 * t + size_t(k)];
-            Vec3f p = m.positions[v];
-            float u = p.x == 20 ? 20 + p.y : 52 + 12 - p.y;  // east wall runs north, west wall south
-            EXPECT_FLOAT_EQ(m.uvs[v].x, u);
-            EXPECT_FLOAT_EQ(m.uvs[v].y, p.z);
-        }
-    }
-    // The front slope's eaves run from u = 0 to 20 at v = 0; its ridge lies √52 m up the slant.
-    size_t front = 0;
-    for (size_t v = 0; v < m.vertexCount(); ++v) {
-        if (m.normals[v].y >= 0 || m.normals[v].z <= 0) continue;
-        ++front;
-        EXPECT_NEAR(m.uvs[v].x, m.positions[v].x, 1e-5f);
-        EXPECT_NEAR(m.uvs[v].y, m.positions[v].z == 15 ? 0 : std::sqrt(52.0f), 1e-5f);
-    }
-    EXPECT_EQ(front, 4u);
-}
-
-TEST(Roofs, GableOnAShortStreetEdgeRunsTheRidgeAlongIt) {
-    Mesh m = gableRoof(rectangle({false, true, false, false}), 15, 4);
-    std::set<std::pair<float, float>> ridge;
-    for (const Vec3f &p : m.positions) {
-        if (p.z == 19) ridge.insert({p.x, p.y});
-    }
-    EXPECT_EQ(ridge, (std::set<std::pair<float, float>>{{10, 0}, {10, 12}}));
-}
-
-TEST(Roofs, ChooseRoofKind) {
-    EXPECT_EQ(chooseRoofKind(rectangle({true, false, false, false})), RoofKind::Gable);
-    EXPECT_EQ(chooseRoofKind(rectangle({true, true, false, false})), RoofKind::Mansard);
-    EXPECT_EQ(chooseRoofKind(rectangle({false, false, false, false})), RoofKind::Mansard);
+TEST(Roofs, ThesisRoofType) {
+    EXPECT_EQ(thesisRoofType(rectangle({true, false, false, false})), RoofType::Gable);
+    EXPECT_EQ(thesisRoofType(rectangle({true, true, false, false})), RoofType::Mansard);
+    EXPECT_EQ(thesisRoofType(rectangle({false, false, false, false})), RoofType::Mansard);
     Footprint l = lShape();
     l.streetEdges[0] = true;
-    EXPECT_EQ(chooseRoofKind(l), RoofKind::Mansard);
+    EXPECT_EQ(thesisRoofType(l), RoofType::Mansard);
     // A parallelogram has four corners but not right ones.
     Footprint slanted{{{0, 0}, {20, 0}, {23, 12}, {3, 12}}, {true, false, false, false}, 0};
-    EXPECT_EQ(chooseRoofKind(slanted), RoofKind::Mansard);
+    EXPECT_EQ(thesisRoofType(slanted), RoofType::Mansard);
     // Turned by 30°, the rectangle's angles are right within float rounding.
     Footprint turned = rectangle({true, false, false, false});
     Transform rotation = Transform::rotate(2, 30);
@@ -159,7 +83,7 @@ TEST(Roofs, ChooseRoofKind) {
         Vec3f q = rotation.applyPoint(lift(p, 0));
         p = {q.x, q.y};
     }
-    EXPECT_EQ(chooseRoofKind(turned), RoofKind::Gable);
+    EXPECT_EQ(thesisRoofType(turned), RoofType::Gable);
 }
 
 TEST(Roofs, MansardOverAnLShape) {
