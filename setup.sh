@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # veduta set-up on Debian 12: installs the Debian packages that are missing, builds, and then
 #   ./setup.sh         renders the built-in default scene to renders/default.exr and .png
-#   ./setup.sh test    builds with the tests and runs the whole suite through ctest
+#   ./setup.sh test    builds with the tests and runs the whole suite through ctest, then the
+#                      unit tests once more under AddressSanitizer + UBSan (preset sanitize)
 #   ./setup.sh stills  renders the publication stills of every example scene to renders/stills/
 # Run it as root or as a user who may use sudo (only apt-get needs it).
 set -euo pipefail
@@ -14,7 +15,7 @@ case "$mode" in
 esac
 
 packages=(
-    cmake g++ make pkg-config ccache time
+    cmake g++ make pkg-config ccache time clang-format
     libembree-dev libopenimageio-dev openimageio-tools libopenexr-dev libopencolorio-dev opencolorio-tools
     libgeographiclib-dev libcgal-dev libgdal-dev libtbb-dev libpugixml-dev libcli11-dev
     libgtest-dev libbenchmark-dev libspdlog-dev libfmt-dev libassimp-dev libboost-dev libpng-dev libosmesa6-dev
@@ -32,6 +33,8 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 jobs=$(nproc)
+# Compiler caches hit from any checkout folder: paths below it are hashed relative.
+export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=1
 if [ "$mode" = render ]; then
     cmake --preset release
     cmake --build --preset release -j "$jobs"
@@ -49,4 +52,7 @@ else
     cmake --preset test
     cmake --build --preset test -j "$jobs"
     ctest --preset test -j "$jobs"
+    cmake --preset sanitize
+    cmake --build --preset sanitize -j "$jobs"
+    ctest --preset sanitize -j "$jobs"
 fi
