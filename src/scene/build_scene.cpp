@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <string>
 
 #include <fmt/format.h>
@@ -55,12 +56,27 @@ class SceneAssembler {
             builder_.addInstance(
                 {inst.transform, it->second, override, inst.objectId, inst.buildingId, uint32_t(i + 1)});
         }
-        GroundHeight ground;
-        if (d_.landscape) ground = generateLandscape(*d_.landscape, d_.georeference, builder_, warnings_);
+        // The cities are read first: their streets are cut into the landscape's terrain, and
+        // then they are built on it.
+        std::vector<CityData> cities;
+        std::vector<LocalPolygon> streetAreas;
+        for (const CityDesc &city : d_.cities) {
+            cities.push_back(readCity(city));
+            if (!d_.landscape) continue;
+            for (LocalPolygon &piece : streetAreaPieces(streetNetworkOf(cities.back())))
+                streetAreas.push_back(std::move(piece));
+        }
+        std::optional<LandscapeGround> landscape;
+        if (d_.landscape)
+            landscape = generateLandscape(*d_.landscape, d_.georeference, streetAreas, builder_, warnings_);
+        GroundHeight ground = landscape ? landscape->ground : GroundHeight();
         for (const BuildingGroupDesc &group : d_.buildingGroups) generateBuildings(group, ground, builder_, warnings_);
         // A city's buildings take the ids after those the scene file gives out.
         uint32_t nextBuildingId = firstFreeBuildingId();
-        for (const CityDesc &city : d_.cities) nextBuildingId += generateCity(city, nextBuildingId, builder_, warnings_);
+        for (size_t i = 0; i < d_.cities.size(); ++i) {
+            nextBuildingId += generateCity(d_.cities[i], cities[i], landscape ? &*landscape : nullptr, nextBuildingId,
+                                           builder_, warnings_);
+        }
         return std::move(builder_).build();
     }
 
