@@ -50,7 +50,8 @@ class BoxIndex {
 struct Strip {
     uint32_t from = 0, to = 0;
     Vec2d start, d, n;  // n = up × d
-    double length = 0, half = 0;
+    double length = 0, half = 0;  // half: of carriageway and sidewalks
+    double roadHalf = 0;          // of the carriageway
     std::vector<double> cuts;    // distances along where the height may change slope; empty: level throughout
     std::vector<uint32_t> vars;  // the height variable at each cut (the first and last: the end nodes' platforms)
 
@@ -115,7 +116,8 @@ class StreetHeights {
             Strip s;
             s.from = street.from, s.to = street.to, s.start = a, s.length = length;
             s.d = (1 / length) * ab, s.n = {-s.d.y, s.d.x};
-            s.half = double(street.width / 2 + style.sidewalkWidth);
+            s.roadHalf = double(street.width / 2);
+            s.half = s.roadHalf + double(style.sidewalkWidth);
             jointRadius_[s.from] = std::max(jointRadius_[s.from], s.half);
             jointRadius_[s.to] = std::max(jointRadius_[s.to], s.half);
             strip_.push_back(std::move(s));
@@ -138,22 +140,24 @@ class StreetHeights {
     }
 
     // A node's platform reaches along each of its streets as far as the joint sticks out of the
-    // street's strip and as far as any two of its strips overlap: there the height is the node's.
+    // street's strip, as far as any two of its strips overlap and, at a junction, as far as its
+    // StreetJunction surface: there the height is the node's, and the junction is level.
     void platformRadii() {
         struct End {
             Vec2d d;
-            double half;
+            double half, roadHalf;
         };
         std::vector<std::vector<End>> ends(network_.nodes.size());
         for (const Strip &s : strip_) {
-            ends[s.from].push_back({s.d, s.half});
-            ends[s.to].push_back({-1 * s.d, s.half});
+            ends[s.from].push_back({s.d, s.half, s.roadHalf});
+            ends[s.to].push_back({-1 * s.d, s.half, s.roadHalf});
         }
         radius_.assign(network_.nodes.size(), 0);
         for (size_t n = 0; n < ends.size(); ++n) {
             double r = 0, joint = jointRadius_[n];
             for (const End &a : ends[n]) {
                 r = std::max(r, std::sqrt(std::max(0.0, joint * joint - a.half * a.half)));
+                if (ends[n].size() >= 3) r = std::max(r, kJunctionReach * a.roadHalf / std::cos(kPi / kStreetJointSides));
                 for (const End &b : ends[n])
                     if (&a != &b) r = std::max(r, overlapReach(a.d, a.half, b.d, b.half));
             }

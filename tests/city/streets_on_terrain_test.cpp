@@ -188,6 +188,39 @@ TEST(StreetsOnTerrain, PiecesMeetWithoutStepsAndTheKerbClosesTheSidewalk) {
     EXPECT_GT(tall, kerbZ.size() * 9 / 10);  // the rest: cut points in the middle of a kerb face
 }
 
+// The largest height difference within one junction's surface (its triangles within 12 m of
+// the node): none, a junction is a level platform.
+float junctionTilt(const Mesh &streets, Vec2f node) {
+    float low = 1e9f, high = -1e9f;
+    for (size_t t = 0; t < streets.triangleCount(); ++t) {
+        if (streets.triangleMaterials[t] != StreetJunction) continue;
+        for (int k = 0; k < 3; ++k) {
+            const Vec3f &p = streets.positions[streets.indices[3 * t + size_t(k)]];
+            if (std::hypot(p.x - node.x, p.y - node.y) > 12) continue;
+            low = std::min(low, p.z), high = std::max(high, p.z);
+        }
+    }
+    return high - low;
+}
+
+TEST(StreetsOnTerrain, JunctionsAreLevel) {
+    Terrain hill(hillside());
+    StreetNetwork network = town();
+    Mesh streets = streetsOnTerrain(network, hill.surface);
+    for (uint32_t node : {1u, 2u, 4u}) {  // the T, the crossing and the corner of the fork street
+        EXPECT_LT(junctionTilt(streets, network.nodes[node]), 1e-4f) << node;
+    }
+    // Where two 12 m streets cross, the junction surface reaches farther along them than their
+    // sidewalks overlap.
+    StreetNetwork wide;
+    wide.nodes = {{0, 0}, {-80, 0}, {80, 0}, {0, -80}, {0, 80}};
+    wide.streets = {{0, 1, 12}, {0, 2, 12}, {0, 3, 12}, {0, 4, 12}};
+    EXPECT_LT(junctionTilt(streetsOnTerrain(wide, hill.surface), {0, 0}), 1e-4f);
+    Mesh draped = streets;  // each vertex on the ground instead: the slope shows
+    for (Vec3f &p : draped.positions) p.z = float(*hill.surface.heightAt({p.x, p.y}));
+    EXPECT_GT(junctionTilt(draped, network.nodes[2]), 0.5f);
+}
+
 TEST(StreetsOnTerrain, EveryPartOfThePlanIsCovered) {
     // The lifted surfaces cover exactly the plan's area, kind by kind: no gaps, no overlaps.
     Terrain hill(hillside());
