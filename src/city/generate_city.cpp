@@ -14,6 +14,7 @@
 #include "city/street_geometry.h"
 #include "city/warning_list.h"
 #include "core/hash.h"
+#include "geo/map_projection.h"
 
 namespace veduta {
 
@@ -112,9 +113,26 @@ uint32_t buildCity(const CityData &data, uint32_t seed, ObjectId objectId, const
     return id - firstBuildingId;
 }
 
-// Seed 000's CityData XML, or OpenStreetMap data, whose local frame centres on the data.
-CityData readCity(const CityDesc &city) {
-    CityData data = city.file.extension() == ".osm" ? importOsm(city.file, {}) : readCityData(city.file);
+// Seed 000's CityData XML, or OpenStreetMap data: with a georeference placed through the one
+// route into the scene's frame, without in local metres (OpenStreetMap's centring on the data).
+CityData readCityFile(const CityDesc &city, const std::optional<Georeference> &georeference) {
+    if (city.epsg != 0 && !georeference)
+        throw InputError(city.crsLoc, "a city in map coordinates (crs) needs the scene's <georeference "
+                                      "crs=\"EPSG:…\" origin=\"E N\"> to be placed");
+    if (city.file.extension() == ".osm") {
+        if (city.epsg != 0)
+            throw InputError(city.crsLoc, "OpenStreetMap data is WGS 84 longitude and latitude; leave out crs");
+        OsmImportOptions options;
+        options.georeference = georeference;
+        return importOsm(city.file, options);
+    }
+    if (!georeference) return readCityData(city.file);
+    MapProjection projection(crsByEpsg(city.epsg != 0 ? city.epsg : georeference->epsg), *georeference);
+    return readCityData(city.file, &projection);
+}
+
+CityData readCity(const CityDesc &city, const std::optional<Georeference> &georeference) {
+    CityData data = readCityFile(city, georeference);
     if (data.ruleFiles.empty() && !city.rules.empty()) {
         if (!std::filesystem::is_regular_file(city.rules))
             throw InputError(city.rulesLoc, fmt::format("cannot read the rule file {}", city.rules.string()));
@@ -139,11 +157,11 @@ uint32_t withWarnings(std::vector<std::string> &out, Build build) {
 
 }  // namespace
 
-uint32_t generateCity(const CityDesc &city, uint32_t firstBuildingId, RenderSceneBuilder &builder,
-                      std::vector<std::string> &out) {
+uint32_t generateCity(const CityDesc &city, const std::optional<Georeference> &georeference, uint32_t firstBuildingId,
+                      RenderSceneBuilder &builder, std::vector<std::string> &out) {
     if (!std::filesystem::is_regular_file(city.file))
         throw InputError(city.fileLoc, fmt::format("cannot read the city file {}", city.file.string()));
-    CityData data = readCity(city);
+    CityData data = readCity(city, georeference);
     return withWarnings(out, [&](std::vector<std::string> &warnings) {
         return buildCity(data, city.seed, city.objectId, city.fileLoc, firstBuildingId, builder, warnings);
     });

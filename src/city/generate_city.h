@@ -4,23 +4,28 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "city/city_data.h"
 #include "city/footprint.h"
 #include "city/street_geometry.h"
+#include "scene/georeference.h"
 #include "scene/render_scene.h"
 #include "scene/scene_description.h"
 
 namespace veduta {
 
 // Builds every lot of the city; its buildings take the ids from `firstBuildingId` on, in the
-// order of the file's blocks and lots. Returns how many ids it took. Warnings (a clockwise
-// block, probabilities renormalised …) are appended once each as "file:line:col: message";
-// errors throw InputError.
-uint32_t generateCity(const CityDesc &city, uint32_t firstBuildingId, RenderSceneBuilder &builder,
-                      std::vector<std::string> &warnings);
+// order of the file's blocks and lots. Returns how many ids it took. With the scene's
+// georeference the file's coordinates are map coordinates (CityData: of the <city>'s crs, by
+// default the scene's; OpenStreetMap: WGS 84) placed through geo/map_projection.h; without
+// one, local metres (OpenStreetMap: on the tangent plane at the data's centre). Warnings (a
+// clockwise block, probabilities renormalised …) are appended once each as
+// "file:line:col: message"; errors throw InputError.
+uint32_t generateCity(const CityDesc &city, const std::optional<Georeference> &georeference, uint32_t firstBuildingId,
+                      RenderSceneBuilder &builder, std::vector<std::string> &warnings);
 // The same for a city already read (or made in memory, as the benchmark does); errors about
 // the city as a whole (no rule file) have no place in a file.
 uint32_t generateCity(const CityData &data, uint32_t seed, ObjectId objectId, uint32_t firstBuildingId,
