@@ -16,6 +16,7 @@
 #include "city/streets_on_terrain.h"
 #include "city/warning_list.h"
 #include "core/hash.h"
+#include "geo/map_projection.h"
 
 namespace veduta {
 
@@ -144,11 +145,28 @@ uint32_t buildCity(const CityData &data, uint32_t seed, ObjectId objectId, const
 
 }  // namespace
 
-// Seed 000's CityData XML, or OpenStreetMap data, whose local frame centres on the data.
-CityData readCity(const CityDesc &city) {
+// Seed 000's CityData XML, or OpenStreetMap data: with a georeference placed through the one
+// route into the scene's frame, without in local metres (OpenStreetMap's centring on the data).
+CityData readCityFile(const CityDesc &city, const std::optional<Georeference> &georeference) {
+    if (city.epsg != 0 && !georeference)
+        throw InputError(city.crsLoc, "a city in map coordinates (crs) needs the scene's <georeference "
+                                      "crs=\"EPSG:…\" origin=\"E N\"> to be placed");
+    if (city.file.extension() == ".osm") {
+        if (city.epsg != 0)
+            throw InputError(city.crsLoc, "OpenStreetMap data is WGS 84 longitude and latitude; leave out crs");
+        OsmImportOptions options;
+        options.georeference = georeference;
+        return importOsm(city.file, options);
+    }
+    if (!georeference) return readCityData(city.file);
+    MapProjection projection(crsByEpsg(city.epsg != 0 ? city.epsg : georeference->epsg), *georeference);
+    return readCityData(city.file, &projection);
+}
+
+CityData readCity(const CityDesc &city, const std::optional<Georeference> &georeference) {
     if (!std::filesystem::is_regular_file(city.file))
         throw InputError(city.fileLoc, fmt::format("cannot read the city file {}", city.file.string()));
-    CityData data = city.file.extension() == ".osm" ? importOsm(city.file, {}) : readCityData(city.file);
+    CityData data = readCityFile(city, georeference);
     if (data.ruleFiles.empty() && !city.rules.empty()) {
         if (!std::filesystem::is_regular_file(city.rules))
             throw InputError(city.rulesLoc, fmt::format("cannot read the rule file {}", city.rules.string()));

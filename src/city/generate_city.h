@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,19 +12,23 @@
 #include "city/footprint.h"
 #include "city/street_geometry.h"
 #include "geo/generate_landscape.h"
+#include "scene/georeference.h"
 #include "scene/render_scene.h"
 #include "scene/scene_description.h"
 
 namespace veduta {
 
 // The city's file, CityData XML or OpenStreetMap (.osm), with the <city>'s rule file where the
-// data names none. The scene reads its cities first: their streets are cut into a landscape
+// data names none. With the scene's georeference the file's coordinates are map coordinates
+// (CityData: of the <city>'s crs, by default the scene's; OpenStreetMap: WGS 84) placed through
+// geo/map_projection.h; without one, local metres (OpenStreetMap: on the tangent plane at the
+// data's centre). The scene reads its cities first: their streets are cut into a landscape
 // before the city is built on it. Throws InputError.
-CityData readCity(const CityDesc &city);
+CityData readCity(const CityDesc &city, const std::optional<Georeference> &georeference);
 
-// Builds the streets and every lot of the city; its buildings take the ids from
-// `firstBuildingId` on, in the order of the file's blocks and lots. Returns how many ids it
-// took. With a `landscape`, the streets lie on its terrain (streetsOnTerrain) and every
+// Builds the streets and every lot of the city read by readCity; its buildings take the ids
+// from `firstBuildingId` on, in the order of the file's blocks and lots. Returns how many ids
+// it took. With a `landscape`, the streets lie on its terrain (streetsOnTerrain) and every
 // building stands on its ground with a plinth, as a <buildings> building without base does:
 // the terrain decides, the points' heights u are ignored (a warning says so where one is not
 // 0). Warnings (a clockwise block, probabilities renormalised …) are appended once each as

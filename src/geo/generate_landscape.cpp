@@ -16,6 +16,7 @@
 #include "geo/drape_areas.h"
 #include "geo/edbs.h"
 #include "geo/local_frame.h"
+#include "geo/map_projection.h"
 #include "geo/ribbons.h"
 #include "geo/terrain_mesh.h"
 #include "geo/terrain_surface.h"
@@ -84,20 +85,17 @@ bool isEdbs(const std::filesystem::path &file) {
     return in && std::string_view(head, 4) == "EDBS";
 }
 
-// Every point from `from` to `to`; a point that cannot be one of `from` (GeoJSON without a
-// crs member is WGS 84 longitude and latitude) is an error naming its object.
-void convertPoints(AtkisData &data, const Crs &from, const Crs &to) {
+// Every point into the scene's CRS; a point that cannot be one of the layer's CRS (GeoJSON
+// without a crs member is WGS 84 longitude and latitude) is an error naming its object.
+void convertPoints(AtkisData &data, const MapProjection &projection) {
     const AtkisObject *object = nullptr;
     auto convertPoint = [&](MapPoint &p) {
         try {
-            checkAxis(from, 0, p.easting);
-            checkAxis(from, 1, p.northing);
+            p = projection.toScene(p);
         } catch (const std::out_of_range &e) {
             throw std::invalid_argument(fmt::format("{}: ({}, {}) is no point of EPSG:{}: {}", object->where, p.easting,
-                                                    p.northing, from.epsg, e.what()));
+                                                    p.northing, projection.source().epsg, e.what()));
         }
-        CrsCoordinate c = convert(from, to, {p.easting, p.northing, 0});
-        p = {c.x, c.y};
     };
     for (AtkisObject &o : data.objects) {
         object = &o;
@@ -109,7 +107,7 @@ void convertPoints(AtkisData &data, const Crs &from, const Crs &to) {
 
 // A layer's objects in the scene's CRS. EDBS areas must close (an open outline names its
 // object); other sources are read through GDAL.
-AtkisData readLayer(const DataFileDesc &d, int sceneEpsg, std::vector<std::string> &warnings) {
+AtkisData readLayer(const DataFileDesc &d, const Georeference &georef, std::vector<std::string> &warnings) {
     if (!std::filesystem::is_regular_file(d.file))
         throw InputError(d.loc, fmt::format("cannot read the ATKIS file {}", d.file.string()));
     AtkisData data;
@@ -120,15 +118,15 @@ AtkisData readLayer(const DataFileDesc &d, int sceneEpsg, std::vector<std::strin
     } else {
         data = readVectorFile(d.file, warnings);
     }
-    int epsg = dataEpsg(d, data.epsg, sceneEpsg);
-    if (epsg != sceneEpsg) {
+    int epsg = dataEpsg(d, data.epsg, georef.epsg);
+    if (epsg != georef.epsg) {
         try {
-            convertPoints(data, crsByEpsg(epsg), crsByEpsg(sceneEpsg));
+            convertPoints(data, MapProjection(crsByEpsg(epsg), georef));
         } catch (const std::invalid_argument &e) {
             throw InputError(d.loc, e.what());
         }
     }
-    data.epsg = sceneEpsg;
+    data.epsg = georef.epsg;
     return data;
 }
 
@@ -203,7 +201,7 @@ class LandscapeBuilder {
           builder_(builder), warnings_(warnings) {
         grid_ = readTerrain(land, georef.epsg, warnings);
         for (const DataFileDesc &d : land.layers) {
-            AtkisData layer = readLayer(d, georef.epsg, warnings);
+            AtkisData layer = readLayer(d, georef, warnings);
             for (AtkisObject &o : layer.objects) objects_.push_back(std::move(o));
         }
     }

@@ -121,7 +121,8 @@ Intrusions intoStreets(const RenderScene &s, const std::vector<LocalPolygon> &st
         MaterialId m = terrain.triangleMaterials[t];
         found.forestTriangles += m == forest, found.meadowTriangles += m == meadow, found.streetTriangles += m == street;
     }
-    for (const Instance &tree : s.instances) found.trees += inStreets(streets, {tree.objectToWorld.m[3], tree.objectToWorld.m[7]});
+    for (const Instance &tree : s.instances)
+        found.trees += inStreets(streets, {tree.objectToWorld.m[3], tree.objectToWorld.m[7]});
     return found;
 }
 
@@ -188,7 +189,8 @@ TEST_F(CityOnTerrain, TheTerrainDecidesAndSaysSoWhenThePointsHaveHeights) {
     std::vector<std::string> warnings;
     generateCity(data, 3, 1, 1, builder, warnings, &ground);
     size_t said = 0;
-    for (const std::string &w : warnings) said += w.find("the heights u of its points (point 2: 12) are ignored") != std::string::npos;
+    for (const std::string &w : warnings)
+        said += w.find("the heights u of its points (point 2: 12) are ignored") != std::string::npos;
     EXPECT_EQ(said, 1u);
     // Flat at u = 0, nothing to say.
     std::vector<std::string> none;
@@ -207,10 +209,9 @@ TEST(HillsideTown, StreetsLieOnTheTerrainAndHousesOnTheLowestGroundUnderThem) {
     MaterialId bare = materialNamed(s, "land/bare"), asphalt = materialNamed(s, "street/asphalt");
     for (const BakedMesh &m : s.meshes) {
         if (m.mesh.triangleCount() == 0) continue;
-        MaterialId first = m.mesh.triangleMaterials[0];
-        if (!terrain && std::count(m.mesh.triangleMaterials.begin(), m.mesh.triangleMaterials.end(), bare) > 0) terrain = &m.mesh;
-        if (std::count(m.mesh.triangleMaterials.begin(), m.mesh.triangleMaterials.end(), asphalt) > 0 || first == asphalt)
-            streets.append(m.mesh, Transform());
+        const std::vector<MaterialId> &materials = m.mesh.triangleMaterials;
+        if (!terrain && std::count(materials.begin(), materials.end(), bare) > 0) terrain = &m.mesh;
+        if (std::count(materials.begin(), materials.end(), asphalt) > 0) streets.append(m.mesh, Transform());
     }
     ASSERT_TRUE(terrain);
     TerrainSurface surface(*terrain, {});
@@ -229,7 +230,8 @@ TEST(HillsideTown, StreetsLieOnTheTerrainAndHousesOnTheLowestGroundUnderThem) {
             m.mesh.triangleMaterials[0] != materialNamed(s, "plinth"))
             continue;
         std::vector<Vec2f> footprint;  // the plinth's top ring: the first vertex of each of its quads
-        for (size_t v = 0; v < m.mesh.positions.size(); v += 4) footprint.push_back({m.mesh.positions[v].x, m.mesh.positions[v].y});
+        for (size_t v = 0; v < m.mesh.positions.size(); v += 4)
+            footprint.push_back({m.mesh.positions[v].x, m.mesh.positions[v].y});
         double lowest = *surface.minOver(footprint);
         const test::Seat &seat = seated[m.buildingId];
         EXPECT_LE(seat.walls - lowest, kPlinthDepth) << m.buildingId;

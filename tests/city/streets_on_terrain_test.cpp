@@ -49,16 +49,6 @@ StreetNetwork town() {
     return n;
 }
 
-double heightIn(const Mesh &m, size_t t, double a, double b) {
-    const Vec3f &p = m.positions[m.indices[3 * t]], &q = m.positions[m.indices[3 * t + 1]], &r = m.positions[m.indices[3 * t + 2]];
-    return (1 - a - b) * double(p.z) + a * double(q.z) + b * double(r.z);
-}
-
-Vec2d planAt(const Mesh &m, size_t t, double a, double b) {
-    const Vec3f &p = m.positions[m.indices[3 * t]], &q = m.positions[m.indices[3 * t + 1]], &r = m.positions[m.indices[3 * t + 2]];
-    return {(1 - a - b) * p.x + a * q.x + b * r.x, (1 - a - b) * p.y + a * q.y + b * r.y};
-}
-
 TEST(StreetsOnTerrain, NoPointOfAStreetIsBelowTheTerrain) {
     for (uint32_t seed : {1u, 2u}) {
         Terrain rough(test::roughTerrain(41, 41, 5.0, kSouthWest, seed));  // a 0.8 slope, a 30 m ridge, noise
@@ -146,9 +136,9 @@ size_t steps(const Mesh &streets) {
         for (int e = 0; e < 3; ++e)
             for (double w : {0.25, 0.5, 0.75}) {
                 double a = e == 0 ? w : e == 1 ? 1 - w : 0, b = e == 0 ? 0 : e == 1 ? w : 1 - w;
-                Vec2d p = planAt(streets, t, a, b);
+                Vec3d p = test::pointIn(streets, t, a, b);
                 MaterialId kind = surface == StreetJunction ? StreetCarriageway : surface;
-                at[{cell(p.x), cell(p.y)}].push_back({heightIn(streets, t, a, b), kind});
+                at[{cell(p.x), cell(p.y)}].push_back({p.z, kind});
             }
     }
     size_t found = 0;

@@ -6,15 +6,12 @@
 
 namespace veduta::test {
 
-namespace {
-
 Vec3d pointIn(const Mesh &m, size_t t, double a, double b) {
-    const Vec3f &p = m.positions[m.indices[3 * t]], &q = m.positions[m.indices[3 * t + 1]], &r = m.positions[m.indices[3 * t + 2]];
+    const Vec3f &p = m.positions[m.indices[3 * t]], &q = m.positions[m.indices[3 * t + 1]];
+    const Vec3f &r = m.positions[m.indices[3 * t + 2]];
     auto mix = [&](float u, float v, float w) { return (1 - a - b) * double(u) + a * double(v) + b * double(w); };
     return {mix(p.x, q.x, r.x), mix(p.y, q.y, r.y), mix(p.z, q.z, r.z)};
 }
-
-}  // namespace
 
 size_t pointsBelow(const Mesh &mesh, const TerrainSurface &surface) {
     size_t below = 0;

@@ -10,6 +10,9 @@
 
 namespace veduta::test {
 
+// The point of triangle t at barycentric (a, b), in double from its float vertices.
+Vec3d pointIn(const Mesh &mesh, size_t t, double a, double b);
+
 // Points of `mesh` (every vertex and 30 inside each triangle, read in double from its float
 // vertices) below the terrain surface where it has one: no tolerance.
 size_t pointsBelow(const Mesh &mesh, const TerrainSurface &surface);
