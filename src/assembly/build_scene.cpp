@@ -2,13 +2,16 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <string>
+#include <utility>
 
 #include <fmt/format.h>
 
 #include "city/generate_buildings.h"
 #include "city/generate_city.h"
 #include "geo/generate_landscape.h"
+#include "io/georeferenced_mesh.h"
 #include "io/image_library.h"
 #include "io/mesh_import.h"
 #include "assembly/build_environment.h"
@@ -55,12 +58,27 @@ class SceneAssembler {
             builder_.addInstance(
                 {inst.transform, it->second, override, inst.objectId, inst.buildingId, uint32_t(i + 1)});
         }
-        GroundHeight ground;
-        if (d_.landscape) ground = generateLandscape(*d_.landscape, d_.georeference, builder_, warnings_);
+        // The cities are read first: their streets are cut into the landscape's terrain, and
+        // then they are built on it.
+        std::vector<CityData> cities;
+        std::vector<LocalPolygon> streetAreas;
+        for (const CityDesc &city : d_.cities) {
+            cities.push_back(readCity(city, d_.georeference));
+            if (!d_.landscape) continue;
+            for (LocalPolygon &piece : streetAreaPieces(streetNetworkOf(cities.back())))
+                streetAreas.push_back(std::move(piece));
+        }
+        std::optional<LandscapeGround> landscape;
+        if (d_.landscape)
+            landscape = generateLandscape(*d_.landscape, d_.georeference, streetAreas, builder_, warnings_);
+        GroundHeight ground = landscape ? landscape->ground : GroundHeight();
         for (const BuildingGroupDesc &group : d_.buildingGroups) generateBuildings(group, ground, builder_, warnings_);
         // A city's buildings take the ids after those the scene file gives out.
         uint32_t nextBuildingId = firstFreeBuildingId();
-        for (const CityDesc &city : d_.cities) nextBuildingId += generateCity(city, nextBuildingId, builder_, warnings_);
+        for (size_t i = 0; i < d_.cities.size(); ++i) {
+            nextBuildingId += generateCity(d_.cities[i], cities[i], landscape ? &*landscape : nullptr, nextBuildingId,
+                                           builder_, warnings_);
+        }
         return std::move(builder_).build();
     }
 
@@ -107,20 +125,32 @@ class SceneAssembler {
     // Equal keys mean equal meshes: the same file or shape parameters, and the same material.
     std::string sharingKey(const GeometryDesc &g) const {
         const std::string &material = g.material.name;
-        if (!g.shape) return fmt::format("mesh {} {}", g.meshFile.string(), material);
+        if (!g.shape) return fmt::format("mesh {} {} {}", g.meshFile.string(), g.meshEpsg, material);
         const ShapeSpec &s = *g.shape;
         return fmt::format("shape {} {} {} {} {} {} {} {} {} {}", int(s.kind), s.size.x, s.size.y, s.size.z, s.radius,
                            s.height, s.segments, s.rings, s.smooth, material);
     }
 
     const Mesh &meshFile(const GeometryDesc &g) {
-        auto it = meshFiles_.find(g.meshFile);
+        auto key = std::make_pair(g.meshFile, g.meshEpsg);
+        auto it = meshFiles_.find(key);
         if (it != meshFiles_.end()) return it->second;
+        std::optional<MapProjection> projection;
+        if (g.meshEpsg != 0) projection = meshProjection(g);
         try {
-            return meshFiles_.emplace(g.meshFile, importMesh(g.meshFile)).first->second;
+            Mesh mesh = projection ? importGeoreferencedMesh(g.meshFile, *projection) : importMesh(g.meshFile);
+            return meshFiles_.emplace(key, std::move(mesh)).first->second;
         } catch (const InputError &e) {
             throw InputError(g.meshFileLoc, e.what());
         }
+    }
+
+    // The one route of a mesh in map coordinates into the scene's frame.
+    MapProjection meshProjection(const GeometryDesc &g) const {
+        if (!d_.georeference)
+            throw InputError(g.meshCrsLoc, "a mesh in map coordinates (crs) needs the scene's <georeference "
+                                           "crs=\"EPSG:…\" origin=\"E N\"> to be placed");
+        return MapProjection(crsByEpsg(g.meshEpsg), *d_.georeference);
     }
 
     MaterialId material(const NameRef &ref) const {
@@ -133,7 +163,7 @@ class SceneAssembler {
     std::vector<std::string> &warnings_;
     RenderSceneBuilder builder_;
     std::map<std::string, PrototypeId> prototypeIds_;
-    std::map<std::filesystem::path, Mesh> meshFiles_;
+    std::map<std::pair<std::filesystem::path, int>, Mesh> meshFiles_;  // by file and CRS
     std::map<std::string, PrototypeId> repeatedGeometry_;
     MaterialId defaultMaterial_ = 0;
     std::shared_ptr<Textures> textures_;

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <unordered_map>
 
 #include <fmt/format.h>
 
 #include "city/footprint.h"
+#include "geodesy/map_projection.h"
 #include "io/xml_reader.h"
 
 namespace veduta {
@@ -19,8 +21,8 @@ constexpr float kOutsideTolerance = 0.01f;
 
 class CityDataReader {
   public:
-    CityDataReader(const XmlDocument &doc, std::filesystem::path baseDirectory)
-        : doc_(doc), baseDirectory_(std::move(baseDirectory)) {}
+    CityDataReader(const XmlDocument &doc, std::filesystem::path baseDirectory, const MapProjection *projection)
+        : doc_(doc), baseDirectory_(std::move(baseDirectory)), projection_(projection) {}
 
     CityData read() {
         XmlElement root(doc_, doc_.root());
@@ -91,12 +93,25 @@ class CityDataReader {
             point.e = coordinate(p, "e", true);
             point.n = coordinate(p, "n", true);
             point.u = coordinate(p, "u", false);
+            if (projection_) placeOnMap(point, p);
             p.checkLeaf();
             auto [it, fresh] = pointIndex_.emplace(point.id, uint32_t(city_.points.size()));
             if (!fresh)
                 p.failAt("id", fmt::format("point id {} is already used at {}", point.id,
                                            city_.points[it->second].loc.toString()));
             city_.points.push_back(point);
+        }
+    }
+
+    // The point's map coordinates as metres from the scene origin, in double.
+    void placeOnMap(CityPoint &point, const XmlElement &p) const {
+        try {
+            MapPoint local = projection_->toLocal({point.e, point.n});
+            point.e = local.easting;
+            point.n = local.northing;
+        } catch (const std::out_of_range &e) {
+            p.failAt("e", fmt::format("({}, {}) is no point of EPSG:{}: {}", point.e, point.n, projection_->source().epsg,
+                               e.what()));
         }
     }
 
@@ -272,6 +287,7 @@ class CityDataReader {
 
     const XmlDocument &doc_;
     std::filesystem::path baseDirectory_;
+    const MapProjection *projection_;
     CityData city_;
     std::unordered_map<uint32_t, uint32_t> pointIndex_;
     std::unordered_map<uint32_t, uint32_t> streetIndex_;
@@ -279,14 +295,15 @@ class CityDataReader {
 
 }  // namespace
 
-CityData readCityData(const std::filesystem::path &file) {
+CityData readCityData(const std::filesystem::path &file, const MapProjection *projection) {
     XmlDocument doc = XmlDocument::fromFile(file);
-    return CityDataReader(doc, file.parent_path()).read();
+    return CityDataReader(doc, file.parent_path(), projection).read();
 }
 
-CityData parseCityData(std::string xml, std::string name, const std::filesystem::path &baseDirectory) {
+CityData parseCityData(std::string xml, std::string name, const std::filesystem::path &baseDirectory,
+                       const MapProjection *projection) {
     XmlDocument doc = XmlDocument::fromString(std::move(xml), std::move(name));
-    return CityDataReader(doc, baseDirectory).read();
+    return CityDataReader(doc, baseDirectory, projection).read();
 }
 
 SettingsStack settingsFor(const CityData &city, const CityBlock &block, const CityLot *lot,

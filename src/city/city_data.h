@@ -16,7 +16,9 @@ namespace veduta {
 
 struct CityPoint {
     uint32_t id = 0;
-    double e = 0, n = 0, u = 0;  // metres, east, north, up
+    // Metres east, north and up: the file's own, or, read through a MapProjection, metres
+    // from the scene origin (still double, so no float ever holds a map coordinate).
+    double e = 0, n = 0, u = 0;
     FileLoc loc;
 };
 
@@ -54,10 +56,15 @@ struct CityData {
     std::vector<std::string> warnings;             // "file:line:col: message"
 };
 
-CityData readCityData(const std::filesystem::path &file);
+class MapProjection;
+
+// With a projection, the points' e and n are eastings and northings (or longitudes and
+// latitudes) of its source CRS, placed in the scene's frame; without, local metres as they are.
+CityData readCityData(const std::filesystem::path &file, const MapProjection *projection = nullptr);
 // The same for text in memory: `name` is what messages call it; rule files resolve against
 // `baseDirectory`.
-CityData parseCityData(std::string xml, std::string name, const std::filesystem::path &baseDirectory);
+CityData parseCityData(std::string xml, std::string name, const std::filesystem::path &baseDirectory,
+                       const MapProjection *projection = nullptr);
 
 // Seed 000's precedence: lot > block > city > the rule file's settings > built-in defaults.
 // The stack points at the maps, which must outlive it.

@@ -33,12 +33,6 @@ Footprint footprintOf(const BuildingDesc &building, const GroundHeight &ground, 
     return footprint;
 }
 
-void addPlinth(const BuildingSpec &spec, RenderSceneBuilder &builder) {
-    Mesh plinth = plinthMesh(spec.footprint, kPlinthDepth);
-    plinth.setMaterial(builder.findOrAddMaterial(Material::lambertian("plinth", {0.42f, 0.4f, 0.37f})));
-    builder.addWorldMesh(std::move(plinth), spec.objectId, spec.id);
-}
-
 void generateGroup(const BuildingGroupDesc &group, const GroundHeight &ground, RenderSceneBuilder &builder,
                    std::vector<std::string> &warnings) {
     if (!std::filesystem::is_regular_file(group.rules))

@@ -11,9 +11,12 @@
 #include "city/lot_subdivision.h"
 #include "city/osm_import.h"
 #include "city/building_rules.h"
+#include "city/plinth.h"
 #include "city/street_geometry.h"
+#include "city/streets_on_terrain.h"
 #include "city/warning_list.h"
 #include "core/hash.h"
+#include "geodesy/map_projection.h"
 
 namespace veduta {
 
@@ -69,11 +72,13 @@ std::vector<Footprint> lotsOf(const CityBlock &block, const StreetNetwork &stree
 
 namespace {
 
-// The street surfaces, in the scene's materials "street/asphalt", "street/pavement",
-// "street/kerb" and "street/cobblestone" (the junctions) when it has them.
-void addStreets(const StreetNetwork &streets, uint32_t objectId, RenderSceneBuilder &builder) {
+// The street surfaces, flat or on the landscape's terrain, in the scene's materials
+// "street/asphalt", "street/pavement", "street/kerb" and "street/cobblestone" (the junctions)
+// when it has them.
+void addStreets(const StreetNetwork &streets, const LandscapeGround *landscape, uint32_t objectId,
+                RenderSceneBuilder &builder) {
     if (streets.streets.empty()) return;
-    Mesh mesh = streetGeometry(streets);
+    Mesh mesh = landscape ? streetsOnTerrain(streets, *landscape->surface) : streetGeometry(streets);
     // In the order of StreetSurface.
     const std::pair<const char *, Vec3f> kinds[] = {{"street/asphalt", {0.16f, 0.16f, 0.17f}},
                                                     {"street/pavement", {0.45f, 0.43f, 0.4f}},
@@ -86,12 +91,35 @@ void addStreets(const StreetNetwork &streets, uint32_t objectId, RenderSceneBuil
     builder.addWorldMesh(std::move(mesh), objectId);
 }
 
+// A lot on the landscape stands on the lowest terrain under it, as a <buildings> building
+// without base does (generateBuildings); off the terrain at 0 with a warning.
+void seatOnGround(Footprint &footprint, const GroundHeight &ground, const FileLoc &where, uint32_t id,
+                  std::vector<std::string> &warnings) {
+    std::optional<float> datum = ground(footprint.points);
+    if (!datum)
+        warnings.push_back(fmt::format("{}: building {} stands off the terrain; it is placed at height 0",
+                                       where.toString(), id));
+    footprint.base = datum.value_or(0.0f);
+}
+
+void warnIfHeightsIgnored(const CityData &data, const FileLoc &fileLoc, std::vector<std::string> &warnings) {
+    for (const CityPoint &p : data.points) {
+        if (p.u == 0) continue;
+        warnings.push_back(fmt::format("{}: the city stands on the landscape's terrain; the heights u of its points "
+                                       "(point {}: {}) are ignored",
+                                       p.loc.file.empty() ? fileLoc.toString() : p.loc.toString(), p.id, p.u));
+        return;
+    }
+}
+
 uint32_t buildCity(const CityData &data, uint32_t seed, ObjectId objectId, const FileLoc &fileLoc,
-                   uint32_t firstBuildingId, RenderSceneBuilder &builder, std::vector<std::string> &warnings) {
+                   const LandscapeGround *landscape, uint32_t firstBuildingId, RenderSceneBuilder &builder,
+                   std::vector<std::string> &warnings) {
     warnings.insert(warnings.end(), data.warnings.begin(), data.warnings.end());
+    if (landscape) warnIfHeightsIgnored(data, fileLoc, warnings);
     auto ruleFiles = readRuleFiles(fileLoc, data, seed, builder, warnings);
     StreetNetwork streets = streetNetworkOf(data);
-    addStreets(streets, objectId, builder);
+    addStreets(streets, landscape, objectId, builder);
     uint32_t id = firstBuildingId;
     for (uint32_t b = 0; b < data.blocks.size(); ++b) {
         const CityBlock &block = data.blocks[b];
@@ -105,16 +133,40 @@ uint32_t buildCity(const CityData &data, uint32_t seed, ObjectId objectId, const
             spec.id = id;
             spec.objectId = objectId;
             spec.footprint = std::move(lots[l]);
+            if (landscape)
+                seatOnGround(spec.footprint, landscape->ground, given ? given->loc : block.loc, id, warnings);
             spec.settings = settingsFor(data, block, given, rules.loaded.rules.settings);
             rules.generator.generate(spec, warnings);
+            if (landscape) addPlinth(spec, builder);
         }
     }
     return id - firstBuildingId;
 }
 
-// Seed 000's CityData XML, or OpenStreetMap data, whose local frame centres on the data.
-CityData readCity(const CityDesc &city) {
-    CityData data = city.file.extension() == ".osm" ? importOsm(city.file, {}) : readCityData(city.file);
+}  // namespace
+
+// Seed 000's CityData XML, or OpenStreetMap data: with a georeference placed through the one
+// route into the scene's frame, without in local metres (OpenStreetMap's centring on the data).
+CityData readCityFile(const CityDesc &city, const std::optional<Georeference> &georeference) {
+    if (city.epsg != 0 && !georeference)
+        throw InputError(city.crsLoc, "a city in map coordinates (crs) needs the scene's <georeference "
+                                      "crs=\"EPSG:…\" origin=\"E N\"> to be placed");
+    if (city.file.extension() == ".osm") {
+        if (city.epsg != 0)
+            throw InputError(city.crsLoc, "OpenStreetMap data is WGS 84 longitude and latitude; leave out crs");
+        OsmImportOptions options;
+        options.georeference = georeference;
+        return importOsm(city.file, options);
+    }
+    if (!georeference) return readCityData(city.file);
+    MapProjection projection(crsByEpsg(city.epsg != 0 ? city.epsg : georeference->epsg), *georeference);
+    return readCityData(city.file, &projection);
+}
+
+CityData readCity(const CityDesc &city, const std::optional<Georeference> &georeference) {
+    if (!std::filesystem::is_regular_file(city.file))
+        throw InputError(city.fileLoc, fmt::format("cannot read the city file {}", city.file.string()));
+    CityData data = readCityFile(city, georeference);
     if (data.ruleFiles.empty() && !city.rules.empty()) {
         if (!std::filesystem::is_regular_file(city.rules))
             throw InputError(city.rulesLoc, fmt::format("cannot read the rule file {}", city.rules.string()));
@@ -122,6 +174,8 @@ CityData readCity(const CityDesc &city) {
     }
     return data;
 }
+
+namespace {
 
 // Warnings gathered before an error still reach the caller: they may say why.
 template <typename Build>
@@ -139,20 +193,17 @@ uint32_t withWarnings(std::vector<std::string> &out, Build build) {
 
 }  // namespace
 
-uint32_t generateCity(const CityDesc &city, uint32_t firstBuildingId, RenderSceneBuilder &builder,
-                      std::vector<std::string> &out) {
-    if (!std::filesystem::is_regular_file(city.file))
-        throw InputError(city.fileLoc, fmt::format("cannot read the city file {}", city.file.string()));
-    CityData data = readCity(city);
+uint32_t generateCity(const CityDesc &city, const CityData &data, const LandscapeGround *landscape,
+                      uint32_t firstBuildingId, RenderSceneBuilder &builder, std::vector<std::string> &out) {
     return withWarnings(out, [&](std::vector<std::string> &warnings) {
-        return buildCity(data, city.seed, city.objectId, city.fileLoc, firstBuildingId, builder, warnings);
+        return buildCity(data, city.seed, city.objectId, city.fileLoc, landscape, firstBuildingId, builder, warnings);
     });
 }
 
 uint32_t generateCity(const CityData &data, uint32_t seed, ObjectId objectId, uint32_t firstBuildingId,
-                      RenderSceneBuilder &builder, std::vector<std::string> &out) {
+                      RenderSceneBuilder &builder, std::vector<std::string> &out, const LandscapeGround *landscape) {
     return withWarnings(out, [&](std::vector<std::string> &warnings) {
-        return buildCity(data, seed, objectId, {}, firstBuildingId, builder, warnings);
+        return buildCity(data, seed, objectId, {}, landscape, firstBuildingId, builder, warnings);
     });
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <stdexcept>
 #include <string_view>
 #include <unordered_map>
 
@@ -17,6 +18,7 @@
 
 #include "city/footprint.h"
 #include "city/osm_config.h"
+#include "geodesy/map_projection.h"
 #include "io/gdal_messages.h"
 
 namespace veduta {
@@ -31,6 +33,9 @@ constexpr double kStreetEdgeMargin = 6;
 // How far a building's corner may stand outside its residential area and still belong to it
 // (metres), as readCityData allows a lot's corners.
 constexpr double kOutsideTolerance = 0.01;
+
+// OpenStreetMap's coordinates: WGS 84 longitude and latitude.
+constexpr int kOsmEpsg = 4326;
 
 using Tags = std::map<std::string, std::string, std::less<>>;
 
@@ -269,8 +274,8 @@ double distanceToLine(Vec2f p, const StreetLine &street) {
 
 class OsmImporter {
   public:
-    OsmImporter(GeographicPoint origin, std::vector<std::string> warnings)
-        : frame_(origin.latitude, origin.longitude, 0) {
+    OsmImporter(std::optional<MapProjection> projection, GeographicPoint tangentOrigin, std::vector<std::string> warnings)
+        : projection_(std::move(projection)), tangentPlane_(tangentOrigin.latitude, tangentOrigin.longitude, 0) {
         city_.warnings = std::move(warnings);
     }
 
@@ -285,10 +290,15 @@ class OsmImporter {
     }
 
   private:
-    // East and north of the origin; the up of the ellipsoid below the tangent plane is dropped.
+    // East and north of the scene origin on the scene's grid, or else on the tangent plane at
+    // the data's origin, whose up of the ellipsoid below the plane is dropped.
     std::pair<double, double> eastNorth(const GeographicPoint &p) const {
+        if (projection_) {
+            MapPoint local = projection_->toLocal({p.longitude, p.latitude});
+            return {local.easting, local.northing};
+        }
         double e = 0, n = 0, u = 0;
-        frame_.Forward(p.latitude, p.longitude, 0, e, n, u);
+        tangentPlane_.Forward(p.latitude, p.longitude, 0, e, n, u);
         return {e, n};
     }
 
@@ -482,7 +492,8 @@ class OsmImporter {
         }
     };
 
-    GeographicLib::LocalCartesian frame_;
+    std::optional<MapProjection> projection_;
+    GeographicLib::LocalCartesian tangentPlane_;  // without a projection
     CityData city_;
     std::unordered_map<std::pair<int64_t, int64_t>, std::vector<uint32_t>, CellHash> pointCells_;
     std::vector<StreetLine> streetLines_;
@@ -491,6 +502,8 @@ class OsmImporter {
 }  // namespace
 
 CityData importOsm(const std::filesystem::path &file, const OsmImportOptions &options) {
+    if (options.georeference && options.origin)
+        throw std::invalid_argument("an OSM import takes an origin only without a georeference");
     std::vector<std::string> warnings;
     OsmContent content = readOsmContent(file, warnings);
     std::optional<GeographicPoint> origin = options.origin ? options.origin : boundsCentre(content);
@@ -498,7 +511,9 @@ CityData importOsm(const std::filesystem::path &file, const OsmImportOptions &op
         warnings.push_back(fmt::format("{}: it holds no highways, residential areas or buildings", file.string()));
         origin = GeographicPoint{};
     }
-    return OsmImporter(*origin, std::move(warnings)).import(content, options);
+    std::optional<MapProjection> projection;
+    if (options.georeference) projection.emplace(crsByEpsg(kOsmEpsg), *options.georeference);
+    return OsmImporter(std::move(projection), *origin, std::move(warnings)).import(content, options);
 }
 
 }  // namespace veduta

@@ -1,5 +1,7 @@
 #include "city/plinth.h"
 
+#include "city/generate_buildings.h"
+
 namespace veduta {
 
 Mesh plinthMesh(const Footprint &footprint, float depth) {
@@ -18,6 +20,12 @@ Mesh plinthMesh(const Footprint &footprint, float depth) {
         mesh.triangleMaterials.insert(mesh.triangleMaterials.end(), 2, 0);
     }
     return mesh;
+}
+
+void addPlinth(const BuildingSpec &spec, RenderSceneBuilder &builder) {
+    Mesh plinth = plinthMesh(spec.footprint, kPlinthDepth);
+    plinth.setMaterial(builder.findOrAddMaterial(Material::lambertian("plinth", {0.42f, 0.4f, 0.37f})));
+    builder.addWorldMesh(std::move(plinth), spec.objectId, spec.id);
 }
 
 }  // namespace veduta

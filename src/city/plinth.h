@@ -3,8 +3,10 @@
 // "Buildings on terrain").
 #pragma once
 
+#include "city/building_generator.h"
 #include "city/footprint.h"
 #include "scene/mesh.h"
+#include "scene/render_scene.h"
 
 namespace veduta {
 
@@ -12,5 +14,9 @@ namespace veduta {
 // facing out, with u along the outline and v down the wall in metres. Every triangle has
 // material 0: the caller assigns one.
 Mesh plinthMesh(const Footprint &footprint, float depth);
+
+// The plinth of a building on terrain, kPlinthDepth deep (city/generate_buildings.h), in the
+// material "plinth", with the building's ids.
+void addPlinth(const BuildingSpec &spec, RenderSceneBuilder &builder);
 
 }  // namespace veduta

@@ -20,8 +20,6 @@ using Polygon = CGAL::Polygon_2<Kernel>;
 using PolygonWithHoles = CGAL::Polygon_with_holes_2<Kernel>;
 using PolygonSet = CGAL::Polygon_set_2<Kernel>;
 
-constexpr int kNodeSides = 16;
-
 Polygon ribbon(Vec2f a, Vec2f b, float halfWidth) {
     float dx = b.x - a.x, dy = b.y - a.y, length = std::hypot(dx, dy);
     float nx = -dy / length * halfWidth, ny = dx / length * halfWidth;
@@ -37,28 +35,35 @@ Polygon ribbon(Vec2f a, Vec2f b, float halfWidth) {
 Polygon joint(Vec2f centre, float radius) {
     Polygon p;
     // The polygon circumscribes the circle, so that it covers the ribbons' corners.
-    float r = radius / std::cos(kPi / kNodeSides);
-    for (int k = 0; k < kNodeSides; ++k) {
-        float a = 2 * kPi * float(k) / kNodeSides;
+    float r = radius / std::cos(kPi / kStreetJointSides);
+    for (int k = 0; k < kStreetJointSides; ++k) {
+        float a = 2 * kPi * float(k) / kStreetJointSides;
         p.push_back(Point(centre.x + r * std::cos(a), centre.y + r * std::sin(a)));
     }
     return p;
 }
 
-// The union of every street's ribbon and joint, each widened by `extra` on either side.
-PolygonSet streetArea(const StreetNetwork &network, float extra) {
-    PolygonSet area;
+// Every street's ribbon, then every node's joint, each widened by `extra` on either side.
+std::vector<Polygon> streetPieces(const StreetNetwork &network, float extra) {
+    std::vector<Polygon> pieces;
     std::vector<float> jointRadius(network.nodes.size(), 0.0f);
     for (const StreetNetwork::Street &s : network.streets) {
         Vec2f a = network.nodes[s.from], b = network.nodes[s.to];
         if (a.x == b.x && a.y == b.y) continue;
         float half = s.width / 2 + extra;
-        area.join(ribbon(a, b, half));
+        pieces.push_back(ribbon(a, b, half));
         jointRadius[s.from] = std::max(jointRadius[s.from], half);
         jointRadius[s.to] = std::max(jointRadius[s.to], half);
     }
     for (size_t n = 0; n < network.nodes.size(); ++n)
-        if (jointRadius[n] > 0) area.join(joint(network.nodes[n], jointRadius[n]));
+        if (jointRadius[n] > 0) pieces.push_back(joint(network.nodes[n], jointRadius[n]));
+    return pieces;
+}
+
+// The union of every street's ribbon and joint, each widened by `extra` on either side.
+PolygonSet streetArea(const StreetNetwork &network, float extra) {
+    PolygonSet area;
+    for (const Polygon &piece : streetPieces(network, extra)) area.join(piece);
     return area;
 }
 
@@ -150,6 +155,16 @@ Polygon toPolygon(const std::vector<Vec2f> &ring) {
 }
 
 }  // namespace
+
+std::vector<std::vector<Vec2d>> streetAreaPieces(const StreetNetwork &network, const StreetStyle &style) {
+    std::vector<std::vector<Vec2d>> rings;
+    for (const Polygon &piece : streetPieces(network, style.sidewalkWidth)) {
+        std::vector<Vec2d> &ring = rings.emplace_back();
+        for (auto v = piece.vertices_begin(); v != piece.vertices_end(); ++v)
+            ring.push_back({CGAL::to_double(v->x()), CGAL::to_double(v->y())});
+    }
+    return rings;
+}
 
 std::vector<BuildableArea> buildableAreas(const std::vector<Vec2f> &block, const StreetNetwork &network,
                                           const StreetStyle &style) {

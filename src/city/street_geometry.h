@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/vecmath.h"
+#include "geo/grid_lines.h"
 #include "scene/mesh.h"
 
 namespace veduta {
@@ -30,6 +31,9 @@ struct StreetStyle {
 // Surfaces the street meshes' triangleMaterials hold.
 enum StreetSurface : MaterialId { StreetCarriageway = 0, StreetSidewalk = 1, StreetKerb = 2, StreetJunction = 3 };
 
+// A node's round joint is a polygon of this many sides circumscribing its circle.
+inline constexpr int kStreetJointSides = 16;
+
 // A junction (three or more streets at a node) reaches this many of its widest street's half
 // widths from the node: √2 takes in the corners of the square where two streets cross.
 inline constexpr float kJunctionReach = 1.4142f;
@@ -38,6 +42,11 @@ inline constexpr float kJunctionReach = 1.4142f;
 // height), the sidewalks at height + lift + kerbHeight, the kerbs between; normals up (kerbs: towards the road), texture coordinates in metres (x, y).
 // Streets of zero length are skipped.
 Mesh streetGeometry(const StreetNetwork &network, const StreetStyle &style = {});
+
+// The street area (carriageways and sidewalks) as overlapping pieces whose union it is: every
+// street's strip and every node's joint, each widened by the sidewalks, counter-clockwise, in
+// double. For cutting it into a landscape's terrain (CityStreet, generateLandscape).
+std::vector<std::vector<Vec2d>> streetAreaPieces(const StreetNetwork &network, const StreetStyle &style = {});
 
 // What is left of a block's outline (counter-clockwise, x/y) once the streets and their
 // sidewalks are taken away: the pieces' outlines, counter-clockwise, each with the edges that

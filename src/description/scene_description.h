@@ -32,6 +32,10 @@ struct GeometryDesc {
     std::optional<ShapeSpec> shape;  // set for primitive shapes
     std::filesystem::path meshFile;  // set for <mesh>, already resolved against the scene's folder
     FileLoc meshFileLoc;
+    // crs="EPSG:…" of a <mesh>: its x and y are eastings and northings of that CRS, placed
+    // through the scene's georeference (io/georeferenced_mesh.h); 0: local metres.
+    int meshEpsg = 0;
+    FileLoc meshCrsLoc;
     Transform transform;
     NameRef material;
     uint32_t objectId = 0;  // 0 inside prototypes: their instances carry the id
@@ -137,6 +141,10 @@ struct CityDesc {
     // The rule file for a city that names none (an OpenStreetMap file never does); empty: none.
     std::filesystem::path rules;
     FileLoc rulesLoc;
+    // The CRS of a CityData file's points; 0: the scene's georeference CRS, or local metres in
+    // a scene without one.
+    int epsg = 0;
+    FileLoc crsLoc;
     uint32_t seed = 0;  // with each building's id, every random choice of lots and buildings
     uint32_t objectId = 0;
 };

@@ -3,10 +3,12 @@
 #include <charconv>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 #include <string_view>
 
 #include <fmt/format.h>
 
+#include "geodesy/crs.h"
 #include "io/xml_reader.h"
 #include "description/material_file.h"
 #include "description/scene_description.h"
@@ -183,6 +185,17 @@ class SceneFileReader {
         return epsg;
     }
 
+    // A crs attribute naming a CRS of geo/crs.h.
+    static int supportedCrsAttribute(const XmlElement &e, const char *attribute) {
+        int epsg = epsgAttribute(e, attribute);
+        try {
+            crsByEpsg(epsg);
+        } catch (const std::invalid_argument &error) {
+            e.failAt(attribute, error.what());
+        }
+        return epsg;
+    }
+
     void readEnvironment(const XmlElement &e) {
         EnvironmentDesc &env = scene_.environment;
         env.loc = e.loc();
@@ -314,6 +327,10 @@ class SceneFileReader {
             city.rules = pathAttribute(e, "rules");
             city.rulesLoc = e.attributeLoc("rules");
         }
+        if (e.has("crs")) {
+            city.epsg = supportedCrsAttribute(e, "crs");
+            city.crsLoc = e.attributeLoc("crs");
+        }
         city.seed = e.unsignedInteger("seed", 0);
         readObjectId(e, city.loc);
         e.checkLeaf();
@@ -426,6 +443,10 @@ class SceneFileReader {
         if (e.name() == "mesh") {
             g.meshFile = pathAttribute(e, "file");
             g.meshFileLoc = e.attributeLoc("file");
+            if (e.has("crs")) {
+                g.meshEpsg = supportedCrsAttribute(e, "crs");
+                g.meshCrsLoc = e.attributeLoc("crs");
+            }
         } else {
             g.shape = readShape(e);
         }

@@ -161,6 +161,7 @@ std::string_view landClassName(LandClass c) {
     case LandClass::River: return "river";
     case LandClass::TreeRow: return "tree_row";
     case LandClass::Hedge: return "hedge";
+    case LandClass::CityStreet: return "city_street";
     }
     return "other";
 }

@@ -49,6 +49,7 @@ enum class LandClass {
     River,       // flowing water: 5101 Strom/Fluss/Bach; follows the terrain downstream
     TreeRow,     // 4202 Baumreihe (a line), 4201 Baum (a point)
     Hedge,       // 4203 Hecke
+    CityStreet,  // not ATKIS: a <city>'s streets and sidewalks, cut into the terrain above every area
 };
 
 enum class TreeKind { Broadleaf, Conifer, Mixed };

@@ -496,6 +496,7 @@ void flattenWater(const DrapeGrid &g, const std::vector<DrapeArea> &areas, const
 
 int drapePriority(LandClass landClass) {
     switch (landClass) {
+    case LandClass::CityStreet: return 10;
     case LandClass::Water:
     case LandClass::River: return 9;
     case LandClass::Road:

@@ -37,8 +37,9 @@ struct DrapedTerrain {
 };
 
 // Where areas overlap (ATKIS allows it, seed 004 §3.1), the area of the higher priority wins;
-// between equal priorities, the earlier area. Water and River 9 > Road, Path, Rail 8 > Settlement 7 >
-// Park 6 > Forest 5 > Shrubs, TreeRow, Hedge 4 > Farmland 3 > Grassland 2 > Other 1.
+// between equal priorities, the earlier area. A city's streets (CityStreet) 10 > Water and
+// River 9 > Road, Path, Rail 8 > Settlement 7 > Park 6 > Forest 5 > Shrubs, TreeRow, Hedge 4 >
+// Farmland 3 > Grassland 2 > Other 1.
 int drapePriority(LandClass landClass);
 
 // The grid's terrain with the areas cut in. Cells with a NaN corner are left out; outline

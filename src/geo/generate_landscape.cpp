@@ -16,6 +16,7 @@
 #include "geo/drape_areas.h"
 #include "geo/edbs.h"
 #include "geodesy/local_frame.h"
+#include "geodesy/map_projection.h"
 #include "geo/ribbons.h"
 #include "geo/terrain_mesh.h"
 #include "geo/terrain_surface.h"
@@ -31,7 +32,8 @@ namespace {
 Material landMaterial(LandClass c) {
     std::string name = fmt::format("land/{}", landClassName(c));
     switch (c) {
-        case LandClass::Road: return Material::lambertian(name, {0.13f, 0.13f, 0.14f});
+        case LandClass::Road:
+        case LandClass::CityStreet: return Material::lambertian(name, {0.13f, 0.13f, 0.14f});  // under the streets
         case LandClass::Path: return Material::lambertian(name, {0.42f, 0.38f, 0.31f});
         case LandClass::Rail: return Material::lambertian(name, {0.27f, 0.24f, 0.22f});
         case LandClass::Settlement: return Material::lambertian(name, {0.21f, 0.24f, 0.14f});  // gardens and yards
@@ -83,20 +85,17 @@ bool isEdbs(const std::filesystem::path &file) {
     return in && std::string_view(head, 4) == "EDBS";
 }
 
-// Every point from `from` to `to`; a point that cannot be one of `from` (GeoJSON without a
-// crs member is WGS 84 longitude and latitude) is an error naming its object.
-void convertPoints(AtkisData &data, const Crs &from, const Crs &to) {
+// Every point into the scene's CRS; a point that cannot be one of the layer's CRS (GeoJSON
+// without a crs member is WGS 84 longitude and latitude) is an error naming its object.
+void convertPoints(AtkisData &data, const MapProjection &projection) {
     const AtkisObject *object = nullptr;
     auto convertPoint = [&](MapPoint &p) {
         try {
-            checkAxis(from, 0, p.easting);
-            checkAxis(from, 1, p.northing);
+            p = projection.toScene(p);
         } catch (const std::out_of_range &e) {
             throw std::invalid_argument(fmt::format("{}: ({}, {}) is no point of EPSG:{}: {}", object->where, p.easting,
-                                                    p.northing, from.epsg, e.what()));
+                                                    p.northing, projection.source().epsg, e.what()));
         }
-        CrsCoordinate c = convert(from, to, {p.easting, p.northing, 0});
-        p = {c.x, c.y};
     };
     for (AtkisObject &o : data.objects) {
         object = &o;
@@ -108,7 +107,7 @@ void convertPoints(AtkisData &data, const Crs &from, const Crs &to) {
 
 // A layer's objects in the scene's CRS. EDBS areas must close (an open outline names its
 // object); other sources are read through GDAL.
-AtkisData readLayer(const DataFileDesc &d, int sceneEpsg, std::vector<std::string> &warnings) {
+AtkisData readLayer(const DataFileDesc &d, const Georeference &georef, std::vector<std::string> &warnings) {
     if (!std::filesystem::is_regular_file(d.file))
         throw InputError(d.loc, fmt::format("cannot read the ATKIS file {}", d.file.string()));
     AtkisData data;
@@ -119,15 +118,15 @@ AtkisData readLayer(const DataFileDesc &d, int sceneEpsg, std::vector<std::strin
     } else {
         data = readVectorFile(d.file, warnings);
     }
-    int epsg = dataEpsg(d, data.epsg, sceneEpsg);
-    if (epsg != sceneEpsg) {
+    int epsg = dataEpsg(d, data.epsg, georef.epsg);
+    if (epsg != georef.epsg) {
         try {
-            convertPoints(data, crsByEpsg(epsg), crsByEpsg(sceneEpsg));
+            convertPoints(data, MapProjection(crsByEpsg(epsg), georef));
         } catch (const std::invalid_argument &e) {
             throw InputError(d.loc, e.what());
         }
     }
-    data.epsg = sceneEpsg;
+    data.epsg = georef.epsg;
     return data;
 }
 
@@ -147,8 +146,11 @@ std::vector<Vec2f> toLocal(const std::vector<MapPoint> &points, const LocalFrame
 // The most memory the simplification's error bounds may take.
 constexpr double kSimplifyBytes = 8e9;
 
-// Metres a tree keeps from a ribbon's edge.
+// Metres a tree keeps from a ribbon's or a city street's edge.
 constexpr float kTreeClearance = 1.5f;
+
+// The owner of terrain won by a city's street, in place of an object index.
+constexpr uint32_t kCityStreetOwner = kNoArea - 1;
 
 // Polylines with a clearance each, bucketed on a square grid: whether a point comes closer
 // to any of them than its clearance.
@@ -193,26 +195,27 @@ class SegmentClearance {
 
 class LandscapeBuilder {
   public:
-    LandscapeBuilder(const LandscapeDesc &land, const Georeference &georef, RenderSceneBuilder &builder,
-                     std::vector<std::string> &warnings)
-        : land_(land), frame_{{georef.originEasting, georef.originNorthing}}, builder_(builder), warnings_(warnings) {
+    LandscapeBuilder(const LandscapeDesc &land, const Georeference &georef, const std::vector<LocalPolygon> &streetAreas,
+                     RenderSceneBuilder &builder, std::vector<std::string> &warnings)
+        : land_(land), frame_{{georef.originEasting, georef.originNorthing}}, streetAreas_(streetAreas),
+          builder_(builder), warnings_(warnings) {
         grid_ = readTerrain(land, georef.epsg, warnings);
         for (const DataFileDesc &d : land.layers) {
-            AtkisData layer = readLayer(d, georef.epsg, warnings);
+            AtkisData layer = readLayer(d, georef, warnings);
             for (AtkisObject &o : layer.objects) objects_.push_back(std::move(o));
         }
     }
 
-    GroundHeight build() {
+    LandscapeGround build() {
         addTerrain();
         addRibbons();
         if (land_.trees) addTrees();
         std::shared_ptr<const TerrainSurface> surface = surface_;
-        return [surface](const std::vector<Vec2f> &footprint) -> std::optional<float> {
-            std::optional<double> lowest = surface->minOver(footprint);
-            if (!lowest) return std::nullopt;
-            return float(*lowest);
-        };
+        return {surface, [surface](const std::vector<Vec2f> &footprint) -> std::optional<float> {
+                    std::optional<double> lowest = surface->minOver(footprint);
+                    if (!lowest) return std::nullopt;
+                    return float(*lowest);
+                }};
     }
 
   private:
@@ -223,6 +226,16 @@ class LandscapeBuilder {
             LandClass c = landClass(o);
             if (o.geometry != AtkisGeometry::Area || c == LandClass::Other) continue;
             for (const MapRing &ring : o.areas) areas.push_back({ring, c, uint32_t(i), o.where});
+        }
+        for (size_t i = 0; i < streetAreas_.size(); ++i) {
+            MapRing ring;
+            for (Vec2d p : streetAreas_[i]) ring.push_back({frame_.origin.easting + p.x, frame_.origin.northing + p.y});
+            areas.push_back(
+                {std::move(ring), LandClass::CityStreet, kCityStreetOwner, fmt::format("city street area {}", i)});
+            for (size_t k = 0; k < streetAreas_[i].size(); ++k) {
+                Vec2d a = streetAreas_[i][k], b = streetAreas_[i][(k + 1) % streetAreas_[i].size()];
+                streetClearance_.add({Vec2f(float(a.x), float(a.y)), Vec2f(float(b.x), float(b.y))}, kTreeClearance);
+            }
         }
         Mesh mesh;
         if (areas.empty()) {
@@ -299,10 +312,12 @@ class LandscapeBuilder {
 
     // Whether a tree planted for object `planter` may stand at `on`: a tree of an area only
     // where that area won the draping (not in a lake or on a road area drawn over the forest),
-    // a tree of a row or a point not in water or on a traffic area; and none on a ribbon.
+    // a tree of a row or a point not in water or on a traffic area; and none on a ribbon or on
+    // a city's street, nor closer to their edges than kTreeClearance.
     bool treeMayStand(const PlacedTree &tree, uint32_t planter, const TerrainSurface::PointOnSurface &on) const {
-        if (ribbonClearance_.covers(tree.position)) return false;
+        if (ribbonClearance_.covers(tree.position) || streetClearance_.covers(tree.position)) return false;
         uint32_t owner = triangleObject_.empty() ? kNoArea : triangleObject_[on.triangle];
+        if (owner == kCityStreetOwner) return false;
         if (objects_[planter].geometry == AtkisGeometry::Area) return owner == planter;
         if (owner == kNoArea) return true;
         LandClass c = landClass(objects_[owner]);
@@ -357,22 +372,26 @@ class LandscapeBuilder {
 
     const LandscapeDesc &land_;
     LocalFrame frame_;
+    const std::vector<LocalPolygon> &streetAreas_;
     RenderSceneBuilder &builder_;
     std::vector<std::string> &warnings_;
     HeightGrid grid_;
     std::vector<AtkisObject> objects_;
     std::shared_ptr<TerrainSurface> surface_;
-    std::vector<uint32_t> triangleObject_;  // per terrain triangle: the object whose area won it, or kNoArea
+    // Per terrain triangle: the object whose area won it, kCityStreetOwner or kNoArea.
+    std::vector<uint32_t> triangleObject_;
     SegmentClearance ribbonClearance_;
+    SegmentClearance streetClearance_;  // the city street areas' edges
 };
 
 }  // namespace
 
-GroundHeight generateLandscape(const LandscapeDesc &land, const std::optional<Georeference> &georeference,
-                               RenderSceneBuilder &builder, std::vector<std::string> &warnings) {
+LandscapeGround generateLandscape(const LandscapeDesc &land, const std::optional<Georeference> &georeference,
+                                  const std::vector<LocalPolygon> &streetAreas, RenderSceneBuilder &builder,
+                                  std::vector<std::string> &warnings) {
     if (!georeference)
         throw InputError(land.loc, "a <landscape> needs the scene's <georeference crs=\"EPSG:…\" origin=\"E N\">");
-    return LandscapeBuilder(land, *georeference, builder, warnings).build();
+    return LandscapeBuilder(land, *georeference, streetAreas, builder, warnings).build();
 }
 
 }  // namespace veduta

@@ -3,23 +3,37 @@
 // plants trees, and says where buildings stand.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "geodesy/georeference.h"
 #include "geo/ground_height.h"
+#include "geo/terrain_surface.h"
 #include "scene/render_scene.h"
 #include "description/scene_description.h"
 
 namespace veduta {
 
+// What the landscape leaves for the generators after it: the finished terrain (for a city's
+// streets) and the ground for buildings, the lowest point of that terrain under a footprint.
+struct LandscapeGround {
+    std::shared_ptr<const TerrainSurface> surface;
+    GroundHeight ground;
+};
+
+// A plain polygon in the local frame (x east, y north, metres from the origin), either winding.
+using LocalPolygon = std::vector<Vec2d>;
+
 // Emits the terrain (one mesh, a material per land class), the ribbons and the trees (an
 // instance of a prototype each) into `builder`, in the local frame of the georeference's
-// origin. Returns the ground for buildings: the lowest point of the finished terrain under a
-// footprint. Throws InputError (a landscape without georeference, a DGM in another CRS, bad
-// data).
-GroundHeight generateLandscape(const LandscapeDesc &landscape, const std::optional<Georeference> &georeference,
-                               RenderSceneBuilder &builder, std::vector<std::string> &warnings);
+// origin. `streetAreas`, the pieces of the cities' streets and sidewalks (their union is the
+// street surface), are cut into the terrain as CityStreet areas above every ATKIS area, and
+// trees keep off them as off ribbons. Throws InputError (a landscape without georeference, a
+// DGM in another CRS, bad data).
+LandscapeGround generateLandscape(const LandscapeDesc &landscape, const std::optional<Georeference> &georeference,
+                                  const std::vector<LocalPolygon> &streetAreas, RenderSceneBuilder &builder,
+                                  std::vector<std::string> &warnings);
 
 }  // namespace veduta
