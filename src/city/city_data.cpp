@@ -110,8 +110,8 @@ class CityDataReader {
             point.e = local.easting;
             point.n = local.northing;
         } catch (const std::out_of_range &e) {
-            p.failAt("e", fmt::format("({}, {}) is no point of EPSG:{}: {}", point.e, point.n, projection_->source().epsg,
-                               e.what()));
+            p.failAt("e", fmt::format("({}, {}) is no point of EPSG:{}: {}", point.e, point.n,
+                                      projection_->source().epsg, e.what()));
         }
     }
 

@@ -13,6 +13,8 @@
 #include <tiny_obj_loader.h>
 
 #include "core/error.h"
+#include "io/map_mesh.h"
+#include "io/ply_file.h"
 
 namespace veduta {
 
@@ -41,8 +43,7 @@ GridTurn gridTurn(const MapProjection &projection, const MapPoint &p) {
 // OBJ indexes positions, normals and texture coordinates apart; a mesh vertex is one triple.
 class ObjMeshBuilder {
   public:
-    ObjMeshBuilder(const tinyobj::attrib_t &attrib, const MapProjection &projection, const std::filesystem::path &file)
-        : attrib_(attrib), projection_(projection), file_(file) {}
+    ObjMeshBuilder(const tinyobj::attrib_t &attrib, const std::filesystem::path &file) : attrib_(attrib), file_(file) {}
 
     void addFaces(const tinyobj::shape_t &shape) {
         size_t next = 0;
@@ -55,11 +56,9 @@ class ObjMeshBuilder {
         }
     }
 
-    Mesh take() {
-        if (mesh_.triangleCount() == 0) throw InputError({file_.string()}, "mesh file holds no triangles");
+    MapMesh take() {
         if (!allNormals_) mesh_.normals.clear();
         if (!allUvs_) mesh_.uvs.clear();
-        mesh_.setMaterial(0);
         return std::move(mesh_);
     }
 
@@ -70,19 +69,12 @@ class ObjMeshBuilder {
         if (!fresh) return it->second;
         check(i.vertex_index, attrib_.vertices.size() / 3, "vertex");
         const double *v = &attrib_.vertices[3 * size_t(i.vertex_index)];
-        MapPoint map{v[0], v[1]};
-        try {
-            mesh_.positions.push_back(projection_.toRender({v[0], v[1], v[2]}));
-        } catch (const std::out_of_range &e) {
-            throw InputError({file_.string()}, fmt::format("vertex {} ({}, {}) is no point of EPSG:{}: {}",
-                                                           i.vertex_index + 1, v[0], v[1], projection_.source().epsg,
-                                                           e.what()));
-        }
+        mesh_.positions.push_back({v[0], v[1], v[2]});
         allNormals_ = allNormals_ && i.normal_index >= 0;
         if (i.normal_index >= 0) {
             check(i.normal_index, attrib_.normals.size() / 3, "normal");
             const double *n = &attrib_.normals[3 * size_t(i.normal_index)];
-            mesh_.normals.push_back(gridTurn(projection_, map).normal({float(n[0]), float(n[1]), float(n[2])}));
+            mesh_.normals.push_back({float(n[0]), float(n[1]), float(n[2])});
         }
         allUvs_ = allUvs_ && i.texcoord_index >= 0;
         if (i.texcoord_index >= 0) {
@@ -101,15 +93,14 @@ class ObjMeshBuilder {
     }
 
     const tinyobj::attrib_t &attrib_;
-    const MapProjection &projection_;
     const std::filesystem::path &file_;
-    Mesh mesh_;
+    MapMesh mesh_;
     std::map<std::tuple<int, int, int>, uint32_t> vertices_;
     size_t face_ = 0;
     bool allNormals_ = true, allUvs_ = true;
 };
 
-Mesh readObj(const std::filesystem::path &file, const MapProjection &projection) {
+MapMesh readObj(const std::filesystem::path &file) {
     tinyobj::ObjReaderConfig config;
     config.vertex_color = false;
     tinyobj::ObjReader reader;
@@ -118,9 +109,29 @@ Mesh readObj(const std::filesystem::path &file, const MapProjection &projection)
         while (!error.empty() && error.back() == '\n') error.pop_back();
         throw InputError({file.string()}, fmt::format("cannot read the OBJ file: {}", error));
     }
-    ObjMeshBuilder builder(reader.GetAttrib(), projection, file);
+    ObjMeshBuilder builder(reader.GetAttrib(), file);
     for (const tinyobj::shape_t &shape : reader.GetShapes()) builder.addFaces(shape);
     return builder.take();
+}
+
+// The map mesh in the scene's render frame.
+Mesh place(const MapMesh &in, const MapProjection &projection, const std::filesystem::path &file) {
+    if (in.indices.empty()) throw InputError({file.string()}, "mesh file holds no triangles");
+    Mesh mesh;
+    for (size_t i = 0; i < in.positions.size(); ++i) {
+        const CrsCoordinate &p = in.positions[i];
+        try {
+            mesh.positions.push_back(projection.toRender(p));
+            if (!in.normals.empty()) mesh.normals.push_back(gridTurn(projection, {p.x, p.y}).normal(in.normals[i]));
+        } catch (const std::out_of_range &e) {
+            throw InputError({file.string()}, fmt::format("vertex {} ({}, {}) is no point of EPSG:{}: {}", i + 1, p.x,
+                                                          p.y, projection.source().epsg, e.what()));
+        }
+    }
+    mesh.uvs = in.uvs;
+    mesh.indices = in.indices;
+    mesh.setMaterial(0);
+    return mesh;
 }
 
 }  // namespace
@@ -129,11 +140,11 @@ Mesh importGeoreferencedMesh(const std::filesystem::path &file, const MapProject
     if (!std::filesystem::is_regular_file(file)) throw InputError({file.string()}, "no such mesh file");
     std::string extension = file.extension().string();
     for (char &c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
-    if (extension != ".obj")
-        throw InputError({file.string()}, fmt::format("georeferenced meshes are read from OBJ, whose coordinates keep "
-                                                      "double precision; convert this {} file to OBJ",
-                                                      extension.empty() ? "extensionless" : extension));
-    return readObj(file, projection);
+    if (extension == ".obj") return place(readObj(file), projection, file);
+    if (extension == ".ply") return place(readPlyFile(file), projection, file);
+    throw InputError({file.string()}, fmt::format("georeferenced meshes are read from OBJ and PLY, whose coordinates "
+                                                  "keep double precision; convert this {} file to one of them",
+                                                  extension.empty() ? "extensionless" : extension));
 }
 
 }  // namespace veduta

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <cstring>
 #include <fstream>
 
 #include <fmt/format.h>
@@ -157,6 +159,69 @@ TEST_F(GeoreferencedMesh, NormalsTurnOntoTheScenesGrid) {
     EXPECT_GT(std::abs(mesh.normals[0].y), 0.02f);  // turned, not left at (1, 0, 0)
 }
 
+// The box as a PLY whose vertices are doubles: ASCII, or binary in either byte order.
+std::string plyBox(const std::string &format) {
+    std::string header = fmt::format("ply\nformat {} 1.0\ncomment UTM 32\nelement vertex 8\nproperty double x\n"
+                                     "property double y\nproperty double z\nelement face 6\n"
+                                     "property list uchar int vertex_indices\nend_header\n",
+                                     format);
+    const int faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    std::string body;
+    bool big = format == "binary_big_endian";
+    auto bytes = [&](const auto &value) {
+        char b[sizeof value];
+        std::memcpy(b, &value, sizeof value);
+        if (big == (std::endian::native == std::endian::little)) std::reverse(b, b + sizeof value);
+        body.append(b, sizeof value);
+    };
+    for (const CrsCoordinate &c : boxCorners()) {
+        if (format == "ascii")
+            body += fmt::format("{:.6f} {:.6f} {:.6f}\n", c.x, c.y, c.z);
+        else
+            for (double v : {c.x, c.y, c.z}) bytes(v);
+    }
+    for (const auto &f : faces) {
+        if (format == "ascii") {
+            body += fmt::format("4 {} {} {} {}\n", f[0], f[1], f[2], f[3]);
+        } else {
+            bytes(uint8_t(4));
+            for (int i : f) bytes(int32_t(i));
+        }
+    }
+    return header + body;
+}
+
+TEST_F(GeoreferencedMesh, PlyBoxesKeepTheirSizeInEveryEncoding) {
+    for (std::string format : {"ascii", "binary_little_endian", "binary_big_endian"}) {
+        Mesh mesh = onlyMesh(scene(write(format + ".ply", plyBox(format)), "crs=\"EPSG:25832\""));
+        EXPECT_EQ(mesh.triangleCount(), 12u) << format;
+        Extent e = extentOf(mesh);
+        EXPECT_NEAR(e.size().x, 0.33, 1e-3) << format;
+        EXPECT_NEAR(e.size().y, 0.77, 1e-3) << format;
+        EXPECT_NEAR(e.size().z, 1.0, 1e-3) << format;
+        EXPECT_NEAR(e.lo.x, kEast - kOriginEast, 1e-3) << format;
+        EXPECT_NEAR(e.lo.y, kNorth - kOriginNorth, 1e-3) << format;
+    }
+}
+
+TEST_F(GeoreferencedMesh, PlyErrorsNameTheLine) {
+    std::string text = plyBox("ascii");
+    text.replace(text.find("5400234"), 7, "54OO234");
+    std::filesystem::path bad = write("bad.ply", text);
+    EXPECT_NE(errorOf(scene(bad, "crs=\"EPSG:25832\"")).find(bad.string() + ":11: '54OO234.567800' is not a number"),
+              std::string::npos)
+        << errorOf(scene(bad, "crs=\"EPSG:25832\""));
+    std::filesystem::path noZ = write("noz.ply", "ply\nformat ascii 1.0\nelement vertex 0\nproperty double x\n"
+                                                 "property double y\nend_header\n");
+    EXPECT_NE(errorOf(scene(noZ, "crs=\"EPSG:25832\"")).find(":3: the vertex element needs the properties x, y and z"),
+              std::string::npos)
+        << errorOf(scene(noZ, "crs=\"EPSG:25832\""));
+    std::string binary = plyBox("binary_little_endian");
+    std::filesystem::path cut = write("cut.ply", binary.substr(0, binary.size() - 10));
+    EXPECT_NE(errorOf(scene(cut, "crs=\"EPSG:25832\"")).find("the file ends before its last element"),
+              std::string::npos);
+}
+
 TEST_F(GeoreferencedMesh, Errors) {
     std::filesystem::path box = writeBox("box.obj", 25832);
     EXPECT_EQ(errorOf(scene(box, "crs=\"EPSG:25832\"", false)),
@@ -164,8 +229,8 @@ TEST_F(GeoreferencedMesh, Errors) {
                           "crs=\"EPSG:…\" origin=\"E N\"> to be placed",
                           box.string().size() + 39));  // at crs's value
     EXPECT_NE(errorOf(scene(box, "crs=\"EPSG:3857\"")).find("EPSG:3857 is not supported"), std::string::npos);
-    std::filesystem::path ply = write("box.ply", "ply\n");
-    EXPECT_NE(errorOf(scene(ply, "crs=\"EPSG:25832\"")).find("georeferenced meshes are read from OBJ"),
+    std::filesystem::path stl = write("box.stl", "solid box\nendsolid box\n");
+    EXPECT_NE(errorOf(scene(stl, "crs=\"EPSG:25832\"")).find("georeferenced meshes are read from OBJ and PLY"),
               std::string::npos);
     std::filesystem::path beyond = write("beyond.obj", "v 500000 5400000 0\nv 500001 5400000 0\nf 1 2 3\n");
     EXPECT_NE(errorOf(scene(beyond, "crs=\"EPSG:25832\"")).find("face 1 refers to vertex 3, beyond the 2"),
