@@ -15,24 +15,40 @@
 
 namespace veduta {
 
-// Builds every lot of the city; its buildings take the ids from `firstBuildingId` on, in the
-// order of the file's blocks and lots. Returns how many ids it took. Warnings (a clockwise
-// block, probabilities renormalised …) are appended once each as "file:line:col: message";
-// errors throw InputError.
-uint32_t generateCity(const CityDesc &city, uint32_t firstBuildingId, RenderSceneBuilder &builder,
+// Builds every lot of the city with `seed`, the city's resolved seed (buildRenderScene). Each
+// building's id is cityBuildingId of the city's object id and its lot's identity (lotsOf), so
+// adding a lot or a block leaves the other buildings as they were. Returns how many buildings
+// it built. Warnings (a clockwise block, probabilities renormalised, two buildings of one id
+// …) are appended once each as "file:line:col: message"; errors throw InputError.
+uint32_t generateCity(const CityDesc &city, uint32_t seed, RenderSceneBuilder &builder,
                       std::vector<std::string> &warnings);
 // The same for a city already read (or made in memory, as the benchmark does); errors about
 // the city as a whole (no rule file) have no place in a file.
-uint32_t generateCity(const CityData &data, uint32_t seed, ObjectId objectId, uint32_t firstBuildingId,
-                      RenderSceneBuilder &builder, std::vector<std::string> &warnings);
+uint32_t generateCity(const CityData &data, uint32_t seed, ObjectId objectId, RenderSceneBuilder &builder,
+                      std::vector<std::string> &warnings);
 
 // The parts, in the order generateCity runs them.
 // The city's streets as a network of its points (metres, x east, y north).
 StreetNetwork streetNetworkOf(const CityData &data);
+// A lot with its identity: its own (CityLot::sourceId), or for a lot cut from a block the
+// block's identity and the lot's place among the lots cut from it.
+struct IdentifiedLot {
+    Footprint footprint;
+    uint32_t identity = 0;
+};
+
 // The lots of a block: its own, or those its LotSubdivision setting cuts from what the streets
 // and sidewalks leave of it (subdivideBlock: by default perimeter lots, seed 000's
-// Blockrandbebauung, and Müller's recursive subdivision where no ring of houses fits).
-std::vector<Footprint> lotsOf(const CityBlock &block, const StreetNetwork &streets, const SettingsStack &blockSettings,
-                              uint32_t seed, uint32_t blockIndex);
+// Blockrandbebauung, and Müller's recursive subdivision where no ring of houses fits). The
+// draws of each piece the streets leave come from the seed, the block's identity and the
+// piece's place among them, never from the block's place in the file.
+std::vector<IdentifiedLot> lotsOf(const CityBlock &block, const StreetNetwork &streets,
+                                  const SettingsStack &blockSettings, uint32_t seed);
+
+// A city building's id, 1 to 2^24 − 1 so that the IndexBuilding pass (floats) holds it exactly:
+// a hash of the city's object id and its lot's identity. Two lots of a city may hash to one id
+// (for n buildings a chance of about n² / 2^25; generateCity warns): they then share their
+// random choices and their IndexBuilding id, nothing else.
+uint32_t cityBuildingId(ObjectId city, uint32_t lotIdentity);
 
 }  // namespace veduta

@@ -17,9 +17,10 @@ namespace veduta {
 // Emits the terrain (one mesh, a material per land class), the ribbons and the trees (an
 // instance of a prototype each) into `builder`, in the local frame of the georeference's
 // origin. Returns the ground for buildings: the lowest point of the finished terrain under a
-// footprint. Throws InputError (a landscape without georeference, a DGM in another CRS, bad
-// data).
-GroundHeight generateLandscape(const LandscapeDesc &landscape, const std::optional<Georeference> &georeference,
-                               RenderSceneBuilder &builder, std::vector<std::string> &warnings);
+// footprint. `seed` is the landscape's resolved seed (buildRenderScene). Throws InputError (a
+// landscape without georeference, a DGM in another CRS, bad data).
+GroundHeight generateLandscape(const LandscapeDesc &landscape, uint32_t seed,
+                               const std::optional<Georeference> &georeference, RenderSceneBuilder &builder,
+                               std::vector<std::string> &warnings);
 
 }  // namespace veduta

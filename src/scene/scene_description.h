@@ -122,7 +122,7 @@ struct BuildingGroupDesc {
     FileLoc loc;
     std::filesystem::path rules;  // resolved against the scene's folder
     FileLoc rulesLoc;
-    uint32_t seed = 0;  // with each building's id, every random choice of its derivation
+    std::optional<uint32_t> seed;  // with each building's id, every random choice; unset: the scene's
     SettingsMap settings;
     std::vector<BuildingDesc> buildings;
     std::vector<FacadeDesc> facades;
@@ -137,7 +137,7 @@ struct CityDesc {
     // The rule file for a city that names none (an OpenStreetMap file never does); empty: none.
     std::filesystem::path rules;
     FileLoc rulesLoc;
-    uint32_t seed = 0;  // with each building's id, every random choice of lots and buildings
+    std::optional<uint32_t> seed;  // with each lot's identity, every random choice; unset: the scene's
     uint32_t objectId = 0;
 };
 
@@ -159,7 +159,7 @@ struct LandscapeDesc {
     float simplify = 0;                // the largest height error of a simplified mesh; 0: full resolution
     bool trees = true;
     uint32_t treeBudget = 500000;      // more trees than this is an error
-    uint32_t seed = 0;                 // with each object's id, every random choice (trees)
+    std::optional<uint32_t> seed;      // with each object's identity, every random choice; unset: the scene's
     uint32_t objectId = 0;
 };
 
@@ -170,7 +170,11 @@ struct SceneDescription {
     std::optional<SunTimeDesc> sunTime;
     std::optional<Georeference> georeference;
     EnvironmentDesc environment;
-    RenderSettings settings;
+    // <scene seed> (or --seed): the seed of every random choice whose generator has no seed of
+    // its own; buildRenderScene resolves them all, in one place.
+    uint32_t seed = 0;
+    std::optional<uint32_t> renderSeed;  // <render seed>: the sampler's; unset: the scene's
+    RenderSettings settings;             // its seed is the resolved one only in the RenderScene
     std::vector<MaterialDesc> materials;
     std::vector<GeometryDesc> geometry;
     std::vector<PrototypeDesc> prototypes;
