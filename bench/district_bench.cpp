@@ -83,11 +83,11 @@ struct Fixture {
     }();
     // Every block's settings and lots, as generateCity makes them.
     std::vector<SettingsStack> blockSettings;
-    std::vector<std::vector<Footprint>> lots;
+    std::vector<std::vector<IdentifiedLot>> lots;
     Fixture() {
-        for (uint32_t b = 0; b < city.blocks.size(); ++b) {
-            blockSettings.push_back(settingsFor(city, city.blocks[b], nullptr, loaded.rules.settings));
-            lots.push_back(lotsOf(city.blocks[b], streets, blockSettings.back(), kSeed, b));
+        for (const CityBlock &block : city.blocks) {
+            blockSettings.push_back(settingsFor(city, block, nullptr, loaded.rules.settings));
+            lots.push_back(lotsOf(block, streets, blockSettings.back(), kSeed));
         }
     }
     size_t buildings() const {
@@ -114,7 +114,7 @@ void BM_District(benchmark::State &state) {
     for (auto _ : state) {
         RenderSceneBuilder builder = builderWithMaterials();
         std::vector<std::string> warnings;
-        built = generateCity(f.city, kSeed, 1, 1, builder, warnings);
+        built = generateCity(f.city, kSeed, 1, builder, warnings);
         benchmark::DoNotOptimize(std::move(builder).build());
     }
     state.counters["buildings"] = built;
@@ -128,19 +128,20 @@ void BM_Lots(benchmark::State &state) {
     Fixture &f = fixture();
     for (auto _ : state) {
         for (uint32_t b = 0; b < f.city.blocks.size(); ++b)
-            benchmark::DoNotOptimize(lotsOf(f.city.blocks[b], f.streets, f.blockSettings[b], kSeed, b));
+            benchmark::DoNotOptimize(lotsOf(f.city.blocks[b], f.streets, f.blockSettings[b], kSeed));
     }
 }
 
 void BM_Roofs(benchmark::State &state) {
     Fixture &f = fixture();
     for (auto _ : state) {
-        uint32_t id = 1;
         for (size_t b = 0; b < f.lots.size(); ++b) {
-            for (const Footprint &lot : f.lots[b]) {
+            for (const IdentifiedLot &lot : f.lots[b]) {
+                uint32_t id = cityBuildingId(1, lot.identity);
                 BuildingHeights heights = randomiseHeights(f.blockSettings[b], kSeed, id);
-                RoofOptions options = roofOptionsFor(lot, f.blockSettings[b], heights, kSeed, id++);
-                benchmark::DoNotOptimize(buildRoof({lot.points, {}, lot.base}, heights.building, options));
+                RoofOptions options = roofOptionsFor(lot.footprint, f.blockSettings[b], heights, kSeed, id);
+                const Footprint &ground = lot.footprint;
+                benchmark::DoNotOptimize(buildRoof({ground.points, {}, ground.base}, heights.building, options));
             }
         }
     }
@@ -153,13 +154,12 @@ void BM_Buildings(benchmark::State &state) {
         RenderSceneBuilder builder = builderWithMaterials();
         BuildingGenerator generator(f.loaded.grammar, AssetLibrary::builtIn(), builder, kSeed);
         std::vector<std::string> warnings;
-        uint32_t id = 1;
         for (size_t b = 0; b < f.lots.size(); ++b) {
-            for (const Footprint &lot : f.lots[b]) {
+            for (const IdentifiedLot &lot : f.lots[b]) {
                 BuildingSpec spec;
-                spec.id = id++;
+                spec.id = cityBuildingId(1, lot.identity);
                 spec.objectId = 1;
-                spec.footprint = lot;
+                spec.footprint = lot.footprint;
                 spec.settings = f.blockSettings[b];
                 generator.generate(spec, warnings);
             }

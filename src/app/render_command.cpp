@@ -48,7 +48,7 @@ struct RenderArgs {
 
 void applyOverrides(const RenderArgs &args, SceneDescription &d) {
     if (args.spp) d.settings.samplesPerPixel = *args.spp;
-    if (args.seed) d.settings.seed = *args.seed;
+    if (args.seed) replaceEverySeed(d, *args.seed);
     if (args.maxDepth) d.settings.maxDepth = *args.maxDepth;
     if (args.tileSize) d.settings.tileSize = *args.tileSize;
     if (args.noiseThreshold) d.settings.noiseThreshold = *args.noiseThreshold;
@@ -187,7 +187,9 @@ void addRenderCommand(CLI::App &app, int &exitCode) {
     cmd->add_option("--region", args->region, "Render only pixels X0 ≤ x < X1, Y0 ≤ y < Y1 (EXR data window)")
         ->expected(4)
         ->type_name("X0 Y0 X1 Y1");
-    cmd->add_option("--seed", args->seed, "Seed of every random choice (overrides the scene)");
+    cmd->add_option("--seed", args->seed,
+                    "Seed of every random choice: the sampler's, the buildings', the city's and the landscape's "
+                    "(replaces <scene seed> and every seed the file gives an element)");
     cmd->add_option("--max-depth", args->maxDepth, "Longest path, in bounces (overrides the scene)")
         ->check(CLI::Range(1u, 1024u));
     cmd->add_option("--noise-threshold", args->noiseThreshold,

@@ -36,11 +36,11 @@ SceneDescription studyBase(const StudyOptions &options) {
     ground.material = Material::lambertian("study/ground", {0.28f, 0.27f, 0.25f});
     scene.materials.push_back(ground);
     scene.environment.radiance = {0.38f, 0.5f, 0.78f};
+    scene.seed = options.seed;
 
     BuildingGroupDesc group;
     group.rules = rules;
     group.rulesLoc = kCommandLine;
-    group.seed = options.seed;
     group.settings = settingsFrom(options.settings);
     scene.buildingGroups.push_back(std::move(group));
     return scene;
@@ -80,7 +80,7 @@ void addStudyOptions(CLI::App &command, StudyOptions &options, bool rulesAsOptio
     command.add_option(rulesAsOption ? "--rules" : "RULEFILE", options.rules, "Rule file (seed 000's XML, docs/rules.md)")
         ->required(!rulesAsOption)
         ->check(CLI::ExistingFile);
-    command.add_option("--seed", options.seed, "Seed of the random choices [0]");
+    command.add_option("--seed", options.seed, "Seed of the random choices, the building's and the sampler's [0]");
     command.add_option("--id", options.id, "Building id: with the seed, which branches the rules take [1]")
         ->check(CLI::Range(1u, 0xffffffffu));
     command

@@ -1,6 +1,5 @@
 #include "assembly/build_scene.h"
 
-#include <algorithm>
 #include <map>
 #include <optional>
 #include <string>
@@ -29,7 +28,9 @@ class SceneAssembler {
         Sun sun = placeSun(d_);
         builder_.setSun(sun);
         builder_.setEnvironment(buildEnvironment(d_.environment, sun));
-        builder_.setSettings(d_.settings);
+        RenderSettings settings = d_.settings;
+        settings.seed = seedOf(d_.renderSeed);
+        builder_.setSettings(settings);
         // Material 0 is for geometry that names none; a scene may redefine "default".
         builder_.addMaterial(Material::lambertian("default", Vec3f(0.8f)));
         for (const MaterialDesc &m : d_.materials) builder_.addMaterial(withTextures(m));
@@ -69,30 +70,24 @@ class SceneAssembler {
                 streetAreas.push_back(std::move(piece));
         }
         std::optional<LandscapeGround> landscape;
-        if (d_.landscape)
-            landscape = generateLandscape(*d_.landscape, d_.georeference, streetAreas, builder_, warnings_);
+        if (d_.landscape) {
+            landscape = generateLandscape(*d_.landscape, seedOf(d_.landscape->seed), d_.georeference, streetAreas,
+                                          builder_, warnings_);
+        }
         GroundHeight ground = landscape ? landscape->ground : GroundHeight();
-        for (const BuildingGroupDesc &group : d_.buildingGroups) generateBuildings(group, ground, builder_, warnings_);
-        // A city's buildings take the ids after those the scene file gives out.
-        uint32_t nextBuildingId = firstFreeBuildingId();
+        for (const BuildingGroupDesc &group : d_.buildingGroups)
+            generateBuildings(group, seedOf(group.seed), ground, builder_, warnings_);
         for (size_t i = 0; i < d_.cities.size(); ++i) {
-            nextBuildingId += generateCity(d_.cities[i], cities[i], landscape ? &*landscape : nullptr, nextBuildingId,
-                                           builder_, warnings_);
+            generateCity(d_.cities[i], cities[i], seedOf(d_.cities[i].seed), landscape ? &*landscape : nullptr,
+                         builder_, warnings_);
         }
         return std::move(builder_).build();
     }
 
   private:
-    uint32_t firstFreeBuildingId() const {
-        uint32_t last = 0;
-        for (const BuildingGroupDesc &group : d_.buildingGroups) {
-            for (const BuildingDesc &b : group.buildings) last = std::max(last, b.buildingId);
-            for (const FacadeDesc &f : group.facades) last = std::max(last, f.buildingId);
-        }
-        for (const InstanceDesc &i : d_.instances) last = std::max(last, i.buildingId);
-        for (const GeometryDesc &g : d_.geometry) last = std::max(last, g.buildingId);
-        return last + 1;
-    }
+    // Where every seed is resolved: a generator's (or the sampler's) own seed from the file,
+    // else the scene's.
+    uint32_t seedOf(const std::optional<uint32_t> &own) const { return own.value_or(d_.seed); }
 
     // The material with its maps registered as textures.
     Material withTextures(const MaterialDesc &d) {
@@ -194,6 +189,14 @@ Sun placeSun(const SceneDescription &d) {
     // by its direction still does: that is a lighting choice, not a time of day).
     if (angles.elevationDegrees < -0.5 * sun.angularDiameterDegrees) sun.irradiance = Vec3f(0.0f);
     return sun;
+}
+
+void replaceEverySeed(SceneDescription &d, uint32_t seed) {
+    d.seed = seed;
+    d.renderSeed.reset();
+    for (BuildingGroupDesc &group : d.buildingGroups) group.seed.reset();
+    for (CityDesc &city : d.cities) city.seed.reset();
+    if (d.landscape) d.landscape->seed.reset();
 }
 
 RenderScene buildRenderScene(const SceneDescription &description, std::vector<std::string> *warnings) {

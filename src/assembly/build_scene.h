@@ -14,6 +14,11 @@ namespace veduta {
 // The sun where the scene puts it: its direction as given, or from a date, time and place.
 Sun placeSun(const SceneDescription &description);
 
+// The command line's --seed: `seed` becomes the scene seed and replaces every seed the file
+// gives its elements (<render>, <buildings>, <city>, <landscape>), so that it reaches every
+// random choice.
+void replaceEverySeed(SceneDescription &description, uint32_t seed);
+
 // Throws InputError at the place in the scene file a problem comes from (an unknown material
 // or prototype, a mesh file that cannot be read, a rule that cannot be derived). Warnings
 // ("file:line:col: message") go to `warnings` when it is given.

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "core/hash.h"
+#include "core/random_streams.h"
 #include "io/xml_reader.h"
 
 namespace veduta {
@@ -64,7 +65,7 @@ float randomised(const SettingsStack &settings, const std::string &name, bool po
                  uint32_t buildingId, uint32_t which) {
     float base = checkedNumber(settings, name, positive);
     float deviation = checkedNumber(settings, name + "Var", false);
-    float u = bitsToUnitFloat(hashValues({seed, buildingId, 0x48454947u, which}));
+    float u = bitsToUnitFloat(hashValues({seed, buildingId, streamTag(RandomStream::BuildingHeights), which}));
     // A deviation larger than the value must not turn a storey or a building upside down.
     return std::max(base + (2 * u - 1) * deviation, 0.1f * base);
 }

@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 
 #include "city/footprint.h"
+#include "core/hash.h"
+#include "core/random_streams.h"
 #include "geodesy/map_projection.h"
 #include "io/xml_reader.h"
 
@@ -176,15 +178,18 @@ class CityDataReader {
         std::vector<Vec2f> points;
         std::vector<bool> streetEdges;
         float base = 0;
+        uint32_t sourceId = 0;  // from the ids of its points, in file order
     };
 
     Outline readOutline(const XmlElement &e, bool lot) {
         e.checkAllRead();
         Outline outline;
         std::vector<double> heights;
+        std::vector<uint32_t> identity{streamTag(lot ? RandomStream::CityDataLot : RandomStream::CityDataBlock)};
         for (const XmlElement &p : e.children()) {
             if (p.name() != "Point") p.fail(fmt::format("unknown element <{}> in <Points>", p.name()));
             const CityPoint &point = city_.points[pointRef(p, "id")];
+            identity.push_back(point.id);
             outline.points.push_back({float(point.e), float(point.n)});
             heights.push_back(point.u);
             bool street = false;
@@ -200,6 +205,7 @@ class CityDataReader {
                 e.fail(fmt::format("the points of a {} must share one height u; they have {} and {}", lot ? "lot" : "block",
                                    heights.front(), h));
         outline.base = float(heights.front());
+        outline.sourceId = hashSequence(identity);
         return outline;
     }
 
@@ -215,6 +221,7 @@ class CityDataReader {
                 Outline outline = readOutline(c, false);
                 block.points = std::move(outline.points);
                 block.base = outline.base;
+                block.sourceId = outline.sourceId;
                 checkBlockShape(block, c);
             } else if (c.name() == "Lots") {
                 lots = &c;
@@ -262,6 +269,7 @@ class CityDataReader {
                 }
                 lot.points = std::move(footprint.points);
                 lot.streetEdges = std::move(footprint.streetEdges);
+                lot.sourceId = outline.sourceId;
                 lot.base = footprint.base;
                 hasPoints = true;
             } else if (c.name() == "BuildingSettings") {

@@ -36,6 +36,9 @@ struct CityLot {
     float base = 0;  // the points' common u
     SettingsMap settings;
     FileLoc loc;
+    // Its identity in its source, whatever else the file holds: a hash of the ids of its points
+    // in file order (CityData) or of its OpenStreetMap way or relation and part.
+    uint32_t sourceId = 0;
 };
 
 struct CityBlock {
@@ -44,6 +47,7 @@ struct CityBlock {
     std::vector<CityLot> lots;
     SettingsMap settings;
     FileLoc loc;
+    uint32_t sourceId = 0;  // as a lot's: what its lots are cut with when it has none of its own
 };
 
 struct CityData {

@@ -8,6 +8,7 @@
 
 #include "core/check.h"
 #include "core/hash.h"
+#include "core/random_streams.h"
 
 namespace veduta {
 
@@ -47,7 +48,7 @@ namespace {
 // Keyed by the rule's name, not its place in the file: adding or moving a rule leaves the
 // other rules' choices as they were.
 float branchVariate(const DerivationSeed &seed, uint32_t ruleKey) {
-    return bitsToUnitFloat(hashValues({seed.seed, seed.buildingId, 0x52554c45u, ruleKey}));
+    return bitsToUnitFloat(hashValues({seed.seed, seed.buildingId, streamTag(RandomStream::RuleBranches), ruleKey}));
 }
 
 // Picks by the cumulative probabilities of the eligible branches; kNone when none is eligible.

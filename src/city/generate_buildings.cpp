@@ -33,15 +33,15 @@ Footprint footprintOf(const BuildingDesc &building, const GroundHeight &ground, 
     return footprint;
 }
 
-void generateGroup(const BuildingGroupDesc &group, const GroundHeight &ground, RenderSceneBuilder &builder,
-                   std::vector<std::string> &warnings) {
+void generateGroup(const BuildingGroupDesc &group, uint32_t seed, const GroundHeight &ground,
+                   RenderSceneBuilder &builder, std::vector<std::string> &warnings) {
     if (!std::filesystem::is_regular_file(group.rules))
         throw InputError(group.rulesLoc, fmt::format("cannot read the rule file {}", group.rules.string()));
     BuildingRules loaded(group.rules);
     const RuleSet &rules = loaded.rules;
     const Grammar &grammar = loaded.grammar;
     warnings.insert(warnings.end(), rules.warnings.begin(), rules.warnings.end());
-    BuildingGenerator generator(grammar, AssetLibrary::builtIn(), builder, group.seed);
+    BuildingGenerator generator(grammar, AssetLibrary::builtIn(), builder, seed);
     for (const BuildingDesc &desc : group.buildings) {
         BuildingSpec spec;
         spec.id = desc.buildingId;
@@ -70,11 +70,11 @@ void generateGroup(const BuildingGroupDesc &group, const GroundHeight &ground, R
 
 }  // namespace
 
-void generateBuildings(const BuildingGroupDesc &group, const GroundHeight &ground, RenderSceneBuilder &builder,
-                       std::vector<std::string> &out) {
+void generateBuildings(const BuildingGroupDesc &group, uint32_t seed, const GroundHeight &ground,
+                       RenderSceneBuilder &builder, std::vector<std::string> &out) {
     std::vector<std::string> warnings;
     try {
-        generateGroup(group, ground, builder, warnings);
+        generateGroup(group, seed, ground, builder, warnings);
     } catch (const InputError &) {
         appendOnce(warnings, out);  // they may say why
         throw;

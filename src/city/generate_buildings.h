@@ -17,7 +17,8 @@ inline constexpr float kPlinthDepth = 0.5f;
 // Warnings (a rule's probabilities renormalised, a clockwise footprint turned round, sizes that
 // overflow a split) are appended as "file:line:col: message"; errors throw InputError.
 // A building placed on the ground gets a plinth (city/plinth.h) in the material "plinth".
-void generateBuildings(const BuildingGroupDesc &group, const GroundHeight &ground, RenderSceneBuilder &builder,
-                       std::vector<std::string> &warnings);
+// `seed` is the group's resolved seed (buildRenderScene).
+void generateBuildings(const BuildingGroupDesc &group, uint32_t seed, const GroundHeight &ground,
+                       RenderSceneBuilder &builder, std::vector<std::string> &warnings);
 
 }  // namespace veduta

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <unordered_map>
 
 #include <fmt/format.h>
 
@@ -17,6 +18,7 @@
 #include "city/warning_list.h"
 #include "core/hash.h"
 #include "geodesy/map_projection.h"
+#include "core/random_streams.h"
 
 namespace veduta {
 
@@ -55,19 +57,29 @@ StreetNetwork streetNetworkOf(const CityData &data) {
     return network;
 }
 
-std::vector<Footprint> lotsOf(const CityBlock &block, const StreetNetwork &streets, const SettingsStack &blockSettings,
-                              uint32_t seed, uint32_t blockIndex) {
-    std::vector<Footprint> lots;
+std::vector<IdentifiedLot> lotsOf(const CityBlock &block, const StreetNetwork &streets,
+                                  const SettingsStack &blockSettings, uint32_t seed) {
+    std::vector<IdentifiedLot> lots;
     if (!block.lots.empty()) {
-        for (const CityLot &lot : block.lots) lots.push_back({lot.points, lot.streetEdges, lot.base});
+        for (const CityLot &lot : block.lots) lots.push_back({{lot.points, lot.streetEdges, lot.base}, lot.sourceId});
         return lots;
     }
     LotSettings settings = lotSettingsFrom(blockSettings);
-    for (const BuildableArea &area : buildableAreas(block.points, streets)) {
-        Block piece{area.outline, area.streetEdges, block.base};
-        for (Footprint &lot : subdivideBlock(piece, settings, seed, blockIndex, block.loc)) lots.push_back(std::move(lot));
+    std::vector<BuildableArea> areas = buildableAreas(block.points, streets);
+    for (uint32_t a = 0; a < areas.size(); ++a) {
+        Block piece{areas[a].outline, areas[a].streetEdges, block.base};
+        uint32_t pieceId = hashValues({block.sourceId, a});
+        for (Footprint &lot : subdivideBlock(piece, settings, seed, pieceId, block.loc)) {
+            uint32_t identity = hashValues({block.sourceId, streamTag(RandomStream::CutLot), uint32_t(lots.size())});
+            lots.push_back({std::move(lot), identity});
+        }
     }
     return lots;
+}
+
+uint32_t cityBuildingId(ObjectId city, uint32_t lotIdentity) {
+    constexpr uint32_t kIds = (1u << 24) - 1;
+    return 1 + hashValues({city, lotIdentity, streamTag(RandomStream::CityBuilding)}) % kIds;
 }
 
 namespace {
@@ -112,27 +124,39 @@ void warnIfHeightsIgnored(const CityData &data, const FileLoc &fileLoc, std::vec
     }
 }
 
+// Where two lots hash to one building id (cityBuildingId): a warning at the second.
+void warnOfSharedId(std::unordered_map<uint32_t, FileLoc> &lotOfId, uint32_t id, const FileLoc &lot,
+                    std::vector<std::string> &warnings) {
+    auto [first, fresh] = lotOfId.emplace(id, lot);
+    if (fresh) return;
+    warnings.push_back(fmt::format("{}: this lot's building has the id {} of the one at {} (a hash collision): they "
+                                   "share their random choices and their IndexBuilding id",
+                                   lot.toString(), id, first->second.toString()));
+}
+
 uint32_t buildCity(const CityData &data, uint32_t seed, ObjectId objectId, const FileLoc &fileLoc,
-                   const LandscapeGround *landscape, uint32_t firstBuildingId, RenderSceneBuilder &builder,
-                   std::vector<std::string> &warnings) {
+                   const LandscapeGround *landscape, RenderSceneBuilder &builder, std::vector<std::string> &warnings) {
     warnings.insert(warnings.end(), data.warnings.begin(), data.warnings.end());
     if (landscape) warnIfHeightsIgnored(data, fileLoc, warnings);
     auto ruleFiles = readRuleFiles(fileLoc, data, seed, builder, warnings);
     StreetNetwork streets = streetNetworkOf(data);
     addStreets(streets, landscape, objectId, builder);
-    uint32_t id = firstBuildingId;
-    for (uint32_t b = 0; b < data.blocks.size(); ++b) {
-        const CityBlock &block = data.blocks[b];
+    std::unordered_map<uint32_t, FileLoc> lotOfId;
+    uint32_t built = 0;
+    for (const CityBlock &block : data.blocks) {
         SettingsStack blockSettings = settingsFor(data, block, nullptr, ruleFiles.front()->loaded.rules.settings);
-        std::vector<Footprint> lots = lotsOf(block, streets, blockSettings, seed, b);
-        for (size_t l = 0; l < lots.size(); ++l, ++id) {
-            // Seed 000 picks one of several rule files at random (L1276).
-            RuleFileBuilder &rules = *ruleFiles[hashValues({seed, id, 0x52554c46u}) % ruleFiles.size()];
+        std::vector<IdentifiedLot> lots = lotsOf(block, streets, blockSettings, seed);
+        for (size_t l = 0; l < lots.size(); ++l, ++built) {
+            uint32_t id = cityBuildingId(objectId, lots[l].identity);
             const CityLot *given = block.lots.empty() ? nullptr : &block.lots[l];
+            warnOfSharedId(lotOfId, id, given ? given->loc : block.loc, warnings);
+            // Seed 000 picks one of several rule files at random (L1276).
+            uint32_t pick = hashValues({seed, id, streamTag(RandomStream::RuleFileChoice)});
+            RuleFileBuilder &rules = *ruleFiles[pick % ruleFiles.size()];
             BuildingSpec spec;
             spec.id = id;
             spec.objectId = objectId;
-            spec.footprint = std::move(lots[l]);
+            spec.footprint = std::move(lots[l].footprint);
             if (landscape)
                 seatOnGround(spec.footprint, landscape->ground, given ? given->loc : block.loc, id, warnings);
             spec.settings = settingsFor(data, block, given, rules.loaded.rules.settings);
@@ -140,7 +164,7 @@ uint32_t buildCity(const CityData &data, uint32_t seed, ObjectId objectId, const
             if (landscape) addPlinth(spec, builder);
         }
     }
-    return id - firstBuildingId;
+    return built;
 }
 
 }  // namespace
@@ -193,17 +217,17 @@ uint32_t withWarnings(std::vector<std::string> &out, Build build) {
 
 }  // namespace
 
-uint32_t generateCity(const CityDesc &city, const CityData &data, const LandscapeGround *landscape,
-                      uint32_t firstBuildingId, RenderSceneBuilder &builder, std::vector<std::string> &out) {
+uint32_t generateCity(const CityDesc &city, const CityData &data, uint32_t seed, const LandscapeGround *landscape,
+                      RenderSceneBuilder &builder, std::vector<std::string> &out) {
     return withWarnings(out, [&](std::vector<std::string> &warnings) {
-        return buildCity(data, city.seed, city.objectId, city.fileLoc, landscape, firstBuildingId, builder, warnings);
+        return buildCity(data, seed, city.objectId, city.fileLoc, landscape, builder, warnings);
     });
 }
 
-uint32_t generateCity(const CityData &data, uint32_t seed, ObjectId objectId, uint32_t firstBuildingId,
-                      RenderSceneBuilder &builder, std::vector<std::string> &out, const LandscapeGround *landscape) {
+uint32_t generateCity(const CityData &data, uint32_t seed, ObjectId objectId, RenderSceneBuilder &builder,
+                      std::vector<std::string> &out, const LandscapeGround *landscape) {
     return withWarnings(out, [&](std::vector<std::string> &warnings) {
-        return buildCity(data, seed, objectId, {}, landscape, firstBuildingId, builder, warnings);
+        return buildCity(data, seed, objectId, {}, landscape, builder, warnings);
     });
 }
 

@@ -21,33 +21,49 @@ namespace veduta {
 // The city's file, CityData XML or OpenStreetMap (.osm), with the <city>'s rule file where the
 // data names none. With the scene's georeference the file's coordinates are map coordinates
 // (CityData: of the <city>'s crs, by default the scene's; OpenStreetMap: WGS 84) placed through
-// geo/map_projection.h; without one, local metres (OpenStreetMap: on the tangent plane at the
+// geodesy/map_projection.h; without one, local metres (OpenStreetMap: on the tangent plane at the
 // data's centre). The scene reads its cities first: their streets are cut into a landscape
 // before the city is built on it. Throws InputError.
 CityData readCity(const CityDesc &city, const std::optional<Georeference> &georeference);
 
-// Builds the streets and every lot of the city read by readCity; its buildings take the ids
-// from `firstBuildingId` on, in the order of the file's blocks and lots. Returns how many ids
-// it took. With a `landscape`, the streets lie on its terrain (streetsOnTerrain) and every
-// building stands on its ground with a plinth, as a <buildings> building without base does:
-// the terrain decides, the points' heights u are ignored (a warning says so where one is not
-// 0). Warnings (a clockwise block, probabilities renormalised …) are appended once each as
-// "file:line:col: message"; errors throw InputError.
-uint32_t generateCity(const CityDesc &city, const CityData &data, const LandscapeGround *landscape,
-                      uint32_t firstBuildingId, RenderSceneBuilder &builder, std::vector<std::string> &warnings);
+// Builds the streets and every lot of the city read by readCity with `seed`, the city's
+// resolved seed (buildRenderScene). Each building's id is cityBuildingId of the city's object
+// id and its lot's identity (lotsOf), so adding a lot or a block leaves the other buildings as
+// they were. Returns how many buildings it built. With a `landscape`, the streets lie on its
+// terrain (streetsOnTerrain) and every building stands on its ground with a plinth, as a
+// <buildings> building without base does: the terrain decides, the points' heights u are
+// ignored (a warning says so where one is not 0). Warnings (a clockwise block, probabilities
+// renormalised, two buildings of one id …) are appended once each as "file:line:col: message";
+// errors throw InputError.
+uint32_t generateCity(const CityDesc &city, const CityData &data, uint32_t seed, const LandscapeGround *landscape,
+                      RenderSceneBuilder &builder, std::vector<std::string> &warnings);
 // The same for a city made in memory (as the benchmark does); errors about the city as a
 // whole (no rule file) have no place in a file.
-uint32_t generateCity(const CityData &data, uint32_t seed, ObjectId objectId, uint32_t firstBuildingId,
-                      RenderSceneBuilder &builder, std::vector<std::string> &warnings,
-                      const LandscapeGround *landscape = nullptr);
+uint32_t generateCity(const CityData &data, uint32_t seed, ObjectId objectId, RenderSceneBuilder &builder,
+                      std::vector<std::string> &warnings, const LandscapeGround *landscape = nullptr);
 
 // The parts, in the order generateCity runs them.
 // The city's streets as a network of its points (metres, x east, y north).
 StreetNetwork streetNetworkOf(const CityData &data);
+// A lot with its identity: its own (CityLot::sourceId), or for a lot cut from a block the
+// block's identity and the lot's place among the lots cut from it.
+struct IdentifiedLot {
+    Footprint footprint;
+    uint32_t identity = 0;
+};
+
 // The lots of a block: its own, or those its LotSubdivision setting cuts from what the streets
 // and sidewalks leave of it (subdivideBlock: by default perimeter lots, seed 000's
-// Blockrandbebauung, and Müller's recursive subdivision where no ring of houses fits).
-std::vector<Footprint> lotsOf(const CityBlock &block, const StreetNetwork &streets, const SettingsStack &blockSettings,
-                              uint32_t seed, uint32_t blockIndex);
+// Blockrandbebauung, and Müller's recursive subdivision where no ring of houses fits). The
+// draws of each piece the streets leave come from the seed, the block's identity and the
+// piece's place among them, never from the block's place in the file.
+std::vector<IdentifiedLot> lotsOf(const CityBlock &block, const StreetNetwork &streets,
+                                  const SettingsStack &blockSettings, uint32_t seed);
+
+// A city building's id, 1 to 2^24 − 1 so that the IndexBuilding pass (floats) holds it exactly:
+// a hash of the city's object id and its lot's identity. Two lots of a city may hash to one id
+// (for n buildings a chance of about n² / 2^25; generateCity warns): they then share their
+// random choices and their IndexBuilding id, nothing else.
+uint32_t cityBuildingId(ObjectId city, uint32_t lotIdentity);
 
 }  // namespace veduta

@@ -7,6 +7,7 @@
 
 #include "city/building_settings.h"
 #include "core/hash.h"
+#include "core/random_streams.h"
 
 namespace veduta {
 
@@ -100,8 +101,6 @@ LotSubdivision algorithmFrom(const SettingValue &value) {
                                             value.text));
 }
 
-constexpr uint32_t kHousingDensityStream = 0x6c6f7473u;  // "lots": apart from the cut draws
-
 }  // namespace
 
 void checkLotSettings(const LotSettings &settings, const std::optional<FileLoc> &loc) {
@@ -141,7 +140,7 @@ std::vector<Footprint> filterLots(std::vector<Footprint> lots, const LotSettings
     for (size_t i = 0; i < lots.size(); ++i) {
         if (!(signedArea(lots[i].points) > settings.minLotArea)) continue;
         if (!hasAllowedAngles(lots[i].points, settings.minLotAngleDegrees)) continue;
-        uint32_t key = hashValues({seed, blockId, uint32_t(i), kHousingDensityStream});
+        uint32_t key = hashValues({seed, blockId, uint32_t(i), streamTag(RandomStream::LotHousingDensity)});
         if (!(bitsToUnitFloat(key) < settings.housingDensity)) continue;
         kept.push_back(std::move(lots[i]));
     }
@@ -168,7 +167,8 @@ void checkBlock(const Block &block, const std::optional<FileLoc> &loc) {
 }
 
 float normalBetween(float lo, float hi, uint32_t key) {
-    // Box–Muller from two independent uniform draws; 1 − u keeps the logarithm finite.
+    // Box–Muller from two independent uniform draws; 1 − u keeps the logarithm finite. The two
+    // constants make the draws two of one key, as the sampler's make its pair's coordinates.
     float u1 = 1 - bitsToUnitFloat(mix32(key ^ 0x85ebca6bu));
     float u2 = bitsToUnitFloat(mix32(key ^ 0xc2b2ae35u));
     float gaussian = std::sqrt(-2 * std::log(u1)) * std::cos(2 * kPi * u2);

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "core/hash.h"
+#include "core/random_streams.h"
 
 namespace veduta {
 
@@ -65,7 +66,7 @@ MaterialSet MaterialPalette::choose(uint32_t seed, uint32_t buildingId) const {
     MaterialSet set;
     for (size_t c = 0; c < kMaterialCategoryCount; ++c) {
         const auto &candidates = candidates_[c];
-        uint32_t pick = hashValues({seed, buildingId, 0x4d41544cu, uint32_t(c)});
+        uint32_t pick = hashValues({seed, buildingId, streamTag(RandomStream::MaterialPalette), uint32_t(c)});
         set.byCategory[c] = candidates[pick % candidates.size()];
     }
     return set;

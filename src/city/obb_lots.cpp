@@ -11,6 +11,7 @@
 #include "city/lot_subdivision.h"
 #include "city/recursive_split.h"
 #include "core/hash.h"
+#include "core/random_streams.h"
 
 namespace veduta {
 
@@ -23,7 +24,6 @@ using Point = Kernel::Point_2;
 // Where the cut crosses the axis, as a fraction of its length: normally distributed around the
 // middle, as Müller's split (Vanegas jitters by ω times the shorter side and gives no ω).
 constexpr float kCutFrom = 0.3f, kCutTo = 0.7f;
-constexpr uint32_t kTurnedStream = 0x4f424254u;  // "OBBT": the retry across the shorter axis
 
 struct Axis {
     double x = 0, y = 0;  // a side of the rectangle, its full length
@@ -70,7 +70,8 @@ std::vector<Piece> obbSplit(const Piece &piece, uint32_t key, const Block &block
     OrientedBox box = orientedBox(piece);
     std::vector<Piece> parts = cutAcross(piece, box, box.longer, box.shorter, key);
     if (allFaceAStreet(parts, block)) return parts;
-    std::vector<Piece> turned = cutAcross(piece, box, box.shorter, box.longer, hashValues({key, kTurnedStream}));
+    uint32_t turnedKey = hashValues({key, streamTag(RandomStream::LotObbTurned)});
+    std::vector<Piece> turned = cutAcross(piece, box, box.shorter, box.longer, turnedKey);
     return allFaceAStreet(turned, block) ? turned : parts;
 }
 

@@ -18,6 +18,8 @@
 
 #include "city/footprint.h"
 #include "city/osm_config.h"
+#include "core/hash.h"
+#include "core/random_streams.h"
 #include "geodesy/map_projection.h"
 #include "io/gdal_messages.h"
 
@@ -140,6 +142,7 @@ struct OsmArea {
     FileLoc loc;
     Tags tags;
     std::vector<std::vector<GeoRing>> polygons;  // each: the outer ring, then its holes
+    uint32_t sourceId = 0;                       // its way or relation (areaIdentity)
 };
 
 struct OsmContent {
@@ -194,6 +197,15 @@ FileLoc featureLoc(const std::string &file, std::string_view layer, const OGRFea
     return {fmt::format("{}: way {}", file, feature.GetFieldAsString("osm_id")), 0, 0};
 }
 
+// A multipolygon feature's identity: a hash of its way's id, or of its relation's.
+uint32_t areaIdentity(const OGRFeature &feature) {
+    int wayId = feature.GetFieldIndex("osm_way_id");
+    bool way = feature.IsFieldSetAndNotNull(wayId);
+    auto id = uint64_t(way ? feature.GetFieldAsInteger64(wayId) : feature.GetFieldAsInteger64("osm_id"));
+    return hashValues({streamTag(way ? RandomStream::OsmWay : RandomStream::OsmRelation), uint32_t(id),
+                       uint32_t(id >> 32)});
+}
+
 // Sorts one feature of GDAL's `lines` or `multipolygons` layer into `content`.
 void addFeature(const std::string &file, std::string_view layer, const OGRFeature &feature, OsmContent &content) {
     const OGRGeometry *geometry = feature.GetGeometryRef();
@@ -208,7 +220,7 @@ void addFeature(const std::string &file, std::string_view layer, const OGRFeatur
     } else if (layer == "multipolygons" && type == wkbMultiPolygon) {
         std::optional<std::string_view> building = tag(tags, "building");
         bool residential = tag(tags, "landuse") == "residential";
-        OsmArea area{loc, std::move(tags), geoPolygons(*geometry->toMultiPolygon())};
+        OsmArea area{loc, std::move(tags), geoPolygons(*geometry->toMultiPolygon()), areaIdentity(feature)};
         if (building && building != "no") content.buildings.push_back(area);
         if (residential) content.residentialAreas.push_back(std::move(area));
     }
@@ -373,8 +385,10 @@ class OsmImporter {
         return points;
     }
 
+    // A polygon of an area is known by the area and its place among the area's polygons.
     void addBlocks(const OsmArea &area) {
-        for (const std::vector<GeoRing> &polygon : area.polygons) {
+        for (uint32_t part = 0; part < area.polygons.size(); ++part) {
+            const std::vector<GeoRing> &polygon = area.polygons[part];
             if (polygon.size() > 1)
                 warn(area.loc, fmt::format("blocks have no holes: the residential area's {} inner ring(s) are ignored",
                                            polygon.size() - 1));
@@ -383,6 +397,7 @@ class OsmImporter {
             CityBlock block;
             block.points = std::move(*points);
             block.loc = area.loc;
+            block.sourceId = hashValues({area.sourceId, part});
             city_.blocks.push_back(std::move(block));
         }
     }
@@ -390,7 +405,8 @@ class OsmImporter {
     // Each part of a building is a lot of the residential block holding it, else a block of its own.
     void addBuilding(const OsmArea &area, size_t residentialBlocks) {
         SettingsMap settings = buildingSettings(area);
-        for (const std::vector<GeoRing> &polygon : area.polygons) {
+        for (uint32_t part = 0; part < area.polygons.size(); ++part) {
+            const std::vector<GeoRing> &polygon = area.polygons[part];
             if (polygon.size() > 1)
                 warn(area.loc, fmt::format("lots have no holes: the building's {} inner ring(s) are ignored",
                                            polygon.size() - 1));
@@ -401,6 +417,7 @@ class OsmImporter {
             lot.points = std::move(*points);
             lot.settings = settings;
             lot.loc = area.loc;
+            lot.sourceId = hashValues({area.sourceId, part});
             if (CityBlock *block = blockHolding(lot, residentialBlocks)) {
                 block->lots.push_back(std::move(lot));
                 continue;
@@ -408,6 +425,7 @@ class OsmImporter {
             CityBlock own;
             own.points = lot.points;
             own.loc = lot.loc;
+            own.sourceId = lot.sourceId;
             own.lots.push_back(std::move(lot));
             city_.blocks.push_back(std::move(own));
         }

@@ -8,6 +8,7 @@
 
 #include "city/lot_subdivision.h"
 #include "core/hash.h"
+#include "core/random_streams.h"
 
 namespace veduta {
 
@@ -131,7 +132,7 @@ class PerimeterWalk {
     Section section(size_t point) const { return {block_.points[point], inset_[point]}; }
 
     float frontage() {
-        uint32_t key = hashValues({seed_, blockId_, draws_++});
+        uint32_t key = hashValues({seed_, blockId_, streamTag(RandomStream::LotPerimeterFrontage), draws_++});
         return lots::normalBetween(settings_.minBuildingLength, settings_.maxBuildingLength, key);
     }
 

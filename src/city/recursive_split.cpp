@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "core/hash.h"
+#include "core/random_streams.h"
 
 namespace veduta::lots {
 
@@ -52,7 +53,7 @@ class RecursiveSplit {
 std::vector<Footprint> splitRecursively(const Block &block, const LotSettings &settings, uint32_t seed,
                                         uint32_t blockId, const std::optional<FileLoc> &loc, const SplitRule &rule) {
     RecursiveSplit split(block, settings, blockId, loc, rule);
-    split.split(block.points, hashValues({seed, blockId}), 0);
+    split.split(block.points, hashValues({seed, blockId, streamTag(RandomStream::LotRecursiveSplit)}), 0);
     return split.takeLots();
 }
 

@@ -9,14 +9,13 @@
 
 #include "city/roofs.h"
 #include "core/hash.h"
+#include "core/random_streams.h"
 
 namespace veduta {
 
 namespace {
 
 constexpr float kSteepestDerivedPitch = 89;  // degrees
-
-constexpr uint32_t kRoofChoiceKey = 0x524f4f46u;  // "ROOF": the draw among a RoofType list
 
 std::string roofTypeNames() {
     std::string names;
@@ -40,7 +39,7 @@ RoofType chosenType(const Footprint &footprint, const SettingsStack &settings, u
         types.push_back(*type);
     }
     if (types.empty()) throw InputError(value->loc, "RoofType names no roof type");
-    return types[hashValues({seed, buildingId, kRoofChoiceKey}) % types.size()];
+    return types[hashValues({seed, buildingId, streamTag(RandomStream::RoofChoice)}) % types.size()];
 }
 
 // How far the slopes reach in before they meet (see roofOptionsFor).

@@ -14,6 +14,7 @@
 #include "city/lot_pieces.h"
 #include "city/lot_subdivision.h"
 #include "core/hash.h"
+#include "core/random_streams.h"
 
 namespace veduta {
 
@@ -198,8 +199,9 @@ class StripCutter {
         double dx = (double(end.x) - start.x) / length, dy = (double(end.y) - start.y) / length;
         uint32_t draws = 0;
         for (double at = strip.from;;) {
-            at += lots::normalBetween(settings_.minBuildingLength, settings_.maxBuildingLength,
-                                      hashValues({seed_, blockId_, uint32_t(edge), draws++}));
+            uint32_t key = hashValues(
+                {seed_, blockId_, streamTag(RandomStream::LotSkeletonFrontage), uint32_t(edge), draws++});
+            at += lots::normalBetween(settings_.minBuildingLength, settings_.maxBuildingLength, key);
             if (strip.to - at < settings_.minBuildingLength) break;
             if (++cuts_ >= kMaxLotsPerBlock) {
                 lots::fail(loc_, fmt::format("block {} would be cut into more than {} skeleton lots (MinBuildingLength {} m)",

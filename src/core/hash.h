@@ -28,12 +28,16 @@ inline uint64_t mix64(uint64_t k) {
     return k;
 }
 
-// Hash of an ordered list of integers: hashValues({seed, x, y}) != hashValues({seed, y, x}).
-inline uint32_t hashValues(std::initializer_list<uint32_t> values) {
+// Hash of an ordered sequence of integers known only at run time (an outline's point ids).
+template <typename Values>
+uint32_t hashSequence(const Values &values) {
     uint32_t h = 0x9e3779b9u;
     for (uint32_t v : values) h = mix32(h ^ mix32(v + 0x632be5abu));
     return h;
 }
+
+// Hash of an ordered list of integers: hashValues({seed, x, y}) != hashValues({seed, y, x}).
+inline uint32_t hashValues(std::initializer_list<uint32_t> values) { return hashSequence(values); }
 
 // FNV-1a of a string: a stable key for things known by name (rules), the same on every run.
 inline uint32_t hashString(std::string_view text) {

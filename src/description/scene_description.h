@@ -126,7 +126,7 @@ struct BuildingGroupDesc {
     FileLoc loc;
     std::filesystem::path rules;  // resolved against the scene's folder
     FileLoc rulesLoc;
-    uint32_t seed = 0;  // with each building's id, every random choice of its derivation
+    std::optional<uint32_t> seed;  // with each building's id, every random choice; unset: the scene's
     SettingsMap settings;
     std::vector<BuildingDesc> buildings;
     std::vector<FacadeDesc> facades;
@@ -145,7 +145,7 @@ struct CityDesc {
     // a scene without one.
     int epsg = 0;
     FileLoc crsLoc;
-    uint32_t seed = 0;  // with each building's id, every random choice of lots and buildings
+    std::optional<uint32_t> seed;  // with each lot's identity, every random choice; unset: the scene's
     uint32_t objectId = 0;
 };
 
@@ -167,7 +167,7 @@ struct LandscapeDesc {
     float simplify = 0;                // the largest height error of a simplified mesh; 0: full resolution
     bool trees = true;
     uint32_t treeBudget = 500000;      // more trees than this is an error
-    uint32_t seed = 0;                 // with each object's id, every random choice (trees)
+    std::optional<uint32_t> seed;      // with each object's identity, every random choice; unset: the scene's
     uint32_t objectId = 0;
 };
 
@@ -178,7 +178,11 @@ struct SceneDescription {
     std::optional<SunTimeDesc> sunTime;
     std::optional<Georeference> georeference;
     EnvironmentDesc environment;
-    RenderSettings settings;
+    // <scene seed> (or --seed): the seed of every random choice whose generator has no seed of
+    // its own; buildRenderScene resolves them all, in one place.
+    uint32_t seed = 0;
+    std::optional<uint32_t> renderSeed;  // <render seed>: the sampler's; unset: the scene's
+    RenderSettings settings;             // its seed is the resolved one only in the RenderScene
     std::vector<MaterialDesc> materials;
     std::vector<GeometryDesc> geometry;
     std::vector<PrototypeDesc> prototypes;

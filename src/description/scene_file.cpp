@@ -35,6 +35,7 @@ class SceneFileReader {
         XmlElement root(doc_, doc_.root());
         if (root.name() != "scene") root.fail(fmt::format("the root element is <{}>, expected <scene>", root.name()));
         root.integer("version", 1, 1, 1);  // the only version so far
+        scene_.seed = root.unsignedInteger("seed", 0);
         root.checkAllRead();
         scene_.source = doc_.name();
         for (const XmlElement &e : root.children()) readTopLevel(e);
@@ -264,7 +265,7 @@ class SceneFileReader {
         RenderSettings &s = scene_.settings;
         s.samplesPerPixel = uint32_t(e.integer("spp", int(s.samplesPerPixel), 1, 1 << 24));
         s.maxDepth = uint32_t(e.integer("max_depth", int(s.maxDepth), 1, 1024));
-        s.seed = e.unsignedInteger("seed", s.seed);
+        if (std::optional<uint32_t> seed = seedOverride(e)) scene_.renderSeed = seed;
         s.tileSize = uint32_t(e.integer("tile_size", int(s.tileSize), 1, 4096));
         std::string filter = e.string("filter", "blackman-harris");
         if (filter == "box") {
@@ -312,6 +313,12 @@ class SceneFileReader {
         scene_.instances.push_back(std::move(inst));
     }
 
+    // A generator's own seed, which overrides the scene's; unset when the element gives none.
+    static std::optional<uint32_t> seedOverride(const XmlElement &e) {
+        if (!e.has("seed")) return std::nullopt;
+        return e.unsignedInteger("seed", 0);
+    }
+
     // A required file attribute, resolved against the scene's folder when relative.
     std::filesystem::path pathAttribute(const XmlElement &e, const char *attribute) const {
         std::filesystem::path file = e.string(attribute);
@@ -331,7 +338,7 @@ class SceneFileReader {
             city.epsg = supportedCrsAttribute(e, "crs");
             city.crsLoc = e.attributeLoc("crs");
         }
-        city.seed = e.unsignedInteger("seed", 0);
+        city.seed = seedOverride(e);
         readObjectId(e, city.loc);
         e.checkLeaf();
         scene_.cities.push_back(std::move(city));
@@ -348,7 +355,7 @@ class SceneFileReader {
         land.simplify = e.number("simplify", 0, 0, 1000);
         land.trees = e.boolean("trees", true);
         land.treeBudget = e.unsignedInteger("tree_budget", land.treeBudget);
-        land.seed = e.unsignedInteger("seed", 0);
+        land.seed = seedOverride(e);
         readObjectId(e, land.loc);
         e.checkAllRead();
         for (const XmlElement &child : e.children()) {
@@ -370,7 +377,7 @@ class SceneFileReader {
         group.loc = e.loc();
         group.rules = pathAttribute(e, "rules");
         group.rulesLoc = e.attributeLoc("rules");
-        group.seed = e.unsignedInteger("seed", 0);
+        group.seed = seedOverride(e);
         e.checkAllRead();
         for (const XmlElement &child : e.children()) {
             if (child.name() == "BuildingSettings") {

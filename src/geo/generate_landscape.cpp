@@ -1,6 +1,7 @@
 #include "geo/generate_landscape.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -10,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "core/hash.h"
+#include "core/random_streams.h"
 #include "geo/atkis.h"
 #include "geodesy/crs.h"
 #include "geo/dgm_file.h"
@@ -130,10 +132,26 @@ AtkisData readLayer(const DataFileDesc &d, const Georeference &georef, std::vect
     return data;
 }
 
-// The stable identity of an object for its random choices: its ATKIS id, or else its place
-// in the layers.
-uint32_t objectKey(const AtkisObject &o, size_t index) {
-    return o.id.empty() ? hashValues({uint32_t(index), 0x4f424aau}) : hashString(o.id);
+// The stable identity of an object for its random choices: its ATKIS id, or else its
+// Objektart and geometry (coordinates bit for bit, each part's size), never its place in the
+// layers: objects added before it leave its trees as they were. Two objects without ids of one
+// kind and geometry share their trees' draws.
+uint32_t objectKey(const AtkisObject &o) {
+    if (!o.id.empty()) return hashString(o.id);
+    std::vector<uint32_t> values{streamTag(RandomStream::AtkisGeometry), uint32_t(o.type)};
+    auto add = [&](const std::vector<MapPoint> &part) {
+        values.push_back(uint32_t(part.size()));
+        for (const MapPoint &p : part) {
+            for (double c : {p.easting, p.northing}) {
+                auto bits = std::bit_cast<uint64_t>(c);
+                values.insert(values.end(), {uint32_t(bits), uint32_t(bits >> 32)});
+            }
+        }
+    };
+    for (const MapRing &ring : o.areas) add(ring);
+    for (const MapLine &line : o.lines) add(line);
+    add(o.points);
+    return hashSequence(values);
 }
 
 std::vector<Vec2f> toLocal(const std::vector<MapPoint> &points, const LocalFrame &frame) {
@@ -195,9 +213,10 @@ class SegmentClearance {
 
 class LandscapeBuilder {
   public:
-    LandscapeBuilder(const LandscapeDesc &land, const Georeference &georef, const std::vector<LocalPolygon> &streetAreas,
-                     RenderSceneBuilder &builder, std::vector<std::string> &warnings)
-        : land_(land), frame_{{georef.originEasting, georef.originNorthing}}, streetAreas_(streetAreas),
+    LandscapeBuilder(const LandscapeDesc &land, uint32_t seed, const Georeference &georef,
+                     const std::vector<LocalPolygon> &streetAreas, RenderSceneBuilder &builder,
+                     std::vector<std::string> &warnings)
+        : land_(land), seed_(seed), frame_{{georef.originEasting, georef.originNorthing}}, streetAreas_(streetAreas),
           builder_(builder), warnings_(warnings) {
         grid_ = readTerrain(land, georef.epsg, warnings);
         for (const DataFileDesc &d : land.layers) {
@@ -293,11 +312,11 @@ class LandscapeBuilder {
             const AtkisObject &o = objects_[i];
             TreeStand stand = treeStand(landClass(o), treeKind(o));
             if (stand.spacing <= 0) continue;
-            uint32_t key = objectKey(o, i);
+            uint32_t key = objectKey(o);
             try {
-                for (const MapRing &ring : o.areas) plantArea(set, toLocal(ring, frame_), stand, land_.seed, key);
-                for (const MapLine &line : o.lines) plantLine(set, toLocal(line, frame_), stand, land_.seed, key);
-                if (!o.points.empty()) plantPoints(set, toLocal(o.points, frame_), stand, land_.seed, key);
+                for (const MapRing &ring : o.areas) plantArea(set, toLocal(ring, frame_), stand, seed_, key);
+                for (const MapLine &line : o.lines) plantLine(set, toLocal(line, frame_), stand, seed_, key);
+                if (!o.points.empty()) plantPoints(set, toLocal(o.points, frame_), stand, seed_, key);
             } catch (const std::invalid_argument &e) {
                 throw InputError(land_.loc, fmt::format("{}: {}", o.where, e.what()));
             }
@@ -339,7 +358,8 @@ class LandscapeBuilder {
             int k = tree.kind == TreeKind::Conifer ? 1 : 0;
             if (!made[k][tree.variant]) {
                 const TreeMaterials &materials = k == 1 ? conifer : broadleaf;
-                prototypes[k][tree.variant] = builder_.addPrototype(treeModel(tree.kind, tree.variant, land_.seed, materials));
+                prototypes[k][tree.variant] =
+                    builder_.addPrototype(treeModel(tree.kind, tree.variant, seed_, materials));
                 made[k][tree.variant] = true;
             }
             builder_.addInstance({treeTransform(tree, float(on->height)), prototypes[k][tree.variant], kNoMaterial,
@@ -371,6 +391,7 @@ class LandscapeBuilder {
     }
 
     const LandscapeDesc &land_;
+    uint32_t seed_;
     LocalFrame frame_;
     const std::vector<LocalPolygon> &streetAreas_;
     RenderSceneBuilder &builder_;
@@ -386,12 +407,13 @@ class LandscapeBuilder {
 
 }  // namespace
 
-LandscapeGround generateLandscape(const LandscapeDesc &land, const std::optional<Georeference> &georeference,
+LandscapeGround generateLandscape(const LandscapeDesc &land, uint32_t seed,
+                                  const std::optional<Georeference> &georeference,
                                   const std::vector<LocalPolygon> &streetAreas, RenderSceneBuilder &builder,
                                   std::vector<std::string> &warnings) {
     if (!georeference)
         throw InputError(land.loc, "a <landscape> needs the scene's <georeference crs=\"EPSG:…\" origin=\"E N\">");
-    return LandscapeBuilder(land, *georeference, streetAreas, builder, warnings).build();
+    return LandscapeBuilder(land, seed, *georeference, streetAreas, builder, warnings).build();
 }
 
 }  // namespace veduta

@@ -30,9 +30,11 @@ using LocalPolygon = std::vector<Vec2d>;
 // instance of a prototype each) into `builder`, in the local frame of the georeference's
 // origin. `streetAreas`, the pieces of the cities' streets and sidewalks (their union is the
 // street surface), are cut into the terrain as CityStreet areas above every ATKIS area, and
-// trees keep off them as off ribbons. Throws InputError (a landscape without georeference, a
-// DGM in another CRS, bad data).
-LandscapeGround generateLandscape(const LandscapeDesc &landscape, const std::optional<Georeference> &georeference,
+// trees keep off them as off ribbons. `seed` is the landscape's resolved seed
+// (buildRenderScene). Throws InputError (a landscape without georeference, a DGM in another
+// CRS, bad data).
+LandscapeGround generateLandscape(const LandscapeDesc &landscape, uint32_t seed,
+                                  const std::optional<Georeference> &georeference,
                                   const std::vector<LocalPolygon> &streetAreas, RenderSceneBuilder &builder,
                                   std::vector<std::string> &warnings);
 

@@ -9,13 +9,11 @@
 #include <vector>
 
 #include "core/hash.h"
+#include "core/random_streams.h"
 
 namespace veduta {
 
 namespace {
-
-// The two kinds of random choice, kept apart so that they never draw the same numbers.
-constexpr uint32_t kRewriteStream = 1, kTurtleStream = 2;
 
 // One production of the stochastic L-system: `symbol` → `successor` with `probability` (the
 // probabilities of a symbol's productions add up to 1).
@@ -120,7 +118,8 @@ std::string rewrite(const Species &sp, int iterations, uint32_t key) {
         std::string next;
         for (size_t i = 0; i < word.size(); ++i) {
             char c = word[i];
-            float u = bitsToUnitFloat(hashValues({key, kRewriteStream, uint32_t(g), uint32_t(i)}));
+            uint32_t bits = hashValues({key, streamTag(RandomStream::TreeRewrite), uint32_t(g), uint32_t(i)});
+            float u = bitsToUnitFloat(bits);
             std::string_view successor;
             bool matched = false;
             for (const Production &p : sp.productions) {
@@ -192,7 +191,7 @@ class TreeBuilder {
 
   private:
     float unit(size_t symbol, uint32_t dimension) const {
-        return bitsToUnitFloat(hashValues({key_, kTurtleStream, uint32_t(symbol), dimension}));
+        return bitsToUnitFloat(hashValues({key_, streamTag(RandomStream::TreeTurtle), uint32_t(symbol), dimension}));
     }
 
     // Turns the turtle's frame about one of its own axes, by `angle` scaled by the jitter.
@@ -324,7 +323,7 @@ Vec3f applyTropism(const Vec3f &heading, const Vec3f &tropism) {
 
 Mesh treeModel(TreeKind kind, uint32_t variant, uint32_t seed, const TreeMaterials &materials) {
     Species sp = species(kind, variant);
-    uint32_t key = hashValues({seed, uint32_t(kind), variant % kTreeVariants});
+    uint32_t key = hashValues({seed, streamTag(RandomStream::TreeModel), uint32_t(kind), variant % kTreeVariants});
     // A seed whose rewriting branches unusually often gets one generation fewer rather than
     // more triangles than the budget.
     for (int iterations = sp.iterations;; --iterations) {

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/hash.h"
+#include "core/random_streams.h"
 #include "geo/tree_models.h"
 
 namespace veduta {
@@ -26,7 +27,8 @@ struct Candidate {
 
 float draw(uint32_t seed, uint32_t objectId, const Candidate &cand, Draw d) {
     return bitsToUnitFloat(
-        hashValues({seed, objectId, uint32_t(cand.source), cand.a, cand.b, cand.c, uint32_t(d)}));
+        hashValues({seed, objectId, streamTag(RandomStream::TreePlacement), uint32_t(cand.source), cand.a, cand.b,
+                    cand.c, uint32_t(d)}));
 }
 
 // False, and the set marked, once it holds its limit.

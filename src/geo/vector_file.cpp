@@ -182,7 +182,7 @@ class VectorReader {
         object.where = fmt::format("{}: layer {}, feature {}", path_, layer.GetName(), feature.GetFID());
         object.typeName = layer.GetName();
         object.type = nasClassType(layer.GetName());
-        object.id = std::to_string(feature.GetFID());
+        // No feature id: it is the feature's place in the file, which other features shift.
         for (int i = 0; i < feature.GetFieldCount(); ++i) {
             if (!feature.IsFieldSetAndNotNull(i)) continue;
             std::string name = upper(feature.GetFieldDefnRef(i)->GetNameRef());
@@ -196,6 +196,8 @@ class VectorReader {
                 object.attributes[name] = value;
             }
         }
+        auto objid = object.attributes.find("OBJID");  // ATKIS exports' Objektidentifikator
+        if (object.id.empty() && objid != object.attributes.end()) object.id = objid->second;
         if (g.holes > 0)
             warnings_.push_back(fmt::format("{}: {} hole{} left out (ATKIS areas have none)", object.where, g.holes,
                                             g.holes == 1 ? "" : "s"));

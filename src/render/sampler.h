@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "core/hash.h"
+#include "core/random_streams.h"
 #include "core/vecmath.h"
 
 namespace veduta {
@@ -34,9 +35,11 @@ inline uint32_t owenScramble(uint32_t x, uint32_t seed) {
 class PixelSampler {
   public:
     PixelSampler(uint32_t seed, uint32_t pixelX, uint32_t pixelY, uint32_t sampleIndex)
-        : pixelSeed_(hashValues({seed, pixelX, pixelY})), sampleIndex_(sampleIndex) {}
+        : pixelSeed_(hashValues({seed * streamTag(RandomStream::Sampler), pixelX, pixelY})),
+          sampleIndex_(sampleIndex) {}
 
     // Each call consumes one dimension pair; the pair index is the "dimension" of the contract.
+    // The two constants give each coordinate of the pair a scramble of its own.
     Vec2f next2D() {
         uint32_t pairSeed = hashValues({pixelSeed_, pair_++});
         uint32_t index = owenScramble(sampleIndex_, pairSeed);

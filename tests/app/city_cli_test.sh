@@ -2,7 +2,8 @@
 # Bad CityData files end to end (issue 7): `veduta render` and `veduta preview` of a scene whose
 # <city> has a self-intersecting block, a point id given twice, a missing point, a lot outside
 # its block or a lot of no area stop with the place in the city file and exit 1, and leave the
-# output file as it was. A good city renders.
+# output file as it was. A good city renders, and `--seed` redraws the sampler and the city, the
+# seeds the file gives them included.
 # Usage: city_cli_test.sh VEDUTA_BINARY SOURCE_DIR
 set -u
 veduta=$1
@@ -73,5 +74,37 @@ write_city '' "$square" ''
 run preview "$work/scene.xml" -q -o "$work/good.png"
 check "a good city previews" rc_is 0
 check "its image is written" test -s "$work/good.png"
+
+# --seed is the seed of every random choice (issue 16): the sampler's and the city's.
+# write_seeded_scene RENDER_SEED CITY_SEED: each an attribute or nothing.
+write_seeded_scene() {
+    cat >"$work/seeded.xml" <<XML
+<scene version="1">
+  <camera position="20 -60 40" look_at="20 20 0" up="0 0 1" fov="50" resolution="32 18"/>
+  <render spp="2" $1/>
+  <city file="city.xml" rules="$rules" $2/>
+</scene>
+XML
+}
+render_seed() {  # render_seed SEED NAME: seeded.xml rendered with --seed SEED into NAME.exr
+    run render "$work/seeded.xml" --seed "$1" -q -o "$work/$2.exr"
+    check "render --seed $1" rc_is 0
+}
+recorded_seed() { oiiotool --info -v "$1" | sed -n 's/^ *veduta.seed: //p'; }
+
+write_seeded_scene '' ''
+render_seed 0 zero
+render_seed 5 five
+run diff "$work/zero.exr" "$work/five.exr"
+check "--seed 5 renders another image than --seed 0" bash -c "! grep -qx 'max_error: 0' '$work/out'"
+check "--seed 0 is recorded" test "$(recorded_seed "$work/zero.exr")" = 0
+check "--seed 5 is recorded" test "$(recorded_seed "$work/five.exr")" = 5
+
+# Seeds of the file's own are replaced too: the image is the one of the scene without them.
+write_seeded_scene 'seed="7"' 'seed="1"'
+render_seed 5 pinned
+check "--seed 5 replaces <render seed>" test "$(recorded_seed "$work/pinned.exr")" = 5
+run diff "$work/five.exr" "$work/pinned.exr"
+check "--seed 5 replaces <render seed> and <city seed>" out_line "max_error: 0"
 
 summary city_cli

@@ -95,7 +95,7 @@ class CityOnTerrain : public ::testing::Test {
 
     LandscapeGround landscape(const std::vector<LocalPolygon> &streets, RenderSceneBuilder &builder) {
         std::vector<std::string> warnings;
-        return generateLandscape(*description_.landscape, description_.georeference, streets, builder, warnings);
+        return generateLandscape(*description_.landscape, 0, description_.georeference, streets, builder, warnings);
     }
 
     fs::path dir_;
@@ -152,7 +152,7 @@ TEST_F(CityOnTerrain, BuildingsStandOnTheLowestTerrainUnderThemWithAPlinth) {
     RenderSceneBuilder builder;
     LandscapeGround ground = landscape(streetAreaPieces(streetNetworkOf(data)), builder);
     std::vector<std::string> warnings;
-    ASSERT_EQ(generateCity(data, 3, 1, 1, builder, warnings, &ground), 2u);
+    ASSERT_EQ(generateCity(data, 3, 1, builder, warnings, &ground), 2u);
     RenderScene s = std::move(builder).build();
     std::map<uint32_t, Seat> built = seats(s);
     ASSERT_EQ(built.size(), 2u);
@@ -176,7 +176,7 @@ TEST_F(CityOnTerrain, BuildingsStandOnTheLowestTerrainUnderThemWithAPlinth) {
     CityData flat = town();
     for (CityLot &lot : flat.blocks[0].lots) lot.base = 440;
     RenderSceneBuilder floating;
-    generateCity(flat, 3, 1, 1, floating, warnings);
+    generateCity(flat, 3, 1, floating, warnings);
     std::map<uint32_t, Seat> up = seats(std::move(floating).build());
     EXPECT_GT(up[1].walls - *ground.surface->minOver(flat.blocks[0].lots[0].points), kPlinthDepth);
 }
@@ -187,7 +187,7 @@ TEST_F(CityOnTerrain, TheTerrainDecidesAndSaysSoWhenThePointsHaveHeights) {
     RenderSceneBuilder builder;
     LandscapeGround ground = landscape({}, builder);
     std::vector<std::string> warnings;
-    generateCity(data, 3, 1, 1, builder, warnings, &ground);
+    generateCity(data, 3, 1, builder, warnings, &ground);
     size_t said = 0;
     for (const std::string &w : warnings)
         said += w.find("the heights u of its points (point 2: 12) are ignored") != std::string::npos;
@@ -195,7 +195,7 @@ TEST_F(CityOnTerrain, TheTerrainDecidesAndSaysSoWhenThePointsHaveHeights) {
     // Flat at u = 0, nothing to say.
     std::vector<std::string> none;
     RenderSceneBuilder again;
-    generateCity(town(), 3, 1, 1, again, none, &ground);
+    generateCity(town(), 3, 1, again, none, &ground);
     for (const std::string &w : none) EXPECT_EQ(w.find("are ignored"), std::string::npos) << w;
 }
 
@@ -246,7 +246,7 @@ TEST(CityStreets, WithoutALandscapeTheyAreTheFlatPlan) {
     CityData data = town();
     RenderSceneBuilder builder;
     std::vector<std::string> warnings;
-    generateCity(data, 3, 1, 1, builder, warnings);
+    generateCity(data, 3, 1, builder, warnings);
     RenderScene s = std::move(builder).build();
     Mesh plan = streetGeometry(streetNetworkOf(data));
     const BakedMesh *streets = nullptr;

@@ -135,7 +135,7 @@ TEST(GenerateBuildings, ABuildingWithoutBaseStandsOnTheGroundOverAPlinth) {
     RenderSceneBuilder builder;
     builder.addMaterial(Material::lambertian("default", Vec3f(0.8f)));
     std::vector<std::string> warnings;
-    generateBuildings(d.buildingGroups[0], ground, builder, warnings);
+    generateBuildings(d.buildingGroups[0], 0, ground, builder, warnings);
     RenderScene s = std::move(builder).build();
     EXPECT_EQ(asked.size(), 4u);  // only the building without a base of its own asked
     MaterialId plinth = kNoMaterial;

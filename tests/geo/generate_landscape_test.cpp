@@ -189,6 +189,64 @@ TEST_F(Landscape, TreesKeepOffRoadsAndWater) {
     }
 }
 
+// Trees of a forest (local x −90…−10) and of a grove east of it (x 20…90), neither with an id.
+constexpr const char *kForest = R"(
+  {"type": "Feature", "properties": {"OBJART": 4107},
+   "geometry": {"type": "Polygon", "coordinates": [[[530010, 5326010], [530090, 5326010], [530090, 5326090], [530010, 5326090], [530010, 5326010]]]}})";
+constexpr const char *kGrove = R"(
+  {"type": "Feature", "properties": {"OBJART": 4107},
+   "geometry": {"type": "Polygon", "coordinates": [[[530120, 5326010], [530190, 5326010], [530190, 5326090], [530120, 5326090], [530120, 5326010]]]}})";
+
+std::string layer(const std::string &features) {
+    return R"({"type": "FeatureCollection",
+ "crs": {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::25832"}},
+ "features": [)" + features + "]}";
+}
+
+std::vector<Transform> treesOf(const RenderScene &s) {
+    std::vector<Transform> trees;
+    for (const Instance &tree : s.instances) trees.push_back(tree.objectToWorld);
+    return trees;
+}
+
+// Where the trees stand and what the tree models look like.
+std::pair<std::vector<Transform>, std::vector<std::vector<Vec3f>>> treesAndModelsOf(const RenderScene &s) {
+    std::vector<std::vector<Vec3f>> models;
+    for (const Mesh &m : s.prototypes) models.push_back(m.positions);
+    return {treesOf(s), models};
+}
+
+TEST_F(Landscape, TreesDrawWithTheSceneSeedUnlessTheLandscapeGivesOne) {
+    write("forest.geojson", layer(kForest));
+    auto trees = [&](uint32_t sceneSeed, const std::string &own) {
+        SceneDescription d =
+            scene("<landscape " + own + "><dgm file=\"dgm.asc\"/><atkis file=\"forest.geojson\"/></landscape>\n");
+        d.seed = sceneSeed;  // as --seed sets it
+        return treesAndModelsOf(build(d));
+    };
+    auto atZero = trees(0, "");
+    ASSERT_FALSE(atZero.first.empty());
+    auto atFive = trees(5, "");
+    EXPECT_NE(atFive.first, atZero.first);    // the places
+    EXPECT_NE(atFive.second, atZero.second);  // the models
+    EXPECT_EQ(trees(5, "seed=\"0\""), atZero);
+}
+
+// An object without an id is known by its kind and geometry, not by its place in the layer.
+TEST_F(Landscape, AnObjectWithoutIdKeepsItsTreesWhenAnotherComesBeforeIt) {
+    auto groveTrees = [&](const std::string &features) {
+        write("trees.geojson", layer(features));
+        std::vector<Transform> grove;
+        RenderScene s = build(scene("<landscape><dgm file=\"dgm.asc\"/><atkis file=\"trees.geojson\"/></landscape>\n"));
+        for (const Transform &t : treesOf(s))
+            if (t.m[3] > 10) grove.push_back(t);
+        return grove;
+    };
+    std::vector<Transform> alone = groveTrees(kGrove);
+    ASSERT_FALSE(alone.empty());
+    EXPECT_EQ(groveTrees(std::string(kForest) + "," + kGrove), alone);
+}
+
 TEST_F(Landscape, TooManyTreesIsAnError) {
     write("forest.geojson", R"({"type": "FeatureCollection",
  "crs": {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::25832"}}, "features": [

@@ -20,6 +20,30 @@ std::string errorOf(const std::string &xml) {
     return "no error";
 }
 
+// <scene seed> is the base; an element's own seed overrides it, and an element without one has
+// none (buildRenderScene gives it the scene's).
+TEST(SceneFile, ReadsTheSceneSeedAndTheElementsOwnSeeds) {
+    SceneDescription d = parse(R"(<scene version="1" seed="9">
+  <render spp="2"/>
+  <buildings rules="r.xml" seed="3"/>
+  <buildings rules="r.xml"/>
+  <city file="c.xml"/>
+  <city file="c.xml" seed="4294967295"/>
+  <landscape seed="0"><dgm file="d.asc"/></landscape>
+</scene>)");
+    EXPECT_EQ(d.seed, 9u);
+    EXPECT_FALSE(d.renderSeed);
+    ASSERT_EQ(d.buildingGroups.size(), 2u);
+    EXPECT_EQ(d.buildingGroups[0].seed, 3u);
+    EXPECT_FALSE(d.buildingGroups[1].seed);
+    ASSERT_EQ(d.cities.size(), 2u);
+    EXPECT_FALSE(d.cities[0].seed);
+    EXPECT_EQ(d.cities[1].seed, 4294967295u);
+    ASSERT_TRUE(d.landscape);
+    EXPECT_EQ(d.landscape->seed, 0u);
+    EXPECT_EQ(parse("<scene version=\"1\"/>").seed, 0u);
+}
+
 TEST(SceneFile, ReadsEveryTopLevelElement) {
     SceneDescription d = parse(R"(<scene version="1">
   <camera position="1 2 3" look_at="0 0 0" up="0 0 1" fov="30" resolution="320 200"/>
@@ -43,7 +67,7 @@ TEST(SceneFile, ReadsEveryTopLevelElement) {
     EXPECT_EQ(d.environment.radiance, Vec3f(0.1f, 0.2f, 0.3f));
     EXPECT_EQ(d.settings.samplesPerPixel, 7u);
     EXPECT_EQ(d.settings.maxDepth, 3u);
-    EXPECT_EQ(d.settings.seed, 42u);
+    EXPECT_EQ(d.renderSeed, 42u);
     EXPECT_EQ(d.settings.tileSize, 8u);
     ASSERT_EQ(d.materials.size(), 1u);
     ASSERT_EQ(d.geometry.size(), 1u);
