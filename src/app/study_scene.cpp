@@ -77,7 +77,7 @@ float fitDistance(float width, float height, float aspect) {
 }  // namespace
 
 void addStudyOptions(CLI::App &command, StudyOptions &options, bool rulesAsOption) {
-    command.add_option(rulesAsOption ? "--rules" : "RULEFILE", options.rules, "Rule file (seed 000's XML, docs/rules.md)")
+    command.add_option(rulesAsOption ? "--rules" : "RULEFILE", options.rules, "Rule file (Bilke's XML format, docs/rules.md)")
         ->required(!rulesAsOption)
         ->check(CLI::ExistingFile);
     command.add_option("--seed", options.seed, "Seed of the random choices, the building's and the sampler's [0]");

@@ -1,4 +1,4 @@
-// Fitting a model into its terminal's scope (seed 000's Shape::GetTransformMatrix, digest-000
+// Fitting a model into its terminal's scope (Bilke's Shape::GetTransformMatrix, Bilke 2009
 // §4): the model's bounding box is stretched over the scope, centre to centre in width and
 // height, and its depth follows the model type or the inherited z_scale.
 #pragma once

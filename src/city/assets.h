@@ -1,4 +1,4 @@
-// The built-in facade models of seed 000's Gründerzeit rule set: the terminal symbols its
+// The built-in facade models of Bilke's Gründerzeit rule set: the terminal symbols its
 // rules end in (`Window1.wrl`, `Cornice2Chamfer.wrl`, …), which the thesis modelled in
 // Cinema 4D, generated here in code. docs/assets.md lists them.
 //
@@ -23,7 +23,7 @@
 
 namespace veduta {
 
-// Seed 000's model types (table 2.2): how a model is fitted into its scope.
+// Bilke's model types (table 2.2): how a model is fitted into its scope.
 enum class ModelType {
     NoType,
     Wall,
@@ -55,7 +55,7 @@ class AssetLibrary {
 
     // The asset a name means, with or without its ".wrl".
     std::optional<uint32_t> find(std::string_view name) const;
-    // The asset a rule file's terminal symbol names: in seed 000's rules a terminal is a model's
+    // The asset a rule file's terminal symbol names: in Bilke's rules a terminal is a model's
     // name with ".wrl" (L418); without it the name is a rule's (the thesis has a rule
     // `Entrance1` that places the model `Entrance1.wrl`).
     std::optional<uint32_t> findTerminal(std::string_view symbol) const {

@@ -54,7 +54,7 @@ BuildingGenerator::PrototypeKey BuildingGenerator::keyFor(const Terminal &termin
 
 // A wall piece is baked, not instanced: its texture coordinates are its position on the
 // facade (metres along the perimeter, metres up; plus the depth for reveals) divided by the
-// uv attribute, so neighbouring pieces continue one another (seed 000's planar wall mapping).
+// uv attribute, so neighbouring pieces continue one another (Bilke's planar wall mapping).
 void BuildingGenerator::addWallPiece(const Asset &model, const Transform &modelToFacade,
                                      const Transform &facadeToWorld, float alongPerimeter, const Terminal &terminal,
                                      const PrototypeKey &key, Mesh &baked) const {

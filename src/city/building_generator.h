@@ -1,5 +1,5 @@
-// Generating a procedural building from its footprint (seed 000's BuildingGenerator,
-// digest-000 §4): one start shape per wall, each derived with the split grammar; models become
+// Generating a procedural building from its footprint (Bilke's BuildingGenerator,
+// Bilke 2009, §2.4): one start shape per wall, each derived with the split grammar; models become
 // instances of shared prototypes, walls are baked with planar texture coordinates that run on
 // across neighbouring pieces and around the corners, and a roof of the settings' type
 // (roof_choice.h) closes the top.
@@ -28,7 +28,7 @@ struct BuildingSpec {
     SettingsStack settings;  // lot > block > city > rule file > defaults
 };
 
-// A lone facade (the Facade Editor's preview, digest-000 §5): a start symbol on a width × height
+// A lone facade (the Facade Editor's preview, Bilke 2009, §3.2): a start symbol on a width × height
 // rectangle placed by `facadeToWorld` (facade frame: right, up, out).
 struct FacadeSpec {
     uint32_t id = 0;

@@ -1,5 +1,5 @@
-// Building settings (seed 000's BuildingSettings variables) and their precedence: lot > block >
-// city > rule file > defaults (digest-000 §1). A building resolves them once into the
+// Building settings (Bilke's BuildingSettings variables) and their precedence: lot > block >
+// city > rule file > defaults (Bilke 2009, §2). A building resolves them once into the
 // properties its rules read, with its heights randomised within their `…Var` deviations.
 #pragma once
 
@@ -30,7 +30,7 @@ class SettingsStack {
     std::vector<const SettingsMap *> layers_;
 };
 
-// seed 000's defaults (L1245): BuildingHeight 15, FloorHeight 3, RoofHeight 4 metres.
+// Bilke's defaults (L1245): BuildingHeight 15, FloorHeight 3, RoofHeight 4 metres.
 const SettingsMap &defaultBuildingSettings();
 
 // One building's heights after randomisation: each is its setting plus a deviation drawn
@@ -45,7 +45,7 @@ struct BuildingHeights {
 BuildingHeights randomiseHeights(const SettingsStack &, uint32_t seed, uint32_t buildingId);
 
 // What a building's rules read as `property`: its settings, except that BuildingHeight,
-// FloorHeight and RoofHeight (and seed 000's Actual… names for them) give the randomised values.
+// FloorHeight and RoofHeight (and Bilke's Actual… names for them) give the randomised values.
 class BuildingProperties {
   public:
     // Keeps a pointer to `settings`, which must outlive it.

@@ -30,7 +30,7 @@ class CityDataReader {
         XmlElement root(doc_, doc_.root());
         if (root.name() != "CityData")
             root.fail(fmt::format("the root element is <{}>, expected <CityData>", root.name()));
-        root.string("xmlns:xsi", "");  // seed 000's files name their schema; nothing to check
+        root.string("xmlns:xsi", "");  // Bilke's files name their schema; nothing to check
         root.string("xsi:noNamespaceSchemaLocation", "");
         root.checkAllRead();
         std::vector<XmlElement> children = root.children();
@@ -60,7 +60,7 @@ class CityDataReader {
   private:
     // A lot that flags none of its edges gets those that run along a street: parallel to a
     // street within 10° and with its middle within half the street's width and a metre of the
-    // street's centreline (seed 000 computes them too, L316-319, without saying how).
+    // street's centreline (Bilke 2009 computes them too, L316-319, without saying how).
     void computeStreetEdges() {
         const float parallel = std::cos(10 * float(M_PI) / 180);
         for (CityBlock &block : city_.blocks)
@@ -199,7 +199,7 @@ class CityDataReader {
         }
         if (outline.points.size() < 3)
             e.fail(fmt::format("a {} needs at least 3 points, not {}", lot ? "lot" : "block", outline.points.size()));
-        // Seed 000 builds on horizontal ground (L235): one height per block and lot.
+        // Bilke 2009 builds on horizontal ground (L235): one height per block and lot.
         for (double h : heights)
             if (h != heights.front())
                 e.fail(fmt::format("the points of a {} must share one height u; they have {} and {}", lot ? "lot" : "block",
@@ -239,7 +239,7 @@ class CityDataReader {
         return block;
     }
 
-    // Seed 000 reverses a clockwise block with a warning (subdivideLotRectangular, L384).
+    // Bilke 2009 reverses a clockwise block with a warning (subdivideLotRectangular, L384).
     void checkBlockShape(CityBlock &block, const XmlElement &points) {
         if (!isSimplePolygon(block.points))
             points.fail("the block's outline crosses or touches itself, or has no area");

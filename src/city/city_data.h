@@ -1,4 +1,4 @@
-// Seed 000's CityData scene files (digest-000 §2.1, Listing 2.1): points, streets, blocks,
+// Bilke's CityData scene files (Bilke 2009, §2.1.2, Listing 2.1): points, streets, blocks,
 // lots with their street edges, building settings at three levels and the rule files. Read and
 // checked here; nothing is generated. docs/citydata.md documents the format and the checks.
 #pragma once
@@ -70,7 +70,7 @@ CityData readCityData(const std::filesystem::path &file, const MapProjection *pr
 CityData parseCityData(std::string xml, std::string name, const std::filesystem::path &baseDirectory,
                        const MapProjection *projection = nullptr);
 
-// Seed 000's precedence: lot > block > city > the rule file's settings > built-in defaults.
+// Bilke's precedence: lot > block > city > the rule file's settings > built-in defaults.
 // The stack points at the maps, which must outlive it.
 SettingsStack settingsFor(const CityData &city, const CityBlock &block, const CityLot *lot,
                           const SettingsMap &ruleFileSettings);

@@ -1,4 +1,4 @@
-// Deriving a facade from a start shape with a split grammar (seed 000, digest-000 §2.3–2.5):
+// Deriving a facade from a start shape with a split grammar (Bilke 2009, §2.2.2–2.2.4):
 // substitution, split and repeat, inherited attributes, transforms that carry their scale to
 // the descendants, and one branch per rule and building.
 #pragma once

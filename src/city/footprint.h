@@ -1,4 +1,4 @@
-// A building's ground plan (seed 000's lot footprint, digest-000 §2.1, §11): the polygon that
+// A building's ground plan (Bilke's lot footprint, Bilke 2009, §2.1.2, §11): the polygon that
 // start shapes and roofs are built on.
 #pragma once
 

@@ -150,7 +150,7 @@ uint32_t buildCity(const CityData &data, uint32_t seed, ObjectId objectId, const
             uint32_t id = cityBuildingId(objectId, lots[l].identity);
             const CityLot *given = block.lots.empty() ? nullptr : &block.lots[l];
             warnOfSharedId(lotOfId, id, given ? given->loc : block.loc, warnings);
-            // Seed 000 picks one of several rule files at random (L1276).
+            // Bilke 2009 picks one of several rule files at random (L1276).
             uint32_t pick = hashValues({seed, id, streamTag(RandomStream::RuleFileChoice)});
             RuleFileBuilder &rules = *ruleFiles[pick % ruleFiles.size()];
             BuildingSpec spec;
@@ -169,7 +169,7 @@ uint32_t buildCity(const CityData &data, uint32_t seed, ObjectId objectId, const
 
 }  // namespace
 
-// Seed 000's CityData XML, or OpenStreetMap data: with a georeference placed through the one
+// Bilke's CityData XML, or OpenStreetMap data: with a georeference placed through the one
 // route into the scene's frame, without in local metres (OpenStreetMap's centring on the data).
 CityData readCityFile(const CityDesc &city, const std::optional<Georeference> &georeference) {
     if (city.epsg != 0 && !georeference)

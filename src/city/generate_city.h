@@ -53,7 +53,7 @@ struct IdentifiedLot {
 };
 
 // The lots of a block: its own, or those its LotSubdivision setting cuts from what the streets
-// and sidewalks leave of it (subdivideBlock: by default perimeter lots, seed 000's
+// and sidewalks leave of it (subdivideBlock: by default perimeter lots, Bilke's
 // Blockrandbebauung, and Müller's recursive subdivision where no ring of houses fits). The
 // draws of each piece the streets leave come from the seed, the block's identity and the
 // piece's place among them, never from the block's place in the file.

@@ -1,5 +1,5 @@
 // Lot subdivision of city blocks: a block polygon is cut into building footprints that each face
-// a street. seed 000's two algorithms (digest-000 §2.2, thesis L362–406) and CityEngine's two
+// a street. Bilke's two algorithms (Bilke 2009, §2.1.3, thesis L362–406) and CityEngine's two
 // (the OBB split and Vanegas et al. 2012's straight-skeleton strips); docs/lots.md describes
 // them and the choices where their sources leave gaps.
 #pragma once
@@ -25,7 +25,7 @@ enum class LotSubdivision {
     Skeleton,   // "skeleton"
 };
 
-// seed 000's BuildingSettings for lots, in metres, square metres and degrees. The thesis gives
+// Bilke's BuildingSettings for lots, in metres, square metres and degrees. The thesis gives
 // no defaults; these suit Gründerzeit blocks (frontages of 10–22 m, wings 12 m deep).
 struct LotSettings {
     LotSubdivision algorithm = LotSubdivision::Perimeter;

@@ -1,5 +1,5 @@
-// Which material each part of a generated building gets (seed 000's GetRandomMaterialSet,
-// digest-000 §1 and §4): every building picks one material per category from those the scene
+// Which material each part of a generated building gets (Bilke's GetRandomMaterialSet,
+// Bilke 2009, §2 and §4): every building picks one material per category from those the scene
 // defines, and a rule's texture attribute names a material or, through its folder, a category.
 #pragma once
 

@@ -462,7 +462,7 @@ class OsmImporter {
     }
 
     // A building's tags as settings: height, building:levels, roof:shape and roof:height as
-    // seed 000's, every other tag (and one that does not read) as osm:<key> (docs/osm.md).
+    // Bilke's, every other tag (and one that does not read) as osm:<key> (docs/osm.md).
     SettingsMap buildingSettings(const OsmArea &area) {
         SettingsMap settings;
         for (const auto &[key, value] : area.tags) settings[fmt::format("osm:{}", key)] = settingValue(value, area.loc);

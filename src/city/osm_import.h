@@ -1,5 +1,5 @@
 // OpenStreetMap data as a city (issue 7, item 5): an .osm XML file read with GDAL's OSM driver
-// becomes the CityData that readCityData gives for seed 000's scene files (digest-000 §2.1):
+// becomes the CityData that readCityData gives for Bilke's scene files (Bilke 2009, §2.1.2):
 // highways are streets, landuse=residential areas blocks, buildings lots with their tags as
 // building settings. docs/osm.md has the mapping and the choices.
 #pragma once

@@ -1,4 +1,4 @@
-// seed 000's subdivideLotRectangular (thesis L376–402): lots in the ring between a block and its
+// Bilke's subdivideLotRectangular (thesis L376–402): lots in the ring between a block and its
 // inset, along the street edges.
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-// seed 000's subdivideLot-Mueller (thesis L362–374, after Müller 2001): recursive splits of a
+// Bilke's subdivideLot-Mueller (thesis L362–374, after Müller 2001): recursive splits of a
 // block until every piece is at most MaxLotArea.
 #include <algorithm>
 #include <cmath>

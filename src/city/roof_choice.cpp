@@ -24,7 +24,7 @@ std::string roofTypeNames() {
 }
 
 // RoofType: one name, or several separated by spaces or commas, of which each building takes
-// one at random. Unset: seed 000's choice.
+// one at random. Unset: Bilke's choice.
 RoofType chosenType(const Footprint &footprint, const SettingsStack &settings, uint32_t seed, uint32_t buildingId) {
     const SettingValue *value = settings.find("RoofType");
     if (!value) return thesisRoofType(footprint);

@@ -1,6 +1,6 @@
 // Which roof a building gets from its settings (issue 7; docs/buildings.md, "Roof settings"):
 // RoofType names one type, or several that buildings choose from by their id; RoofPitch,
-// RoofOverhang and ParapetHeight shape it. Without RoofType a building keeps seed 000's choice
+// RoofOverhang and ParapetHeight shape it. Without RoofType a building keeps Bilke's choice
 // (roofs.h: a gable over a rectangular house on one street, a mansard otherwise).
 #pragma once
 
@@ -14,7 +14,7 @@ namespace veduta {
 
 inline constexpr float kDefaultParapetHeight = 0.8f;  // ParapetHeight, metres
 
-// Seed 000's choice (Bilke 2009, §2.4.3, CreateRoof), what a building gets without RoofType: a
+// Bilke's choice (Bilke 2009, §2.4.3, CreateRoof), what a building gets without RoofType: a
 // gable when the footprint has four vertices, exactly one street edge and right angles (within
 // kRightAngleToleranceDegrees); a mansard otherwise.
 RoofType thesisRoofType(const Footprint &footprint);

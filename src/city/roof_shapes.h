@@ -1,4 +1,4 @@
-// Roofs on any simple footprint, with or without courtyards (issue 7; digest-001 §2.3,
+// Roofs on any simple footprint, with or without courtyards (issue 7; Finkenzeller 2008, ch. 4.4,
 // anchors-procedural §1.2, §6–7): flat with a parapet, hip (the straight skeleton lifted by the
 // pitch), pyramid, shed, gable, half-hip and mansard, with eaves overhangs and a fallback to a
 // simpler type, with the reason, when the footprint cannot take the one asked for.

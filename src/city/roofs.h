@@ -1,4 +1,4 @@
-// Seed 000's mansard roof (CreateRoof, Bilke 2009, §2.4.3: a flat-topped mansard over every house
+// Bilke's mansard roof (CreateRoof, Bilke 2009, §2.4.3: a flat-topped mansard over every house
 // but the rectangular ones on one street, which get a gable; roof_shapes.h builds that gable and
 // every other roof type, roof_choice.h makes the thesis' choice).
 #pragma once

@@ -15,7 +15,7 @@ namespace veduta {
 
 namespace {
 
-// Seed 000's own files write thirds as 0.333333.
+// Bilke's own files write thirds as 0.333333.
 constexpr float kProbabilitySumTolerance = 1e-4f;
 
 constexpr const char *kWhiteSpace = " \t\r\n";
@@ -36,7 +36,7 @@ std::vector<pugi::xml_node> childElements(pugi::xml_node node) {
     return children;
 }
 
-// Seed 000's files break symbol names across lines, so the text is trimmed; white space
+// Bilke's files break symbol names across lines, so the text is trimmed; white space
 // inside a name is more likely two names run together than a name.
 std::string symbolName(const XmlElement &e) {
     std::string name = e.text();
@@ -97,7 +97,7 @@ std::optional<Vec2f> readUv(const XmlElement &e) {
     return Vec2f{uv[0], uv[1]};
 }
 
-// Seed 000 was written on Windows: its texture paths use '\'.
+// Bilke 2009 was written on Windows: its texture paths use '\'.
 std::string texturePath(std::string path) {
     std::replace(path.begin(), path.end(), '\\', '/');
     return path;
@@ -168,7 +168,7 @@ class RuleSetReader {
         if (root.name() != "Rulefile") root.fail(fmt::format("the root element is <{}>, expected <Rulefile>", root.name()));
         std::string name = root.string("name");
         if (depth == 0) set_.name = name;
-        // The schema references of seed 000's files are accepted and mean nothing to us.
+        // The schema references of Bilke's files are accepted and mean nothing to us.
         root.string("xmlns:xsi", "");
         root.string("xsi:noNamespaceSchemaLocation", "");
         root.checkAllRead();

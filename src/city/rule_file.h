@@ -1,4 +1,4 @@
-// Reading seed 000's rule files (Rules.xsd, digest-000 §2.4) into a RuleSet, with veduta's
+// Reading Bilke's rule files (Rules.xsd, Bilke 2009, §2.2.3) into a RuleSet, with veduta's
 // extensions: floating repeats, scope conditions on branches and included files.
 // docs/rules.md documents the format and every check.
 #pragma once

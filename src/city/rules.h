@@ -1,6 +1,6 @@
-// The facade split grammar as a rule file describes it (seed 000, digest-000 §2.3–2.5):
+// The facade split grammar as a rule file describes it (Bilke 2009, §2.2.2–2.2.4):
 // rules keyed by their predecessor symbol, each with probability branches that substitute,
-// split or repeat. rule_file.h reads it from seed 000's XML; derivation.h applies it.
+// split or repeat. rule_file.h reads it from Bilke's XML; derivation.h applies it.
 #pragma once
 
 #include <cstdint>
@@ -18,7 +18,7 @@ namespace veduta {
 // The two axes of a facade scope: r runs left to right, u bottom to top.
 enum class SplitAxis { Right, Up };
 
-// How a fitted model's depth follows its scope (digest-000 §4, Shape::GetTransformMatrix).
+// How a fitted model's depth follows its scope (Bilke 2009, §2.4, Shape::GetTransformMatrix).
 // NotSet lets the model type decide.
 enum class ZScale { NotSet, None, Right, Up, Average };
 
@@ -31,7 +31,7 @@ struct Extent {
 };
 
 // One successor in a branch: a rule's predecessor or a terminal model, with the attributes
-// of seed 000's <Symbol>.
+// of Bilke's <Symbol>.
 struct Successor {
     std::string name;  // trimmed; terminals keep their ".wrl"
     FileLoc loc;

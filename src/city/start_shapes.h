@@ -1,4 +1,4 @@
-// Seed 000's CreateBuildingStartShapes (digest-000 §4, thesis L1275): one facade start shape
+// Bilke's CreateBuildingStartShapes (Bilke 2009, §2.4, thesis L1275): one facade start shape
 // per footprint edge, named for the grammar by where the edge lies.
 #pragma once
 

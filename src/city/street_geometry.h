@@ -1,5 +1,5 @@
-// Street surfaces from a street network (issue 7; seed 000 drew flat single-colour rectangles,
-// digest-000 §1): carriageways as ribbons of each street's width joined at the nodes into one
+// Street surfaces from a street network (issue 7; Bilke 2009 drew flat single-colour rectangles,
+// Bilke 2009, §2): carriageways as ribbons of each street's width joined at the nodes into one
 // surface, sidewalks as a band around it raised by a kerb, and the kerb faces between them.
 #pragma once
 
@@ -50,7 +50,7 @@ std::vector<std::vector<Vec2d>> streetAreaPieces(const StreetNetwork &network, c
 
 // What is left of a block's outline (counter-clockwise, x/y) once the streets and their
 // sidewalks are taken away: the pieces' outlines, counter-clockwise, each with the edges that
-// face a street flagged (their outward side lies on a sidewalk). Where seed 000's blocks run
+// face a street flagged (their outward side lies on a sidewalk). Where Bilke's blocks run
 // along the streets' centrelines, buildings stand at the back of the sidewalk.
 struct BuildableArea {
     std::vector<Vec2f> outline;

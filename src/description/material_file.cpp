@@ -71,7 +71,7 @@ MaterialDesc readMaterialElement(const XmlElement &e, const std::filesystem::pat
         d.opacityMap = readMap(e, "opacity", false, baseDirectory);
         // Colours multiply their maps, so with a map they default to leaving it as it is.
         m.diffuse = e.color("diffuse", d.diffuseMap.given() ? Vec3f(1.0f) : m.diffuse, 0, 1);
-        Vec3f specularColor = e.color("specular", Vec3f(1.0f, 1.0f, 0.85f), 0, 1);  // seed 000's base colour
+        Vec3f specularColor = e.color("specular", Vec3f(1.0f, 1.0f, 0.85f), 0, 1);  // Bilke's base colour
         float intensity = e.number("specular_intensity", d.specularMap.given() ? 1.0f : 0.0f, 0, 1);
         m.specular = specularColor * intensity;
         m.shininess = e.number("shininess", m.shininess, 0, 1e5f);

@@ -132,7 +132,7 @@ struct BuildingGroupDesc {
     std::vector<FacadeDesc> facades;
 };
 
-// A <city> element: a CityData file (seed 000's Listing 2.1, docs/citydata.md) whose blocks are
+// A <city> element: a CityData file (Bilke's Listing 2.1, docs/citydata.md) whose blocks are
 // cut into lots where they have none and whose lots are built with the rule files it names.
 struct CityDesc {
     FileLoc loc;

@@ -1,4 +1,4 @@
-// Building settings as a description holds them: seed 000's <BuildingSettings> name/value
+// Building settings as a description holds them: Bilke's <BuildingSettings> name/value
 // pairs (Bilke 2009, §1), read from scene files, CityData files and rule files alike. What
 // they mean to a building is src/city/building_settings.h.
 #pragma once
@@ -25,7 +25,7 @@ using SettingsMap = std::unordered_map<std::string, SettingValue>;
 SettingValue settingValue(std::string text, const FileLoc &loc);
 
 class XmlElement;
-// seed 000's <BuildingSettings>: each child element's name is a setting and its text the value,
+// Bilke's <BuildingSettings>: each child element's name is a setting and its text the value,
 // a number or a string. A setting given twice is an error.
 SettingsMap readBuildingSettings(const XmlElement &element);
 

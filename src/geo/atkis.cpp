@@ -14,7 +14,7 @@ struct TypeEntry {
     std::string_view name;
 };
 
-// Seed 004 §3.2 (tables 2–5 of the thesis, the duplicate 3203 read as 3203/3204) and the
+// Rilling 2006, §3.2 (tables 2–5 of the thesis, the duplicate 3203 read as 3203/3204) and the
 // settlement, garden and water codes it names from ATKIS-OK 3.2 (docs/atkis.md).
 constexpr std::array kTypes{
     TypeEntry{1000, "Präsentation"},

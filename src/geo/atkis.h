@@ -1,4 +1,4 @@
-// The ATKIS object model (seed 004 §3): objects of an Objektart (a 4-digit code) with
+// The ATKIS object model (Rilling 2006, §3.2–3.4): objects of an Objektart (a 4-digit code) with
 // attributes (a 3-letter name and a value) and point, line or area geometry in a projected
 // CRS. The EDBS parser (edbs.h) and the GDAL/OGR reader for NAS, Shapefile and GeoPackage
 // (vector_file.h) both produce it; draping, vegetation and `veduta atkis` read it.

@@ -1,4 +1,4 @@
-// Draping ATKIS areas on the DGM (seed 004 §4.1, issue 8): one terrain mesh over the whole
+// Draping ATKIS areas on the DGM (Rilling 2006, §4.5, issue 8): one terrain mesh over the whole
 // grid with the area outlines cut in, each triangle inside one grid triangle and one area (or
 // none), so the surface is the grid's own piecewise-linear surface and the caller can give
 // every area its material. docs/draping.md describes the choices.
@@ -36,7 +36,7 @@ struct DrapedTerrain {
     std::vector<float> waterLevel;       // per area: the level of a Water area, NaN for other classes
 };
 
-// Where areas overlap (ATKIS allows it, seed 004 §3.1), the area of the higher priority wins;
+// Where areas overlap (ATKIS allows it, Rilling 2006, §3.2), the area of the higher priority wins;
 // between equal priorities, the earlier area. A city's streets (CityStreet) 10 > Water and
 // River 9 > Road, Path, Rail 8 > Settlement 7 > Park 6 > Forest 5 > Shrubs, TreeRow, Hedge 4 >
 // Farmland 3 > Grassland 2 > Other 1.

@@ -1,4 +1,4 @@
-// EDBS, the "Einheitliche Datenbankschnittstelle" of ALK and ATKIS (seed 004 §3.3 and LV
+// EDBS, the "Einheitliche Datenbankschnittstelle" of ALK and ATKIS (Rilling 2006, §3.4 and LV
 // Sachsen's "Beschreibung der EDBS-Schnittstelle", 2006): one record per line, records split
 // over continuation records joined, Grundriss (ULOBNN) and Attribut (ULTANN) data read into
 // plain structures (EdbsFile). toAtkis then assembles objects: the vector elements of each

@@ -1,5 +1,5 @@
 // Vector elements (polylines sharing end points exactly) joined into outlines and polylines,
-// whatever the order and direction they come in (seed 004 §3.4, Listing 1, with its gaps
+// whatever the order and direction they come in (Rilling 2006, §3.4, Listing 1, with its gaps
 // closed: the first element's end point kept, the closing duplicate dropped, and an open
 // outline reported instead of looping).
 #pragma once

@@ -1,5 +1,5 @@
 // The lines of a DGM's grid in the local frame, in double, and the splitting of polylines
-// where they cross them (seed 004 §4.1 step 1): draping and ribbons cut their outlines and
+// where they cross them (Rilling 2006, §4.5 step 1): draping and ribbons cut their outlines and
 // centre lines there so that every piece lies in one grid cell.
 #pragma once
 
@@ -39,7 +39,7 @@ GridLines gridLines(const HeightGrid &grid, const LocalFrame &frame);
 Vec2d toLocalDouble(const MapPoint &p, const LocalFrame &frame);
 
 // `line` with a point inserted wherever a segment crosses a grid line strictly between its ends
-// (seed 004 §8 test 13). An inserted point lies exactly on its line (that coordinate is the
+// (Rilling 2006 (digest §8) test 13). An inserted point lies exactly on its line (that coordinate is the
 // line's double); the other coordinate is interpolated and clamped to the segment's range, so
 // that every resulting segment lies in one closed cell even where rounding would misorder two
 // crossings near a node. The lines run on beyond the grid (outlines leaving the grid are cut

@@ -1,4 +1,4 @@
-// Vertex normals of draped meshes (seed 004 §2: the area-weighted sum of the adjacent face
+// Vertex normals of draped meshes (Rilling 2006, §3.1: the area-weighted sum of the adjacent face
 // normals), shared by the terrain and the ribbons.
 #pragma once
 

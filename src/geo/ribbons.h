@@ -1,6 +1,6 @@
-// Roads, paths and rails as ribbons draped on the terrain (seed 004 §4.2): a strip of the
+// Roads, paths and rails as ribbons draped on the terrain (Rilling 2006, ch. 6): a strip of the
 // line's width, level across and following the terrain along, never below the surface
-// (seed 004's thesis let bilinear heights pierce it, its Abb. 66). docs/draping.md.
+// (Rilling's thesis let bilinear heights pierce it, its Abb. 66). docs/draping.md.
 #pragma once
 
 #include "geo/atkis.h"

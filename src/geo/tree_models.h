@@ -1,4 +1,4 @@
-// Procedural tree prototypes after seed 004 §7.3 (digest §4.5): a small bracketed, stochastic
+// Procedural tree prototypes after Rilling 2006, ch. 7 (digest §4.5): a small bracketed, stochastic
 // L-system rewritten a few times and read by a 3D turtle that draws tapered cylinders for
 // trunk and branches and low-poly foliage blobs, bent by the thesis's tropism. Real geometry,
 // not the thesis's crossed billboards: the path tracer instances one prototype per kind and

@@ -1,4 +1,4 @@
-// Seed 000's per-pixel shader PPSUNS (digest-000 §3; thesis L987–1131) as a plain function:
+// Bilke's per-pixel shader PPSUNS (Bilke 2009, §2.3; thesis L987–1131) as a plain function:
 // per-pixel Phong with a normal map, a specular map and a pre-blurred "diffuse" environment
 // cubemap, in OpenGL's fixed-function light and material colours. It is the thesis's real-time
 // look, for comparison with the path tracer; nothing in the renderer depends on it.
@@ -13,7 +13,7 @@ struct ThesisLight {
     Vec3f ambient, diffuse, specular;
 };
 
-// gl_FrontMaterial's colours (seed 000's base: ambient 0.4, diffuse 0.65, specular
+// gl_FrontMaterial's colours (Bilke's base: ambient 0.4, diffuse 0.65, specular
 // (1, 1, 0.85) × intensity, L1190).
 struct ThesisMaterial {
     Vec3f ambient, diffuse, specular;

@@ -1,4 +1,4 @@
-// Surface materials: the Phong model of seed 000's material table (diffuse, specular,
+// Surface materials: the Phong model of Bilke's material table (diffuse, specular,
 // shininess; normal, specular and reflection maps) made physically plausible, plus thin
 // glass for window panes and opacity cut-outs for foliage. docs/materials.md documents the
 // fields; render/bsdf.h turns them into a BSDF at each hit.
@@ -12,7 +12,7 @@
 
 namespace veduta {
 
-// The categories of seed 000's table 2.4. They say what a material is for (which generated
+// The categories of Bilke's table 2.4. They say what a material is for (which generated
 // part may pick it); rendering does not depend on them.
 enum class MaterialCategory { None, Facade, Roof, Material, Door, Wall, Window, Reflection };
 

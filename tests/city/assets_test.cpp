@@ -11,7 +11,7 @@
 namespace veduta {
 namespace {
 
-// Every model the Gründerzeit rules of seed 000 name, with its type.
+// Every model the Gründerzeit rules of Bilke 2009 name, with its type.
 const std::map<std::string, ModelType> kModels = {
     {"Wall0", ModelType::Wall},
     {"Wall+1", ModelType::Wall},

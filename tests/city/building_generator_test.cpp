@@ -1,4 +1,4 @@
-// Building generation with seed 000's Gründerzeit rules: T10 (z-scale), T11 (walls continue
+// Building generation with Bilke's Gründerzeit rules: T10 (z-scale), T11 (walls continue
 // one another's texture), instancing, per-building materials and determinism.
 #include <gtest/gtest.h>
 

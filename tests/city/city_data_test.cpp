@@ -1,4 +1,4 @@
-// Seed 000's CityData files: the completed Listing 2.1, settings precedence (T6), computed
+// Bilke's CityData files: the completed Listing 2.1, settings precedence (T6), computed
 // street edges, and every error at its place.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Seed 000's golden tests of the split grammar (digest-000 §10): T1 split, T2 repeat, T3 mixed
+// Bilke's golden tests of the split grammar (Bilke 2009 (digest §10)): T1 split, T2 repeat, T3 mixed
 // sizes, T4 scale inheritance, T5 branch frequencies and per-building consistency, T6 settings
 // precedence; and the derivation's limits.
 #include <gtest/gtest.h>
@@ -260,7 +260,7 @@ TEST(Derivation, ConditionsChooseAmongTheBranchesThatFit) {
 }
 
 TEST(Derivation, T6SettingsPrecedenceLotBlockCityDefaults) {
-    // digest-000 listing 2.1: the city sets 12 ± 2 m, the second block's lot 16 m.
+    // Bilke 2009 listing 2.1: the city sets 12 ± 2 m, the second block's lot 16 m.
     SettingsMap city{{"BuildingHeight", number(12)}, {"BuildingHeightVar", number(2)}};
     SettingsMap block{{"LODLevel", number(1)}};
     SettingsMap lot{{"BuildingHeight", number(16)}};

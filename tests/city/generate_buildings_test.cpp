@@ -47,7 +47,7 @@ TEST(GenerateBuildings, BuildingsAndFacadesBecomeGeometryWithTheirIds) {
     for (const Vec3f &p : s.meshes[1].mesh.positions) top = std::max(top, p.z);
     EXPECT_GT(top, 20 + 3);  // the lot's own height, with its roof
     EXPECT_FALSE(s.instances.empty());
-    ASSERT_EQ(warnings.size(), 1u);  // seed 000's own rule whose probabilities sum to 0.5
+    ASSERT_EQ(warnings.size(), 1u);  // Bilke's own rule whose probabilities sum to 0.5
     EXPECT_NE(warnings[0].find("sum to 0.5"), std::string::npos) << warnings[0];
 }
 

@@ -1,4 +1,4 @@
-// <city> in scene files: seed 000's Listing 2.1 built into lots, buildings and streets.
+// <city> in scene files: Bilke's Listing 2.1 built into lots, buildings and streets.
 #include <gtest/gtest.h>
 
 #include <set>

@@ -1,4 +1,4 @@
-// Listing 2.2 of seed 000 (a rule file), shared by the parser's and the derivation's tests.
+// Listing 2.2 of Bilke 2009 (a rule file), shared by the parser's and the derivation's tests.
 #pragma once
 
 namespace veduta {

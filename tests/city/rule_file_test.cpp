@@ -96,7 +96,7 @@ TEST(RuleFile, ListingTwoTwoAsTruncatedIsAnXmlError) {
     EXPECT_EQ(errorOf(truncated), "t.xml:53:10: Error parsing end element tag");
 }
 
-// digest-000 §7, L2424–2439, verbatim: a split and a substitution whose uv is broken over two lines.
+// Bilke 2009, ch. 4, L2424–2439, verbatim: a split and a substitution whose uv is broken over two lines.
 TEST(RuleFile, OutpickingOrnamentWallParsesVerbatim) {
     RuleSet set = parse(R"(<Rulefile name="ornaments">
 <Rule>
@@ -301,7 +301,7 @@ TEST(RuleFile, CycleOfRulesIsNamedAtItsFirstRule) {
               "A → B → A");
 }
 
-// Seed 000's GroundfloorWindowTileChoice (L2040–2050): its only branch has probability 0.5.
+// Bilke's GroundfloorWindowTileChoice (L2040–2050): its only branch has probability 0.5.
 TEST(RuleFile, ProbabilitiesNotSummingToOneAreWarnedAndRenormalised) {
     RuleSet set = parse(R"(<Rulefile name="t">
 <Rule>

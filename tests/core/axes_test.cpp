@@ -11,7 +11,7 @@ void expectNear(const Vec3f &a, const Vec3f &b) {
     EXPECT_NEAR(a.z, b.z, 1e-6f);
 }
 
-// T12 of digest-000: TransformGeoZUp maps (1,2,3) to (1,−3,2).
+// T12 of Bilke 2009: TransformGeoZUp maps (1,2,3) to (1,−3,2).
 TEST(Axes, TransformGeoZUpMapsSeedExample) {
     EXPECT_EQ(yUpToZUp({1, 2, 3}), Vec3f(1, -3, 2));
     EXPECT_EQ(kYUpToZUp.applyPoint({1, 2, 3}), Vec3f(1, -3, 2));

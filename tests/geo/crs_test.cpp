@@ -109,7 +109,7 @@ TEST(Crs, DatumChangeRoundTripsAndKeepsHeights) {
     }
 }
 
-// From the thesis digest (../shared/seeds/digest-004.md, §1 table and §8 items 1–4),
+// From the digest of Rilling 2006 (../shared/seeds/digest-004.md, §1 table and §8 items 1–4),
 // computed there with GeographicLib and PROJ; cs2cs -f %.4f EPSG:31467 EPSG:31466 on
 // "5588000 3392030" gives 5587944.3165 2605210.9588.
 TEST(Crs, GaussKruegerStrip3ToStrip2AndBack) {

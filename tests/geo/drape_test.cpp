@@ -81,7 +81,7 @@ std::vector<DrapeArea> testAreas(const HeightGrid &grid) {
 }
 
 TEST(GridLines, CutsASegmentWhereItCrossesTheLines) {
-    // Seed 004 §8 test 13: (3, 3) → (27, 14) with w = 10.
+    // Rilling 2006 (digest §8) test 13: (3, 3) → (27, 14) with w = 10.
     GridLines lines{{0, 10, 20, 30}, {0, 10, 20}};
     std::vector<Vec2d> cut = splitAtGridLines({{3, 3}, {27, 14}}, lines, false);
     ASSERT_EQ(cut.size(), 5u);
@@ -113,7 +113,7 @@ TEST(GridLines, EveryPieceLiesInOneCell) {
 }
 
 TEST(DrapeAreas, FlatPlaneNormalsAreExactlyUp) {
-    // Seed 004 §8 test 17.
+    // Rilling 2006 (digest §8) test 17.
     HeightGrid grid = test::flatTerrain(101, 81, 2.0, kSouthWest, 123.5f);
     DrapedTerrain terrain = drapeAreas(grid, kFrame, testAreas(grid), {});
     ASSERT_GT(terrain.mesh.triangleCount(), 2u * 100 * 80);
@@ -171,7 +171,7 @@ TEST(DrapeAreas, IsWatertightLiesOnTheGridAndSplitsByArea) {
     }
     GridBox box = localBox(grid);
     EXPECT_NEAR(total, (box.x1 - box.x0) * (box.y1 - box.y0), 1e-6 * total);
-    // Σ triangle area = polygon area (seed 004 §8 test 16) for the areas inside the grid that
+    // Σ triangle area = polygon area (Rilling 2006 (digest §8) test 16) for the areas inside the grid that
     // nothing of a higher priority overlaps; to the float rounding of the outline's points.
     for (size_t i : {8u, 9u}) EXPECT_NEAR(areaSums[i], test::ringArea(localRing(areas[i].outline)), 1e-3) << i;
     EXPECT_GT(areaSums[11], 0);  // the sliver is there
@@ -251,7 +251,7 @@ TEST(DrapeAreas, CellsWithoutDataAreLeftOut) {
 }
 
 TEST(DrapeAreas, LandscapeUvsAreLocalMetresOverTheTile) {
-    // Seed 004 §8 test 18: one texture tile per 10 m, the same across areas.
+    // Rilling 2006 (digest §8) test 18: one texture tile per 10 m, the same across areas.
     HeightGrid grid = test::roughTerrain(31, 31, 3.0, kSouthWest, 7);
     DrapedTerrain terrain = drapeAreas(grid, kFrame, testAreas(grid), {});
     for (size_t v = 0; v < terrain.mesh.vertexCount(); ++v) {

@@ -34,7 +34,7 @@ double ribbonHeightAt(const Mesh &ribbon, size_t t, double a, double b) {
 }
 
 TEST(Ribbons, AnEastwardSegmentHasItsLeftToTheNorth) {
-    // Seed 004 §8 test 19: l = up × d, r = d × up, each half the width.
+    // Rilling 2006 (digest §8) test 19: l = up × d, r = d × up, each half the width.
     Terrain flat(test::flatTerrain(21, 21, 5.0, kSouthWest, 80), {});
     RibbonOptions options;
     Mesh ribbon = drapeRibbon({at(flat.grid, 12, 40), at(flat.grid, 37, 40)}, 6, flat.surface, kFrame, options);
@@ -160,7 +160,7 @@ TEST(Ribbons, NeverBelowTheTerrain) {
     EXPECT_GE(lowest, 0.05 - 1e-4);  // the lift holds
     std::cout << "mean clearance " << clearance / double(samples) << " m\n";
 
-    // Seed 004 §8 test 20: no DGM node under a ribbon lies above it.
+    // Rilling 2006 (digest §8) test 20: no DGM node under a ribbon lies above it.
     GridLines gl = gridLines(grid, kFrame);
     for (const Mesh &ribbon : ribbons) {
         for (size_t t = 0; t < ribbon.triangleCount(); ++t) {

@@ -7,7 +7,7 @@
 namespace veduta {
 namespace {
 
-// Seed 000's base material colours (L1190) and a light whose channels differ, so that a
+// Bilke's base material colours (L1190) and a light whose channels differ, so that a
 // term taken from the wrong colour shows.
 const ThesisLight kLight{{0.2f, 0.3f, 0.4f}, {0.9f, 0.8f, 0.7f}, {1.0f, 0.5f, 0.25f}};
 const ThesisMaterial kMaterial{{0.4f, 0.4f, 0.4f}, {0.65f, 0.65f, 0.65f}, {1.0f, 1.0f, 0.85f}, 10.0f};
@@ -27,7 +27,7 @@ void expectColor(const Vec3f &actual, const Vec3f &expected) {
     EXPECT_NEAR(actual.z, expected.z, 1e-5f);
 }
 
-// T13 (digest-000 §10): flat normal map, base 1, environment 0, vAmbient = 0.4·La:
+// T13 (Bilke 2009 (digest §10)): flat normal map, base 1, environment 0, vAmbient = 0.4·La:
 // 0.6·La + 0.325·Ld·max(l·n, 0) + spec. Seen from straight above, R·V = l·n, so the
 // shader's specular is Ls·Ms·max(l·n, 0)^shininess.
 TEST(ThesisShading, FlatPixelIsAmbientPlusHalfDiffusePlusSpecular) {

@@ -1,6 +1,6 @@
-// T14 (digest-000 §10): a labelled cubemap, each face one colour, must show the right label
+// T14 (Bilke 2009 (digest §10)): a labelled cubemap, each face one colour, must show the right label
 // in each ENU direction, whether it is built face by face, read from a vertical or horizontal
-// cross drawn as docs/cubemap.md shows them, or assembled from seed 000's CubeMapGen images.
+// cross drawn as docs/cubemap.md shows them, or assembled from Bilke's CubeMapGen images.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -110,8 +110,8 @@ TEST(CubemapEnu, HorizontalCrossPlacesFacesAsDocumented) {
     expectLabelsInEveryDirection(cubemapFromCross(cross));
 }
 
-// Seed 000 split its Vue crosses with ATI CubeMapGen into c00…c05 = east, west, north, south,
-// down, up (digest-000 §3, docs/cubemap.md). veduta names no such files, so the mapping is
+// Bilke 2009 split its Vue crosses with ATI CubeMapGen into c00…c05 = east, west, north, south,
+// down, up (Bilke 2009, §2.3, docs/cubemap.md). veduta names no such files, so the mapping is
 // this table: images in CubeMapGen's order, placed by it, show their labels towards ENU.
 TEST(CubemapEnu, CubeMapGenOrderMapsToEnuFaces) {
     struct CubeMapGenImage {
