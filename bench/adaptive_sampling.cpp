@@ -19,11 +19,11 @@
 #include <thread>
 #include <vector>
 
+#include "assembly/build_scene.h"
 #include "film/adaptive_sampling.h"
 #include "film/passes.h"
 #include "rel_mse.h"
 #include "render/renderer.h"
-#include "assembly/build_scene.h"
 
 namespace veduta {
 namespace {

@@ -19,8 +19,8 @@
 #include "city/building_generator.h"
 #include "city/building_rules.h"
 #include "core/hash.h"
-#include "median_reporter.h"
 #include "description/material_file.h"
+#include "median_reporter.h"
 
 namespace veduta {
 namespace {
@@ -138,10 +138,9 @@ int main(int argc, char **argv) {
     const auto *large = reporter.find("BM_Buildings/10000");
     if (small && large) {
         double smallMs = small->GetAdjustedRealTime(), largeMs = large->GetAdjustedRealTime();
-        std::printf("\none core: %.0f buildings/s at 1,000, %.0f at 10,000 (target >= 1000)\n",
-                    1000 / (smallMs / 1000), 10000 / (largeMs / 1000));
-        std::printf("heap per building at 10,000: %.1f KB (target <= 100)\n",
-                    large->counters.at("KB/building").value);
+        std::printf("\none core: %.0f buildings/s at 1,000, %.0f at 10,000 (target >= 1000)\n", 1000 / (smallMs / 1000),
+                    10000 / (largeMs / 1000));
+        std::printf("heap per building at 10,000: %.1f KB (target <= 100)\n", large->counters.at("KB/building").value);
         std::printf("time(10,000) / time(1,000) = %.2f (target <= 11)\n", largeMs / smallMs);
     }
     benchmark::Shutdown();

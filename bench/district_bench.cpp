@@ -17,13 +17,13 @@
 #include "city/building_rules.h"
 #include "city/generate_city.h"
 #include "city/roof_choice.h"
-#include "median_reporter.h"
 #include "description/material_file.h"
+#include "median_reporter.h"
 
 namespace veduta {
 namespace {
 
-constexpr int kColumns = 8, kRows = 10;       // blocks
+constexpr int kColumns = 8, kRows = 10;                // blocks
 constexpr float kBlockWidth = 125, kBlockDepth = 100;  // street centre to centre: 1 km × 1 km
 constexpr uint32_t kSeed = 1871;
 
@@ -59,8 +59,12 @@ CityData district() {
             city.blocks.push_back(std::move(block));
         }
     }
-    for (auto [name, text] : {std::pair{"BuildingHeight", "17"}, {"BuildingHeightVar", "1.5"}, {"FloorHeight", "3.6"},
-                              {"RoofHeight", "4.5"}, {"MinBuildingLength", "12"}, {"MaxBuildingLength", "22"},
+    for (auto [name, text] : {std::pair{"BuildingHeight", "17"},
+                              {"BuildingHeightVar", "1.5"},
+                              {"FloorHeight", "3.6"},
+                              {"RoofHeight", "4.5"},
+                              {"MinBuildingLength", "12"},
+                              {"MaxBuildingLength", "22"},
                               {"MinBuildingDepth", "13"}}) {
         city.settings[name] = value(text);
     }
@@ -74,7 +78,8 @@ struct Fixture {
     BuildingRules loaded{city.ruleFiles.front()};
     std::vector<Material> materials = [] {
         std::vector<Material> result;
-        for (const MaterialDesc &desc : readMaterialFile(std::string(VEDUTA_SOURCE_DIR) + "/rules/gruenderzeit/materials.xml")) {
+        for (const MaterialDesc &desc :
+             readMaterialFile(std::string(VEDUTA_SOURCE_DIR) + "/rules/gruenderzeit/materials.xml")) {
             Material m = desc.material;
             if (desc.normalMap.given()) m.normalMap = 0;  // no image is read, but tangents are made
             result.push_back(m);

@@ -22,7 +22,8 @@ HeightGrid bigGrid() {
     grid.heights.resize(1000 * 1000);
     for (int r = 0; r < 1000; ++r) {
         for (int c = 0; c < 1000; ++c) {
-            grid.node(c, r) = float(200 + 20 * std::sin(c / 37.0) * std::cos(r / 23.0) + 0.05 * c + unit(1, uint32_t(r * 1000 + c)));
+            grid.node(c, r) =
+                float(200 + 20 * std::sin(c / 37.0) * std::cos(r / 23.0) + 0.05 * c + unit(1, uint32_t(r * 1000 + c)));
         }
     }
     return grid;
@@ -31,8 +32,9 @@ HeightGrid bigGrid() {
 // 200 star-shaped areas of 40–120 points, 15–80 m across, overlapping, every class.
 std::vector<DrapeArea> manyAreas(const HeightGrid &grid) {
     std::vector<DrapeArea> areas;
-    LandClass classes[] = {LandClass::Forest, LandClass::Farmland, LandClass::Settlement, LandClass::Grassland,
-                           LandClass::Park, LandClass::Shrubs, LandClass::Water, LandClass::Other, {}};
+    LandClass classes[] = {LandClass::Forest,    LandClass::Farmland, LandClass::Settlement,
+                           LandClass::Grassland, LandClass::Park,     LandClass::Shrubs,
+                           LandClass::Water,     LandClass::Other,    {}};
     for (uint32_t i = 0; i < 200; ++i) {
         double cx = grid.west + 1000 * unit(2, i), cy = grid.south + 1000 * unit(3, i), radius = 15 + 65 * unit(4, i);
         int points = 40 + int(80 * unit(5, i));

@@ -17,11 +17,11 @@
 #include <memory>
 #include <string>
 
+#include "assembly/build_scene.h"
 #include "film/passes.h"
 #include "io/cubemap_files.h"
 #include "rel_mse.h"
 #include "render/renderer.h"
-#include "assembly/build_scene.h"
 
 namespace veduta {
 namespace {
@@ -96,9 +96,9 @@ int main(int argc, char **argv) {
     std::printf("diffuse scene lit by %s; %u spp against a %u-spp MIS reference\n",
                 hdri ? hdri : "an HDR cubemap (6x64^2) with a 0.5 deg sun in it", spp, referenceSpp);
     std::printf("%-28s %12s\n", "strategy", "relMSE");
-    for (auto [name, sampling] : {std::pair{"MIS (power heuristic)", LightSampling::Mis},
-                                  std::pair{"BSDF sampling only", LightSampling::Bsdf},
-                                  std::pair{"environment sampling only", LightSampling::Light}}) {
+    for (auto [name, sampling] :
+         {std::pair{"MIS (power heuristic)", LightSampling::Mis}, std::pair{"BSDF sampling only", LightSampling::Bsdf},
+          std::pair{"environment sampling only", LightSampling::Light}}) {
         RenderScene scene = makeScene(sampling, spp, sky);
         scene.settings.seed = 1;  // independent of the reference's samples
         std::printf("%-28s %12.6f\n", name, relMse(renderScene(scene), reference));

@@ -24,6 +24,7 @@ constexpr float kNear = 0.05f;  // metres, as the preview clips
 // them too, but so does glvnd's libGL/libOpenGL, which a dependency can bring into the process
 // (OpenCV already brings libGLX); whichever came first would win, and glvnd without a current
 // GLX context silently does nothing.
+// clang-format off
 #define VEDUTA_GL_FUNCTIONS(X)                                                                                         \
     X(ActiveTexture) X(AttachShader) X(BindBuffer) X(BindTexture) X(BindVertexArray) X(BufferData) X(Clear)            \
     X(ClearColor) X(CompileShader) X(CreateProgram) X(CreateShader) X(DeleteBuffers) X(DeleteProgram)    \
@@ -32,6 +33,7 @@ constexpr float kNear = 0.05f;  // metres, as the preview clips
     X(GetProgramInfoLog) X(GetProgramiv) X(GetShaderInfoLog) X(GetShaderiv) X(GetString) X(GetUniformLocation)         \
     X(LinkProgram) X(ShaderSource) X(TexBuffer) X(Uniform1i) X(Uniform3f) X(UniformMatrix4fv) X(UseProgram)           \
     X(VertexAttribDivisor) X(VertexAttribIPointer) X(VertexAttribPointer) X(Viewport)
+// clang-format on
 
 struct GlFunctions {
 #define VEDUTA_GL_DECLARE(name) decltype(&::gl##name) name = nullptr;
@@ -40,8 +42,8 @@ struct GlFunctions {
 
     // Needs a current context.
     void load() {
-#define VEDUTA_GL_LOAD(name)                                                                                           \
-    name = reinterpret_cast<decltype(name)>(OSMesaGetProcAddress("gl" #name));                                       \
+#define VEDUTA_GL_LOAD(name)                                                   \
+    name = reinterpret_cast<decltype(name)>(OSMesaGetProcAddress("gl" #name)); \
     if (!name) throw std::runtime_error("OSMesa has no gl" #name);
         VEDUTA_GL_FUNCTIONS(VEDUTA_GL_LOAD)
 #undef VEDUTA_GL_LOAD
@@ -304,7 +306,8 @@ struct OsMesaRenderer::Impl {
         return program;
     }
 
-    template <typename T> GLuint upload(GLenum target, const std::vector<T> &data) {
+    template <typename T>
+    GLuint upload(GLenum target, const std::vector<T> &data) {
         GLuint buffer = 0;
         gl.GenBuffers(1, &buffer);
         gl.BindBuffer(target, buffer);
@@ -413,8 +416,8 @@ struct OsMesaRenderer::Impl {
 
     ~Impl() {
         if (!context) return;
-        bool current = OSMesaGetCurrentContext() == context ||
-                       OSMesaMakeCurrent(context, colour.data(), GL_FLOAT, width, height);
+        bool current =
+            OSMesaGetCurrentContext() == context || OSMesaMakeCurrent(context, colour.data(), GL_FLOAT, width, height);
         if (current) {
             for (Batch &b : batches) {
                 gl.DeleteVertexArrays(1, &b.vertexArray);
@@ -430,12 +433,24 @@ struct OsMesaRenderer::Impl {
     }
 };
 
-OsMesaRenderer::OsMesaRenderer(const RenderScene &scene)
-    : impl_(std::make_unique<Impl>(scene.camera.width, scene.camera.height)) {
+OsMesaRenderer::OsMesaRenderer(const RenderScene &scene) :
+    impl_(std::make_unique<Impl>(scene.camera.width, scene.camera.height)) {
     Impl &r = *impl_;
-    const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_STENCIL_BITS, 0,
-                              OSMESA_ACCUM_BITS, 0, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                              OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
+    const int attributes[] = {OSMESA_FORMAT,
+                              OSMESA_RGBA,
+                              OSMESA_DEPTH_BITS,
+                              24,
+                              OSMESA_STENCIL_BITS,
+                              0,
+                              OSMESA_ACCUM_BITS,
+                              0,
+                              OSMESA_PROFILE,
+                              OSMESA_CORE_PROFILE,
+                              OSMESA_CONTEXT_MAJOR_VERSION,
+                              3,
+                              OSMESA_CONTEXT_MINOR_VERSION,
+                              3,
+                              0};
     r.context = OSMesaCreateContextAttribs(attributes, nullptr);
     if (!r.context) throw std::runtime_error("OSMesa could not create a GL 3.3 core context");
     r.makeCurrent();

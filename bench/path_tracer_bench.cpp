@@ -9,8 +9,8 @@
 #include <cstdio>
 #include <map>
 #include <memory>
-#include <string>
 #include <random>
+#include <string>
 #include <vector>
 
 #include <benchmark/benchmark.h>
@@ -20,12 +20,12 @@
 #include <xmmintrin.h>
 
 #include "app/scene_loading.h"
+#include "assembly/build_scene.h"
 #include "median_reporter.h"
 #include "render/embree_util.h"
 #include "render/renderer.h"
 #include "render/sampling.h"
 #include "render/surface_interaction.h"
-#include "assembly/build_scene.h"
 
 namespace veduta {
 namespace {
@@ -35,7 +35,8 @@ struct BenchScene {
     Bvh bvh;
     std::vector<Ray> incoherentRays;
 
-    explicit BenchScene(const std::string &path) : scene(makeScene(path)), bvh(scene), incoherentRays(makeIncoherentRays()) {}
+    explicit BenchScene(const std::string &path) :
+        scene(makeScene(path)), bvh(scene), incoherentRays(makeIncoherentRays()) {}
 
     static RenderScene makeScene(const std::string &path) {
         SceneDescription d = loadSceneDescription(path);
@@ -59,7 +60,8 @@ struct BenchScene {
             if (!hit) continue;
             SurfaceInteraction si = surfaces.at(*hit, primary.direction);
             Vec3f local = sampleCosineHemisphere({u(rng), u(rng)});
-            rays.push_back({offsetRayOrigin(si.position, si.geometricNormal), Frame::fromNormal(si.geometricNormal).toWorld(local)});
+            rays.push_back({offsetRayOrigin(si.position, si.geometricNormal),
+                            Frame::fromNormal(si.geometricNormal).toWorld(local)});
         }
         std::shuffle(rays.begin(), rays.end(), rng);
         return rays;
@@ -127,8 +129,9 @@ int main(int argc, char **argv) {
         const auto *raw = reporter.find("BM_EmbreeIncoherentIntersect1/" + scene);
         if (!traced || !raw) continue;
         double pt = traced->counters.at("rays_per_second"), embree = raw->counters.at("rays_per_second");
-        std::printf("\nscene %s: path tracer %.3f Mrays/s, raw Embree incoherent rtcIntersect1 %.3f Mrays/s, ratio %.1f %%",
-                    scene.c_str(), pt * 1e-6, embree * 1e-6, 100.0 * pt / embree);
+        std::printf(
+            "\nscene %s: path tracer %.3f Mrays/s, raw Embree incoherent rtcIntersect1 %.3f Mrays/s, ratio %.1f %%",
+            scene.c_str(), pt * 1e-6, embree * 1e-6, 100.0 * pt / embree);
     }
     std::printf("\n");
     benchmark::Shutdown();

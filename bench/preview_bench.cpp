@@ -24,11 +24,11 @@
 #include <tbb/task_arena.h>
 
 #include "app/scene_loading.h"
+#include "assembly/build_scene.h"
+#include "io/output_files.h"
 #include "median_reporter.h"
 #include "osmesa_renderer.h"
 #include "preview/preview.h"
-#include "io/output_files.h"
-#include "assembly/build_scene.h"
 #include "scene/shapes.h"
 
 namespace veduta {
@@ -227,10 +227,11 @@ int main(int argc, char **argv) {
                         b.renderer().description().c_str(), kThreads, kThreads);
             describedGl = true;
         }
-        std::printf("scene %s (%llu triangles, %dx%d): preview %.2f ms, llvmpipe %.2f ms, "
-                    "ratio preview/llvmpipe %.2f\n",
-                    b.name, static_cast<unsigned long long>(b.get().effectiveTriangleCount()), b.get().camera.width,
-                    b.get().camera.height, previewMs, glMs, previewMs / glMs);
+        std::printf(
+            "scene %s (%llu triangles, %dx%d): preview %.2f ms, llvmpipe %.2f ms, "
+            "ratio preview/llvmpipe %.2f\n",
+            b.name, static_cast<unsigned long long>(b.get().effectiveTriangleCount()), b.get().camera.width,
+            b.get().camera.height, previewMs, glMs, previewMs / glMs);
         compareImages(b, imageFolder);
     }
     // Contexts go before exit, while llvmpipe's threads are still there to be joined.

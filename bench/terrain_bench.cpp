@@ -69,7 +69,8 @@ void writeGeoTiff(const HeightGrid &grid, const std::filesystem::path &file) {
     GDALAllRegister();
     GDALDriver *driver = GetGDALDriverManager()->GetDriverByName("GTiff");
     GDALDatasetUniquePtr out(driver->Create(file.c_str(), grid.columns, grid.rows, 1, GDT_Float32, nullptr));
-    double transform[6] = {grid.west - grid.spacing / 2, grid.spacing, 0, grid.north() + grid.spacing / 2, 0, -grid.spacing};
+    double transform[6] = {
+        grid.west - grid.spacing / 2, grid.spacing, 0, grid.north() + grid.spacing / 2, 0, -grid.spacing};
     out->SetGeoTransform(transform);
     OGRSpatialReference crs;
     crs.importFromEPSG(25832);
@@ -189,7 +190,8 @@ int main(int argc, char **argv) {
     for (const char *arg : {"0", "10", "50"}) {
         const char *what = arg[0] == '0' ? "full resolution" : arg[0] == '1' ? "maxError 0.1 m" : "maxError 0.5 m";
         if (const auto *run = reporter.find(std::string("BM_RenderReady1km/") + arg))
-            std::printf("1 km² at 1 m, %s: mesh + BVH %.2f s (target <= 1 s)\n", what, run->GetAdjustedRealTime() / 1000);
+            std::printf("1 km² at 1 m, %s: mesh + BVH %.2f s (target <= 1 s)\n", what,
+                        run->GetAdjustedRealTime() / 1000);
         if (const auto *run = reporter.find(std::string("BM_RenderReady34x20km/") + arg))
             std::printf("34 × 20 km at 10 m, %s: read + mesh + BVH %.2f s (target <= 10 s)\n", what,
                         run->GetAdjustedRealTime() / 1000);

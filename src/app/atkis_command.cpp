@@ -91,10 +91,11 @@ void edbsInfo(const std::string &path) {
     printObjects(conversion.atkis);
     std::printf("incomplete_objects: %zu\n", conversion.skipped.size());
     if (!conversion.skipped.empty())
-        std::printf("note: %zu area or line objects do not close and are left out; BSPE output cut to a search "
-                    "rectangle (or a file cut short) leaves such objects; the scene loader rejects them "
-                    "(docs/atkis.md); the first: %s\n",
-                    conversion.skipped.size(), conversion.skipped.front().c_str());
+        std::printf(
+            "note: %zu area or line objects do not close and are left out; BSPE output cut to a search "
+            "rectangle (or a file cut short) leaves such objects; the scene loader rejects them "
+            "(docs/atkis.md); the first: %s\n",
+            conversion.skipped.size(), conversion.skipped.front().c_str());
     printEdbsCrs(extent);
     printExtent(extent);
     if (file.area)
@@ -134,11 +135,11 @@ void addAtkisCommand(CLI::App &app, int &exitCode) {
     CLI::App *atkis = app.add_subcommand("atkis", "Read ATKIS data (EDBS, NAS, Shapefile, GeoPackage, …)");
     atkis->require_subcommand(1);
     auto path = std::make_shared<std::string>();
-    CLI::App *info = atkis->add_subcommand("info", "Print what an ATKIS file holds: objects by type, lines, points, CRS, extent");
+    CLI::App *info =
+        atkis->add_subcommand("info", "Print what an ATKIS file holds: objects by type, lines, points, CRS, extent");
     info->add_option("file", *path, "EDBS file, or any vector file GDAL reads")->required();
-    info->callback([path, &exitCode] {
-        exitCode = runGuarded([&] { isEdbs(*path) ? edbsInfo(*path) : vectorInfo(*path); });
-    });
+    info->callback(
+        [path, &exitCode] { exitCode = runGuarded([&] { isEdbs(*path) ? edbsInfo(*path) : vectorInfo(*path); }); });
 }
 
 }  // namespace veduta

@@ -21,12 +21,14 @@ struct BuildingArgs {
 
 void addBuildingCommand(CLI::App &app, int &exitCode) {
     auto args = std::make_shared<BuildingArgs>();
-    CLI::App *cmd = app.add_subcommand("building", "Derive one building from a footprint and a rule file and preview it");
+    CLI::App *cmd =
+        app.add_subcommand("building", "Derive one building from a footprint and a rule file and preview it");
     addStudyOptions(*cmd, args->study);
     addFootprintOptions(*cmd, args->plan);
     addStudyPreviewOptions(*cmd, args->preview, "building.png");
     cmd->callback([args, &exitCode] {
-        exitCode = runGuarded([&] { previewStudy(buildingStudy(args->study, args->plan), args->preview, "building.png"); });
+        exitCode =
+            runGuarded([&] { previewStudy(buildingStudy(args->study, args->plan), args->preview, "building.png"); });
     });
 }
 

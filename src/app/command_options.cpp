@@ -20,8 +20,9 @@ std::string checkResolution(const std::string &text) {
 CLI::Validator fileWithExtension(const std::string &extension) {
     return CLI::Validator(
         [extension](const std::string &text) {
-            return std::filesystem::path(text).extension() == extension ? std::string()
-                                                                        : fmt::format("'{}' is not a {} file", text, extension);
+            return std::filesystem::path(text).extension() == extension
+                ? std::string()
+                : fmt::format("'{}' is not a {} file", text, extension);
         },
         "FILE" + extension);
 }

@@ -4,8 +4,8 @@
 #include <memory>
 #include <string>
 
-#include <CLI/CLI.hpp>
 #include <tbb/global_control.h>
+#include <CLI/CLI.hpp>
 
 #include "scene/camera.h"
 
@@ -16,9 +16,9 @@ std::string checkResolution(const std::string &text);  // WxH
 CLI::Validator fileWithExtension(const std::string &extension);
 
 // The options several commands take, registered with the same names, checks and help.
-void addSceneArgument(CLI::App &command, std::string &scene);       // optional SCENE
+void addSceneArgument(CLI::App &command, std::string &scene);          // optional SCENE
 void addResolutionOption(CLI::App &command, std::string &resolution);  // --res WxH
-void addThreadsOption(CLI::App &command, unsigned &threads);         // --threads N
+void addThreadsOption(CLI::App &command, unsigned &threads);           // --threads N
 
 // Sets the camera's resolution from a WxH text that checkResolution accepted; "" keeps it.
 void applyResolution(const std::string &text, Camera &camera);

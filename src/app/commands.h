@@ -8,9 +8,9 @@ namespace veduta {
 
 enum ExitCode : int {
     kExitOk = 0,
-    kExitBadInput = 1,    // a scene or data file is wrong; the message says where
-    kExitBadUsage = 2,    // the command line is wrong
-    kExitFailure = 3,     // output could not be written, or an internal error
+    kExitBadInput = 1,  // a scene or data file is wrong; the message says where
+    kExitBadUsage = 2,  // the command line is wrong
+    kExitFailure = 3,   // output could not be written, or an internal error
 };
 
 void addRenderCommand(CLI::App &app, int &exitCode);

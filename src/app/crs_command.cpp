@@ -69,7 +69,8 @@ CrsCoordinate convertFields(const std::vector<Field> &fields, const Crs &from, c
     if (fields.size() < 2 || fields.size() > 3) {
         // The column where Y should begin, or where a fourth field does.
         int column = fields.size() < 2 ? fields[0].column + int(fields[0].text.size()) + 1 : fields[3].column;
-        throw FieldError(column, fields.size() < 2 ? "expected X Y [Z], found one field" : "expected X Y [Z], found more");
+        throw FieldError(column,
+                         fields.size() < 2 ? "expected X Y [Z], found one field" : "expected X Y [Z], found more");
     }
     double values[3] = {0, 0, 0};
     for (size_t axis = 0; axis < fields.size(); ++axis) {

@@ -10,9 +10,9 @@
 #include "app/commands.h"
 #include "app/run_guarded.h"
 #include "app/scene_loading.h"
-#include "io/cubemap_files.h"
 #include "assembly/build_environment.h"
 #include "assembly/build_scene.h"
+#include "io/cubemap_files.h"
 #include "scene/cubemap_layout.h"
 
 namespace veduta {
@@ -25,9 +25,9 @@ struct CubemapOptions {
 };
 
 const std::map<std::string, CubemapLayout> kLayouts{{"faces", CubemapLayout::Faces},
-                                                     {"vertical-cross", CubemapLayout::VerticalCross},
-                                                     {"horizontal-cross", CubemapLayout::HorizontalCross},
-                                                     {"latlong", CubemapLayout::LatLong}};
+                                                    {"vertical-cross", CubemapLayout::VerticalCross},
+                                                    {"horizontal-cross", CubemapLayout::HorizontalCross},
+                                                    {"latlong", CubemapLayout::LatLong}};
 
 CubemapLayout outputLayout(const CubemapOptions &o) {
     if (o.layout.empty()) return isFacePattern(o.output) ? CubemapLayout::Faces : CubemapLayout::VerticalCross;

@@ -132,8 +132,9 @@ void addDiffCommand(CLI::App &app, int &exitCode) {
     spp->needs(variance);
     cmd->add_option("-o,--output", args->output, "Write |A - B| x 16 as an 8-bit PNG here")
         ->check(CLI::Validator(checkPngName, "FILE.png"));
-    cmd->footer("Exit codes, as idiff's: 0 the images agree, 1 they differ, 2 an error (a file that cannot be read or "
-                "written, sizes that differ, a bad option). Details: docs/diff.md");
+    cmd->footer(
+        "Exit codes, as idiff's: 0 the images agree, 1 they differ, 2 an error (a file that cannot be read or "
+        "written, sizes that differ, a bad option). Details: docs/diff.md");
     cmd->callback([args, &exitCode] {
         args->options.metric = kMetrics.at(args->metric);
         checkMetricInputs(*args);

@@ -27,10 +27,10 @@ std::string checkDisplayImageFile(const std::string &text) {
 void addDisplayOptions(CLI::App &command, DisplayImageOptions &options) {
     DisplaySettings &settings = options.settings;
     CLI::Option *image =
-        command.add_option("--image", options.file, "Also write a display image (PNG, JPEG, TIFF) through an OCIO view")
+        command
+            .add_option("--image", options.file, "Also write a display image (PNG, JPEG, TIFF) through an OCIO view")
             ->check(CLI::Validator(checkDisplayImageFile, "FILE.png|jpg|tif"));
-    command.add_option("--display", settings.display, "OCIO display of --image [the config's default]")
-        ->needs(image);
+    command.add_option("--display", settings.display, "OCIO display of --image [the config's default]")->needs(image);
     command.add_option("--view", settings.view, "OCIO view of --image [the display's default]")->needs(image);
     command.add_option("--look", settings.look, "OCIO looks of --image, separated by commas [none]")->needs(image);
     command.add_option("--exposure", settings.exposureStops, "Exposure of --image in stops, before the view [0]")

@@ -9,8 +9,8 @@
 #include <CLI/CLI.hpp>
 
 #include "core/image.h"
-#include "io/image_library.h"
 #include "core/rgba_image.h"
+#include "io/image_library.h"
 
 namespace veduta {
 

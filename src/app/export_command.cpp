@@ -11,8 +11,8 @@
 #include "app/run_guarded.h"
 #include "app/scene_loading.h"
 #include "app/study_scene.h"
-#include "io/scene_export.h"
 #include "assembly/build_scene.h"
+#include "io/scene_export.h"
 
 namespace veduta {
 

@@ -6,8 +6,8 @@
 #include "app/commands.h"
 #include "app/run_guarded.h"
 #include "app/scene_loading.h"
-#include "render/bvh.h"
 #include "assembly/build_scene.h"
+#include "render/bvh.h"
 
 namespace veduta {
 

@@ -48,8 +48,8 @@ void runMerge(const MergeArgs &args) {
     int offset = std::get<int>(merged.metadata.at(kSampleOffsetAttribute));
     int samples = std::get<int>(merged.metadata.at(kSamplesAttribute));
     std::fprintf(stderr, "%s: %zu files, window %d %d %d %d of %dx%d, samples [%d, %d), %s rendering\n",
-                 args.output.c_str(), parts.size(), w.x0, w.y0, w.x1, w.y1, merged.fullWidth, merged.fullHeight,
-                 offset, offset + samples, std::get<std::string>(merged.metadata.at("RenderTime")).c_str());
+                 args.output.c_str(), parts.size(), w.x0, w.y0, w.x1, w.y1, merged.fullWidth, merged.fullHeight, offset,
+                 offset + samples, std::get<std::string>(merged.metadata.at("RenderTime")).c_str());
 }
 
 }  // namespace

@@ -9,9 +9,9 @@
 #include "app/commands.h"
 #include "app/run_guarded.h"
 #include "app/scene_loading.h"
-#include "preview/preview.h"
-#include "io/output_files.h"
 #include "assembly/build_scene.h"
+#include "io/output_files.h"
+#include "preview/preview.h"
 
 namespace veduta {
 
@@ -51,7 +51,8 @@ void runPreview(const PreviewArgs &args) {
     }
     if (!args.quiet) {
         double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::fprintf(stderr, "%s: %dx%d preview, %.3f s\n", output.c_str(), image.film.width(), image.film.height(), seconds);
+        std::fprintf(stderr, "%s: %dx%d preview, %.3f s\n", output.c_str(), image.film.width(), image.film.height(),
+                     seconds);
     }
 }
 
@@ -61,10 +62,13 @@ void addPreviewCommand(CLI::App &app, int &exitCode) {
     auto args = std::make_shared<PreviewArgs>();
     CLI::App *cmd = app.add_subcommand("preview", "Rasterize a scene quickly with the render camera, to PNG (or EXR)");
     addSceneArgument(*cmd, args->scene);
-    cmd->add_option("-o,--output", args->output, "PNG (sRGB) or EXR (linear) to write [renders/<scene name>-preview.png]")
+    cmd->add_option("-o,--output", args->output,
+                    "PNG (sRGB) or EXR (linear) to write [renders/<scene name>-preview.png]")
         ->check(fileWithExtension(".png") | fileWithExtension(".exr"));
-    const std::map<std::string, PreviewMode> modes = {{"shaded", PreviewMode::Shaded}, {"albedo", PreviewMode::Albedo},
-                                                      {"normal", PreviewMode::Normal}, {"depth", PreviewMode::Depth},
+    const std::map<std::string, PreviewMode> modes = {{"shaded", PreviewMode::Shaded},
+                                                      {"albedo", PreviewMode::Albedo},
+                                                      {"normal", PreviewMode::Normal},
+                                                      {"depth", PreviewMode::Depth},
                                                       {"id", PreviewMode::Id}};
     cmd->add_option("--mode", args->mode, "What to show: shaded, albedo, normal, depth or id [shaded]")
         ->transform(CLI::CheckedTransformer(modes, CLI::ignore_case));

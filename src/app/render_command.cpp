@@ -14,6 +14,7 @@
 #include "app/render_metadata.h"
 #include "app/run_guarded.h"
 #include "app/scene_loading.h"
+#include "assembly/build_scene.h"
 #include "core/error.h"
 #include "film/passes.h"
 #include "io/checkpoint_file.h"
@@ -21,7 +22,6 @@
 #include "io/output_files.h"
 #include "render/bvh.h"
 #include "render/renderer.h"
-#include "assembly/build_scene.h"
 #include "scene/scene_hash.h"
 
 namespace veduta {
@@ -86,8 +86,8 @@ RenderIdentity identityOf(const RenderScene &scene, const Film &film, const Rend
 // Writes a checkpoint after a pass once `every` seconds have passed since the last.
 class Checkpoints {
   public:
-    Checkpoints(std::filesystem::path file, RenderIdentity identity, double every)
-        : file_(std::move(file)), identity_(std::move(identity)), every_(every), last_(Clock::now()) {}
+    Checkpoints(std::filesystem::path file, RenderIdentity identity, double every) :
+        file_(std::move(file)), identity_(std::move(identity)), every_(every), last_(Clock::now()) {}
 
     void afterPass(Film &film, const RenderStats &stats) {
         if (std::chrono::duration<double>(Clock::now() - last_).count() < every_) return;

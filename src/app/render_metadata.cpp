@@ -15,9 +15,9 @@ Matrix44 worldToCamera(const Camera &camera) {
     Vec3f right = normalize(cross(camera.up, back));
     Vec3f up = cross(back, right);
     const Vec3f &p = camera.position;
-    return {right.x, up.x, back.x, 0,  //
-            right.y, up.y, back.y, 0,  //
-            right.z, up.z, back.z, 0,  //
+    return {right.x,        up.x,        back.x,        0,  //
+            right.y,        up.y,        back.y,        0,  //
+            right.z,        up.z,        back.z,        0,  //
             -dot(right, p), -dot(up, p), -dot(back, p), 1};
 }
 
@@ -37,9 +37,9 @@ void addRenderMetadata(LayeredImage &image, const SceneDescription &description,
         m["veduta.noiseThreshold"] = double(s.noiseThreshold);
         m["veduta.minSamples"] = int(adaptiveMinSamples(s));
     }
-    m["veduta.camera"] = fmt::format("position {} {} {}, look at {} {} {}, up {} {} {}, vertical fov {}°", c.position.x,
-                                     c.position.y, c.position.z, c.lookAt.x, c.lookAt.y, c.lookAt.z, c.up.x, c.up.y,
-                                     c.up.z, c.verticalFovDegrees);
+    m["veduta.camera"] =
+        fmt::format("position {} {} {}, look at {} {} {}, up {} {} {}, vertical fov {}°", c.position.x, c.position.y,
+                    c.position.z, c.lookAt.x, c.lookAt.y, c.lookAt.z, c.up.x, c.up.y, c.up.z, c.verticalFovDegrees);
     m["worldToCamera"] = worldToCamera(c);
     if (description.georeference) {
         const Georeference &g = *description.georeference;

@@ -8,8 +8,8 @@
 
 #include "core/layered_image.h"
 #include "core/render_attributes.h"
-#include "render/renderer.h"
 #include "description/scene_description.h"
+#include "render/renderer.h"
 
 namespace veduta {
 

@@ -3,8 +3,8 @@
 
 #include <string>
 
-#include "scene/render_scene.h"
 #include "description/scene_description.h"
+#include "scene/render_scene.h"
 
 namespace veduta {
 

@@ -12,7 +12,8 @@
 namespace veduta {
 
 void addStudyPreviewOptions(CLI::App &command, StudyPreviewOptions &options, const std::string &defaultName) {
-    command.add_option("-o,--output", options.output, "PNG (sRGB) or EXR (linear) to write [renders/" + defaultName + "]")
+    command
+        .add_option("-o,--output", options.output, "PNG (sRGB) or EXR (linear) to write [renders/" + defaultName + "]")
         ->check(fileWithExtension(".png") | fileWithExtension(".exr"));
     addResolutionOption(command, options.resolution);
     command.add_flag("--no-shadows", options.noShadows, "Leave out the sun's shadows");
@@ -28,10 +29,8 @@ void previewStudy(SceneDescription scene, const StudyPreviewOptions &options, co
     PreviewOptions preview;
     preview.shadows = !options.noShadows;
     PreviewImage image = renderPreview(built, preview);
-    if (std::filesystem::path(output).extension() == ".exr")
-        writeExr(image.film, output);
-    else
-        writePng(image.film, output);
+    if (std::filesystem::path(output).extension() == ".exr") writeExr(image.film, output);
+    else writePng(image.film, output);
     if (options.quiet) return;
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::fprintf(stderr, "%s: %dx%d, %zu instances, %llu triangles, %.3f s\n", output.c_str(), image.film.width(),

@@ -77,7 +77,9 @@ float fitDistance(float width, float height, float aspect) {
 }  // namespace
 
 void addStudyOptions(CLI::App &command, StudyOptions &options, bool rulesAsOption) {
-    command.add_option(rulesAsOption ? "--rules" : "RULEFILE", options.rules, "Rule file (Bilke's XML format, docs/rules.md)")
+    command
+        .add_option(rulesAsOption ? "--rules" : "RULEFILE", options.rules,
+                    "Rule file (Bilke's XML format, docs/rules.md)")
         ->required(!rulesAsOption)
         ->check(CLI::ExistingFile);
     command.add_option("--seed", options.seed, "Seed of the random choices, the building's and the sampler's [0]");
@@ -90,8 +92,9 @@ void addStudyOptions(CLI::App &command, StudyOptions &options, bool rulesAsOptio
             size_t equals = text.find('=');
             return equals == std::string::npos || equals == 0 ? std::string("expected Name=Value") : std::string();
         });
-    command.add_option("--materials", options.materials,
-                       "Material file the buildings choose from [materials.xml beside RULEFILE, if any]")
+    command
+        .add_option("--materials", options.materials,
+                    "Material file the buildings choose from [materials.xml beside RULEFILE, if any]")
         ->check(CLI::ExistingFile);
 }
 
@@ -136,8 +139,9 @@ SceneDescription buildingScene(const StudyOptions &options, const BuildingOption
     for (size_t i = 0; i + 1 < xy.size(); i += 2) building.footprint.push_back({xy[i], xy[i + 1]});
     for (uint32_t edge : plan.street) {
         if (edge >= building.footprint.size())
-            throw InputError(kCommandLine, fmt::format("--street {}: the footprint has edges 0 to {}", edge,
-                                                       building.footprint.size() - 1));
+            throw InputError(
+                kCommandLine,
+                fmt::format("--street {}: the footprint has edges 0 to {}", edge, building.footprint.size() - 1));
         building.streetEdges.push_back(edge);
     }
     scene.buildingGroups[0].buildings.push_back(building);
@@ -159,8 +163,8 @@ SceneDescription buildingStudy(const StudyOptions &options, const BuildingOption
         area += a.x * b.y - b.x * a.y;
         centroid += Vec3f(a.x, a.y, 0) * (1.0f / float(n));
         float length = std::hypot(b.x - a.x, b.y - a.y);
-        if (building.streetEdges.empty() && length > std::hypot(p[(front + 1) % n].x - p[front].x,
-                                                                p[(front + 1) % n].y - p[front].y))
+        if (building.streetEdges.empty() &&
+            length > std::hypot(p[(front + 1) % n].x - p[front].x, p[(front + 1) % n].y - p[front].y))
             front = i;
         for (const Vec2f &c : p) extent = std::max(extent, std::hypot(c.x - a.x, c.y - a.y));
     }

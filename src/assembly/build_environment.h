@@ -3,8 +3,8 @@
 // the sun's position.
 #pragma once
 
-#include "scene/environment.h"
 #include "description/scene_description.h"
+#include "scene/environment.h"
 
 namespace veduta {
 

@@ -7,13 +7,13 @@
 
 #include <fmt/format.h>
 
+#include "assembly/build_environment.h"
 #include "city/generate_buildings.h"
 #include "city/generate_city.h"
 #include "geo/generate_landscape.h"
 #include "io/georeferenced_mesh.h"
 #include "io/image_library.h"
 #include "io/mesh_import.h"
-#include "assembly/build_environment.h"
 
 namespace veduta {
 
@@ -143,8 +143,9 @@ class SceneAssembler {
     // The one route of a mesh in map coordinates into the scene's frame.
     MapProjection meshProjection(const GeometryDesc &g) const {
         if (!d_.georeference)
-            throw InputError(g.meshCrsLoc, "a mesh in map coordinates (crs) needs the scene's <georeference "
-                                           "crs=\"EPSG:…\" origin=\"E N\"> to be placed");
+            throw InputError(g.meshCrsLoc,
+                             "a mesh in map coordinates (crs) needs the scene's <georeference "
+                             "crs=\"EPSG:…\" origin=\"E N\"> to be placed");
         return MapProjection(crsByEpsg(g.meshEpsg), *d_.georeference);
     }
 
@@ -175,9 +176,9 @@ Sun placeSun(const SceneDescription &d) {
     if (!t.place && !d.georeference) {
         throw InputError(t.loc, "the sun needs 'latitude' and 'longitude', or a <georeference> for the scene");
     }
-    GeographicPoint place = t.place ? *t.place
-                                    : toGeographic(*d.georeference, d.georeference->originEasting,
-                                                   d.georeference->originNorthing);
+    GeographicPoint place = t.place
+        ? *t.place
+        : toGeographic(*d.georeference, d.georeference->originEasting, d.georeference->originNorthing);
     SolarAngles angles = solarPositionNoaa(t.time, place.latitude, place.longitude);
     double azimuth = angles.azimuthDegrees;
     if (d.georeference) {

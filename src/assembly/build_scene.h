@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/render_scene.h"
 #include "description/scene_description.h"
+#include "scene/render_scene.h"
 
 namespace veduta {
 

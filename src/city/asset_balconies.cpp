@@ -66,7 +66,9 @@ float canopyTopAt(float z) { return kCanopyTop - kCanopyFall * z / kCanopyDepth;
 Asset balconyRoof(std::string name, bool solar) {
     constexpr float slab = 0.08f;
     AssetBuilder b;
-    const Vec2f roof[] = {{canopyTopAt(0) - slab, 0}, {canopyTopAt(0), 0}, {canopyTopAt(kCanopyDepth), kCanopyDepth},
+    const Vec2f roof[] = {{canopyTopAt(0) - slab, 0},
+                          {canopyTopAt(0), 0},
+                          {canopyTopAt(kCanopyDepth), kCanopyDepth},
                           {canopyTopAt(kCanopyDepth) - slab, kCanopyDepth}};
     b.prism(roof, PrismAxis::X, -kHalfWidth, kHalfWidth, MaterialCategory::Material);
     b.box({-kHalfWidth, -kCanopyTop, kCanopyDepth - 0.04f}, {kHalfWidth, canopyTopAt(kCanopyDepth), kCanopyDepth},
@@ -74,7 +76,8 @@ Asset balconyRoof(std::string name, bool solar) {
     if (solar) {
         // Two panels lying on the slope, a few centimetres above it.
         constexpr float nearZ = 0.1f, farZ = 1.2f, lift = 0.01f, thickness = 0.03f;
-        const Vec2f panel[] = {{canopyTopAt(nearZ) + lift, nearZ}, {canopyTopAt(farZ) + lift, farZ},
+        const Vec2f panel[] = {{canopyTopAt(nearZ) + lift, nearZ},
+                               {canopyTopAt(farZ) + lift, farZ},
                                {canopyTopAt(farZ) + lift + thickness, farZ},
                                {canopyTopAt(nearZ) + lift + thickness, nearZ}};
         b.prism(panel, PrismAxis::X, -kHalfWidth + 0.05f, -0.03f, MaterialCategory::Window);
@@ -98,8 +101,8 @@ void addDoorLeaf(AssetBuilder &b, float left, float right, float bottom, float t
     b.box({left + stile + 0.05f, bottom + 0.2f, 0.02f}, {right - stile - 0.05f, lockRail - 0.05f, 0.035f}, wood);
     float centre = (left + right) / 2, glassWidth = right - left - 2 * stile, glassHeight = top - 0.1f - lockRailTop;
     b.box({centre - 0.015f, lockRailTop, 0}, {centre + 0.015f, top - 0.1f, 0.04f}, wood);
-    b.box({left + stile, lockRailTop + glassHeight * 0.55f, 0}, {right - stile, lockRailTop + glassHeight * 0.55f + 0.03f, 0.04f},
-          wood);
+    b.box({left + stile, lockRailTop + glassHeight * 0.55f, 0},
+          {right - stile, lockRailTop + glassHeight * 0.55f + 0.03f, 0.04f}, wood);
     b.rectangle({left + stile, lockRailTop, glassZ}, {glassWidth, 0, 0}, {0, glassHeight, 0}, MaterialCategory::Window);
     b.rectangle({left + stile, lockRailTop, 0.005f}, {glassWidth, 0, 0}, {0, glassHeight, 0}, MaterialCategory::None);
 }

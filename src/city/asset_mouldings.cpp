@@ -79,8 +79,8 @@ Profile crownMoulding() {
 
 // A window head, 1.4 × 0.2 m, 0.2 m deep: a fascia under a projecting cap with a weathered top.
 Asset straightHead() {
-    const Profile profile{{0, 0}, {0, 0.1f}, {0.08f, 0.1f}, {0.08f, 0.16f}, {0.12f, 0.2f}, {0.16f, 0.2f}, {0.2f, 0.05f},
-                          {0.2f, 0}};
+    const Profile profile{{0, 0},        {0, 0.1f},     {0.08f, 0.1f}, {0.08f, 0.16f},
+                          {0.12f, 0.2f}, {0.16f, 0.2f}, {0.2f, 0.05f}, {0.2f, 0}};
     AssetBuilder b;
     b.prism(mouldingOutline(profile, -0.1f), PrismAxis::X, -0.7f, 0.7f, MaterialCategory::Material);
     return std::move(b).finish("SmallRoof1", ModelType::SmallRoof);

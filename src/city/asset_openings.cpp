@@ -16,8 +16,7 @@ struct Opening {
 };
 
 // The four sides of a rectangular tunnel from z = `back` to z = `front`, facing inwards.
-void addTunnel(AssetBuilder &b, const Opening &o, float back, float front, bool withBottom,
-               MaterialCategory surface) {
+void addTunnel(AssetBuilder &b, const Opening &o, float back, float front, bool withBottom, MaterialCategory surface) {
     float width = o.right - o.left, height = o.top - o.bottom, depth = front - back;
     b.rectangle({o.left, o.bottom, back}, {0, height, 0}, {0, 0, depth}, surface);
     b.rectangle({o.right, o.bottom, back}, {0, 0, depth}, {0, height, 0}, surface);

@@ -20,12 +20,18 @@ size_t BuildingGenerator::PrototypeKeyHash::operator()(const PrototypeKey &key) 
 }
 
 BuildingGenerator::BuildingGenerator(const Grammar &grammar, const AssetLibrary &assets, RenderSceneBuilder &builder,
-                                     uint32_t seed, const DerivationLimits &limits)
-    : grammar_(grammar), assets_(assets), builder_(builder), palette_(builder), seed_(seed), limits_(limits),
-      plainWall_(*assets.find("Wall0")) {
+                                     uint32_t seed, const DerivationLimits &limits) :
+    grammar_(grammar),
+    assets_(assets),
+    builder_(builder),
+    palette_(builder),
+    seed_(seed),
+    limits_(limits),
+    plainWall_(*assets.find("Wall0")) {
     for (size_t a = 0; a < assets.size(); ++a)
-        VEDUTA_CHECK(assets[uint32_t(a)].surfaces.size() <= kMaxSurfaces,
-                     fmt::format("the model {} has more surfaces than a prototype key holds", assets[uint32_t(a)].name));
+        VEDUTA_CHECK(
+            assets[uint32_t(a)].surfaces.size() <= kMaxSurfaces,
+            fmt::format("the model {} has more surfaces than a prototype key holds", assets[uint32_t(a)].name));
 }
 
 PrototypeId BuildingGenerator::prototypeFor(const PrototypeKey &key) {
@@ -42,8 +48,7 @@ BuildingGenerator::PrototypeKey BuildingGenerator::keyFor(const Terminal &termin
     const Asset &model = assets_[terminal.model];
     PrototypeKey key;
     key.model = terminal.model;
-    for (size_t s = 0; s < model.surfaces.size(); ++s)
-        key.materials[s] = materials[model.surfaces[s]];
+    for (size_t s = 0; s < model.surfaces.size(); ++s) key.materials[s] = materials[model.surfaces[s]];
     if (terminal.texture) {
         auto [it, added] = textureChoices_.try_emplace(terminal.texture);
         if (added) it->second = palette_.forTexture(*terminal.texture);
@@ -55,9 +60,9 @@ BuildingGenerator::PrototypeKey BuildingGenerator::keyFor(const Terminal &termin
 // A wall piece is baked, not instanced: its texture coordinates are its position on the
 // facade (metres along the perimeter, metres up; plus the depth for reveals) divided by the
 // uv attribute, so neighbouring pieces continue one another (Bilke's planar wall mapping).
-void BuildingGenerator::addWallPiece(const Asset &model, const Transform &modelToFacade,
-                                     const Transform &facadeToWorld, float alongPerimeter, const Terminal &terminal,
-                                     const PrototypeKey &key, Mesh &baked) const {
+void BuildingGenerator::addWallPiece(const Asset &model, const Transform &modelToFacade, const Transform &facadeToWorld,
+                                     float alongPerimeter, const Terminal &terminal, const PrototypeKey &key,
+                                     Mesh &baked) const {
     auto first = uint32_t(baked.positions.size());
     auto firstTriangle = baked.triangleCount();
     baked.append(model.mesh, facadeToWorld * modelToFacade);
@@ -77,10 +82,11 @@ void BuildingGenerator::addRoof(const BuildingSpec &building, const BuildingCont
     RoofOptions options = roofOptionsFor(footprint, building.settings, context.heights, seed_, building.id);
     RoofResult roof = buildRoof({footprint.points, {}, footprint.base}, context.heights.building, options);
     if (roof.fallback && roof.built != options.type) {
-        warnings.push_back(fmt::format("building {}: a {} roof instead of {}: {}", building.id, roofTypeName(roof.built),
-                                       roofTypeName(options.type), *roof.fallback));
+        warnings.push_back(fmt::format("building {}: a {} roof instead of {}: {}", building.id,
+                                       roofTypeName(roof.built), roofTypeName(options.type), *roof.fallback));
     } else if (roof.fallback) {
-        warnings.push_back(fmt::format("building {}: {} roof: {}", building.id, roofTypeName(roof.built), *roof.fallback));
+        warnings.push_back(
+            fmt::format("building {}: {} roof: {}", building.id, roofTypeName(roof.built), *roof.fallback));
     }
     for (MaterialId &m : roof.mesh.triangleMaterials)
         m = m == RoofGableWall ? context.materials[MaterialCategory::Wall] : context.materials[MaterialCategory::Roof];
@@ -99,7 +105,7 @@ Mesh &BuildingGenerator::startBakedMesh() {
 }
 
 BuildingGenerator::BuildingContext BuildingGenerator::contextFor(uint32_t id, ObjectId objectId,
-                                                                const SettingsStack &settings) const {
+                                                                 const SettingsStack &settings) const {
     BuildingHeights heights = randomiseHeights(settings, seed_, id);
     return {id, objectId, heights, BuildingProperties(settings, heights), palette_.choose(seed_, id)};
 }

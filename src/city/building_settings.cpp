@@ -78,8 +78,8 @@ BuildingHeights randomiseHeights(const SettingsStack &settings, uint32_t seed, u
             randomised(settings, "RoofHeight", false, seed, buildingId, 2)};
 }
 
-BuildingProperties::BuildingProperties(const SettingsStack &settings, const BuildingHeights &heights)
-    : settings_(&settings), heights_(heights) {}
+BuildingProperties::BuildingProperties(const SettingsStack &settings, const BuildingHeights &heights) :
+    settings_(&settings), heights_(heights) {}
 
 std::optional<float> BuildingProperties::number(const std::string &name) const {
     if (name == "BuildingHeight" || name == "ActualBuildingHeight") return heights_.building;

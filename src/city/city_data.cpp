@@ -23,8 +23,8 @@ constexpr float kOutsideTolerance = 0.01f;
 
 class CityDataReader {
   public:
-    CityDataReader(const XmlDocument &doc, std::filesystem::path baseDirectory, const MapProjection *projection)
-        : doc_(doc), baseDirectory_(std::move(baseDirectory)), projection_(projection) {}
+    CityDataReader(const XmlDocument &doc, std::filesystem::path baseDirectory, const MapProjection *projection) :
+        doc_(doc), baseDirectory_(std::move(baseDirectory)), projection_(projection) {}
 
     CityData read() {
         XmlElement root(doc_, doc_.root());
@@ -76,8 +76,8 @@ class CityDataReader {
                         Vec2f p{float(s.e), float(s.n)}, q{float(t.e), float(t.n)};
                         float streetLength = std::hypot(q.x - p.x, q.y - p.y);
                         if (length <= 0 || streetLength <= 0) continue;
-                        float cosine = std::abs((b.x - a.x) * (q.x - p.x) + (b.y - a.y) * (q.y - p.y)) /
-                                       (length * streetLength);
+                        float cosine =
+                            std::abs((b.x - a.x) * (q.x - p.x) + (b.y - a.y) * (q.y - p.y)) / (length * streetLength);
                         float reach = street.width.value_or(city_.streetWidth) / 2 + 1;
                         if (cosine >= parallel && distanceToSegment(middle, p, q) <= reach) lot.streetEdges[i] = true;
                     }
@@ -99,8 +99,9 @@ class CityDataReader {
             p.checkLeaf();
             auto [it, fresh] = pointIndex_.emplace(point.id, uint32_t(city_.points.size()));
             if (!fresh)
-                p.failAt("id", fmt::format("point id {} is already used at {}", point.id,
-                                           city_.points[it->second].loc.toString()));
+                p.failAt("id",
+                         fmt::format("point id {} is already used at {}", point.id,
+                                     city_.points[it->second].loc.toString()));
             city_.points.push_back(point);
         }
     }
@@ -112,8 +113,9 @@ class CityDataReader {
             point.e = local.easting;
             point.n = local.northing;
         } catch (const std::out_of_range &e) {
-            p.failAt("e", fmt::format("({}, {}) is no point of EPSG:{}: {}", point.e, point.n,
-                                      projection_->source().epsg, e.what()));
+            p.failAt("e",
+                     fmt::format("({}, {}) is no point of EPSG:{}: {}", point.e, point.n, projection_->source().epsg,
+                                 e.what()));
         }
     }
 
@@ -151,8 +153,9 @@ class CityDataReader {
                     street.id = requiredId(s, "id");
                     auto [given, fresh] = streetIndex_.emplace(street.id, uint32_t(city_.streets.size()));
                     if (!fresh)
-                        s.failAt("id", fmt::format("street id {} is already used at {}", street.id,
-                                                   city_.streets[given->second].loc.toString()));
+                        s.failAt("id",
+                                 fmt::format("street id {} is already used at {}", street.id,
+                                             city_.streets[given->second].loc.toString()));
                     street.start = pointRef(s, "startPoint");
                     street.end = pointRef(s, "endPoint");
                     if (street.start == street.end)
@@ -165,7 +168,8 @@ class CityDataReader {
                 c.checkLeaf();
                 SettingValue width = settingValue(c.text(), c.textLoc());
                 if (!width.number || !(*width.number > 0))
-                    throw InputError(width.loc, fmt::format("the street width must be a positive number, not '{}'", width.text));
+                    throw InputError(width.loc,
+                                     fmt::format("the street width must be a positive number, not '{}'", width.text));
                 city_.streetWidth = *width.number;
             } else {
                 c.fail(fmt::format("unknown element <{}> in <StreetNetwork>", c.name()));
@@ -202,8 +206,8 @@ class CityDataReader {
         // Bilke 2009 builds on horizontal ground (L235): one height per block and lot.
         for (double h : heights)
             if (h != heights.front())
-                e.fail(fmt::format("the points of a {} must share one height u; they have {} and {}", lot ? "lot" : "block",
-                                   heights.front(), h));
+                e.fail(fmt::format("the points of a {} must share one height u; they have {} and {}",
+                                   lot ? "lot" : "block", heights.front(), h));
         outline.base = float(heights.front());
         outline.sourceId = hashSequence(identity);
         return outline;
@@ -245,8 +249,8 @@ class CityDataReader {
             points.fail("the block's outline crosses or touches itself, or has no area");
         if (isCounterClockwise(block.points)) return;
         std::reverse(block.points.begin(), block.points.end());
-        city_.warnings.push_back(
-            fmt::format("{}: the block runs clockwise; its points are taken in reverse order", points.loc().toString()));
+        city_.warnings.push_back(fmt::format("{}: the block runs clockwise; its points are taken in reverse order",
+                                             points.loc().toString()));
     }
 
     CityLot readLot(const XmlElement &e, const CityBlock &block) {

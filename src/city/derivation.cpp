@@ -23,10 +23,8 @@ Grammar::Grammar(const RuleSet &rules, const ModelIndex &modelIndex) : rules_(&r
             probabilities_[r].push_back(branch.probability);  // the reader has made them sum to 1
             auto &targets = targets_[r].emplace_back();
             for (const Successor &successor : branch.successors) {
-                if (auto ruleIndex = findRule(successor.name))
-                    targets.push_back({false, *ruleIndex});
-                else if (auto model = modelIndex(successor.name))
-                    targets.push_back({true, *model});
+                if (auto ruleIndex = findRule(successor.name)) targets.push_back({false, *ruleIndex});
+                else if (auto model = modelIndex(successor.name)) targets.push_back({true, *model});
                 else  // readRuleFile reports these at their place
                     VEDUTA_UNREACHABLE(fmt::format("the rule set was not checked: '{}' is unknown", successor.name));
             }
@@ -85,15 +83,14 @@ struct Shape {
 class Derivation {
   public:
     Derivation(const Grammar &grammar, const BuildingProperties &properties, const DerivationSeed &seed,
-               std::vector<Terminal> &out, std::vector<std::string> &warnings, const DerivationLimits &limits)
-        : grammar_(grammar), properties_(properties), seed_(seed), out_(out), warnings_(warnings),
-          limits_(limits) {}
+               std::vector<Terminal> &out, std::vector<std::string> &warnings, const DerivationLimits &limits) :
+        grammar_(grammar), properties_(properties), seed_(seed), out_(out), warnings_(warnings), limits_(limits) {}
 
     void deriveRule(uint32_t rule, const Shape &shape, int depth);
 
   private:
-    void deriveSuccessor(uint32_t rule, const Grammar::Target &target, const Successor &successor,
-                         const Shape &parent, Vec2f offset, Vec2f size, int depth);
+    void deriveSuccessor(uint32_t rule, const Grammar::Target &target, const Successor &successor, const Shape &parent,
+                         Vec2f offset, Vec2f size, int depth);
     void split(uint32_t rule, uint32_t branch, const Shape &shape, int depth);
     void repeat(uint32_t rule, uint32_t branch, const Shape &shape, int depth);
     float property(const Successor &successor) const;
@@ -114,8 +111,9 @@ float Derivation::property(const Successor &successor) const {
     if (successor.property.empty()) return 1;
     auto value = properties_.number(successor.property);
     if (!value)
-        throw InputError(successor.loc, fmt::format("property '{}' is not set: define it in a <BuildingSettings>",
-                                                    successor.property));
+        throw InputError(
+            successor.loc,
+            fmt::format("property '{}' is not set: define it in a <BuildingSettings>", successor.property));
     return *value;
 }
 
@@ -125,17 +123,16 @@ void Derivation::warnOnce(const Branch &branch, const std::string &message) {
 
 void Derivation::failLimit(uint32_t rule, const std::string &what) const {
     const Rule &r = grammar_.rules().rules[rule];
-    throw InputError(r.loc, fmt::format("deriving '{}' {}; does the rule derive itself without end?", r.predecessor,
-                                        what));
+    throw InputError(r.loc,
+                     fmt::format("deriving '{}' {}; does the rule derive itself without end?", r.predecessor, what));
 }
 
 void Derivation::deriveRule(uint32_t rule, const Shape &shape, int depth) {
     if (depth > limits_.maxDepth) failLimit(rule, fmt::format("goes deeper than {} rules", limits_.maxDepth));
     if (++shapes_ > limits_.maxShapes) failLimit(rule, fmt::format("makes more than {} shapes", limits_.maxShapes));
     const Rule &r = grammar_.rules().rules[rule];
-    uint32_t b = pickBranch(grammar_.probabilities(rule), branchVariate(seed_, grammar_.ruleKey(rule)), [&](uint32_t i) {
-        return r.branches[i].condition.holdsFor(shape.size.x, shape.size.y);
-    });
+    uint32_t b = pickBranch(grammar_.probabilities(rule), branchVariate(seed_, grammar_.ruleKey(rule)),
+                            [&](uint32_t i) { return r.branches[i].condition.holdsFor(shape.size.x, shape.size.y); });
     if (b == kNone) return;  // no branch fits this scope: the shape stays empty
     const Branch &branch = r.branches[b];
     switch (branch.kind) {
@@ -176,20 +173,19 @@ void Derivation::split(uint32_t rule, uint32_t b, const Shape &shape, int depth)
     float length = along(scopeSize, branch.axis);
     float absolute = 0, relative = 0;
     for (const Successor &s : branch.successors) {
-        if (s.size.unit == Extent::Unit::Relative)
-            relative += s.size.value;
-        else
-            absolute += s.size.value * property(s);
+        if (s.size.unit == Extent::Unit::Relative) relative += s.size.value;
+        else absolute += s.size.value * property(s);
     }
     if (absolute > length * (1 + 1e-5f) + 1e-5f)
-        warnOnce(branch, fmt::format("the absolute sizes ({:.3g} m) exceed the scope ({:.3g} m); the shapes overlap",
-                                     absolute, length));
+        warnOnce(branch,
+                 fmt::format("the absolute sizes ({:.3g} m) exceed the scope ({:.3g} m); the shapes overlap", absolute,
+                             length));
     float perRelative = relative > 0 ? std::max(length - absolute, 0.0f) / relative : 0.0f;
     float position = 0;
     for (uint32_t s = 0; s < branch.successors.size(); ++s) {
         const Successor &successor = branch.successors[s];
         float extent = successor.size.unit == Extent::Unit::Relative ? successor.size.value * perRelative
-                                                                      : successor.size.value * property(successor);
+                                                                     : successor.size.value * property(successor);
         Vec2f size = shape.size, offset{0, 0};
         along(size, branch.axis) = extent;
         along(offset, branch.axis) = -length / 2 + position + extent / 2;
@@ -216,8 +212,9 @@ void Derivation::repeat(uint32_t rule, uint32_t b, const Shape &shape, int depth
     if (!(tile > 0))
         throw InputError(branch.loc, fmt::format("the repeat's tile size is {} m; it must be positive", tile));
     if (length / tile > float(limits_.maxShapes))
-        throw InputError(branch.loc, fmt::format("a {:.3g} m tile repeated over {:.3g} m makes more than {} shapes",
-                                                 tile, length, limits_.maxShapes));
+        throw InputError(branch.loc,
+                         fmt::format("a {:.3g} m tile repeated over {:.3g} m makes more than {} shapes", tile, length,
+                                     limits_.maxShapes));
     int count = repeatCount(length, tile, branch.repeatSize.unit);
     float extent = length / float(count);
     for (int i = 0; i < count; ++i) {

@@ -52,7 +52,7 @@ struct Terminal {
     // lower left). The shape's frame has its origin at the scope's centre, in the wall plane, and
     // carries every scale and translation of the shape's ancestors.
     Transform shapeToFacade;
-    Vec2f size;                           // the scope's width and height, metres (not scaled)
+    Vec2f size;                            // the scope's width and height, metres (not scaled)
     const std::string *texture = nullptr;  // the inherited texture attribute, if any
     Vec2f uv{1.0f, 1.0f};
     ZScale zScale = ZScale::NotSet;

@@ -23,10 +23,10 @@ using Segment = Kernel::Segment_2;
 // A constrained Delaunay triangulation whose vertices know their polygon index and whose faces
 // know whether they lie inside the polygon.
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<
-    Kernel, CGAL::Triangulation_data_structure_2<
-                CGAL::Triangulation_vertex_base_with_info_2<uint32_t, Kernel>,
-                CGAL::Constrained_triangulation_face_base_2<
-                    Kernel, CGAL::Triangulation_face_base_with_info_2<bool, Kernel>>>>;
+    Kernel,
+    CGAL::Triangulation_data_structure_2<
+        CGAL::Triangulation_vertex_base_with_info_2<uint32_t, Kernel>,
+        CGAL::Constrained_triangulation_face_base_2<Kernel, CGAL::Triangulation_face_base_with_info_2<bool, Kernel>>>>;
 
 std::vector<Point> toCgal(std::span<const Vec2f> polygon) {
     std::vector<Point> points;
@@ -37,15 +37,17 @@ std::vector<Point> toCgal(std::span<const Vec2f> polygon) {
 
 void checkPoints(const Footprint &footprint, const FileLoc &loc) {
     const std::vector<Vec2f> &points = footprint.points;
-    if (points.size() < 3) throw InputError(loc, fmt::format("a footprint needs at least 3 points, not {}", points.size()));
+    if (points.size() < 3)
+        throw InputError(loc, fmt::format("a footprint needs at least 3 points, not {}", points.size()));
     for (size_t i = 0; i < points.size(); ++i) {
         if (!std::isfinite(points[i].x) || !std::isfinite(points[i].y)) {
             throw InputError(loc, fmt::format("footprint point {} is not a finite number", i + 1));
         }
         for (size_t j = 0; j < i; ++j) {
             if (points[j].x == points[i].x && points[j].y == points[i].y) {
-                throw InputError(loc, fmt::format("footprint point {} repeats point {} ({} {})", i + 1, j + 1,
-                                                  points[i].x, points[i].y));
+                throw InputError(
+                    loc,
+                    fmt::format("footprint point {} repeats point {} ({} {})", i + 1, j + 1, points[i].x, points[i].y));
             }
         }
     }
@@ -170,7 +172,7 @@ bool areDisjoint(std::span<const Vec2f> a, std::span<const Vec2f> b) {
     }
     // With no crossings, one lies inside the other exactly when its first point does.
     return CGAL::bounded_side_2(pb.begin(), pb.end(), pa[0], Kernel()) == CGAL::ON_UNBOUNDED_SIDE &&
-           CGAL::bounded_side_2(pa.begin(), pa.end(), pb[0], Kernel()) == CGAL::ON_UNBOUNDED_SIDE;
+        CGAL::bounded_side_2(pa.begin(), pa.end(), pb[0], Kernel()) == CGAL::ON_UNBOUNDED_SIDE;
 }
 
 double distanceToSegment(Vec2f p, Vec2f a, Vec2f b) {
@@ -195,7 +197,7 @@ bool crossClearly(Vec2f a, Vec2f b, Vec2f c, Vec2f d, double tolerance) {
     if (!CGAL::do_intersect(Segment(Point(a.x, a.y), Point(b.x, b.y)), Segment(Point(c.x, c.y), Point(d.x, d.y))))
         return false;
     return distanceToSegment(a, c, d) > tolerance && distanceToSegment(b, c, d) > tolerance &&
-           distanceToSegment(c, a, b) > tolerance && distanceToSegment(d, a, b) > tolerance;
+        distanceToSegment(c, a, b) > tolerance && distanceToSegment(d, a, b) > tolerance;
 }
 
 }  // namespace
@@ -239,7 +241,8 @@ std::vector<uint32_t> triangulatePolygonWithHoles(std::span<const std::vector<Ve
             vertices.push_back(cdt.insert(Point(p.x, p.y)));
             vertices.back()->info() = index++;
         }
-        for (size_t i = 0; i < vertices.size(); ++i) cdt.insert_constraint(vertices[i], vertices[(i + 1) % vertices.size()]);
+        for (size_t i = 0; i < vertices.size(); ++i)
+            cdt.insert_constraint(vertices[i], vertices[(i + 1) % vertices.size()]);
     }
     markInside(cdt);
     std::vector<uint32_t> indices;
@@ -254,8 +257,9 @@ std::optional<std::string> normaliseFootprint(Footprint &footprint, const FileLo
     checkPoints(footprint, loc);
     if (footprint.streetEdges.empty()) footprint.streetEdges.assign(footprint.points.size(), false);
     if (footprint.streetEdges.size() != footprint.points.size()) {
-        throw InputError(loc, fmt::format("a footprint of {} edges has {} street flags", footprint.points.size(),
-                                          footprint.streetEdges.size()));
+        throw InputError(loc,
+                         fmt::format("a footprint of {} edges has {} street flags", footprint.points.size(),
+                                     footprint.streetEdges.size()));
     }
     if (!isSimplePolygon(footprint.points)) {
         throw InputError(loc, "the footprint's outline crosses or touches itself (or has no area)");

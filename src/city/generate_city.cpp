@@ -8,17 +8,17 @@
 
 #include "city/assets.h"
 #include "city/building_generator.h"
+#include "city/building_rules.h"
 #include "city/city_data.h"
 #include "city/lot_subdivision.h"
 #include "city/osm_import.h"
-#include "city/building_rules.h"
 #include "city/plinth.h"
 #include "city/street_geometry.h"
 #include "city/streets_on_terrain.h"
 #include "city/warning_list.h"
 #include "core/hash.h"
-#include "geodesy/map_projection.h"
 #include "core/random_streams.h"
+#include "geodesy/map_projection.h"
 
 namespace veduta {
 
@@ -26,8 +26,8 @@ namespace {
 
 // One of the city's rule files, read once, with the generator that builds with it.
 struct RuleFileBuilder {
-    RuleFileBuilder(const std::filesystem::path &file, RenderSceneBuilder &builder, uint32_t seed)
-        : loaded(file), generator(loaded.grammar, AssetLibrary::builtIn(), builder, seed) {}
+    RuleFileBuilder(const std::filesystem::path &file, RenderSceneBuilder &builder, uint32_t seed) :
+        loaded(file), generator(loaded.grammar, AssetLibrary::builtIn(), builder, seed) {}
     BuildingRules loaded;
     BuildingGenerator generator;
 };
@@ -52,7 +52,8 @@ StreetNetwork streetNetworkOf(const CityData &data) {
     StreetNetwork network;
     for (const CityPoint &p : data.points) network.nodes.push_back({float(p.e), float(p.n)});
     // A street's start and end are indices into the points already (city_data.h).
-    for (const CityStreet &s : data.streets) network.streets.push_back({s.start, s.end, s.width.value_or(data.streetWidth)});
+    for (const CityStreet &s : data.streets)
+        network.streets.push_back({s.start, s.end, s.width.value_or(data.streetWidth)});
     if (!data.points.empty()) network.height = float(data.points.front().u);
     return network;
 }
@@ -109,17 +110,18 @@ void seatOnGround(Footprint &footprint, const GroundHeight &ground, const FileLo
                   std::vector<std::string> &warnings) {
     std::optional<float> datum = ground(footprint.points);
     if (!datum)
-        warnings.push_back(fmt::format("{}: building {} stands off the terrain; it is placed at height 0",
-                                       where.toString(), id));
+        warnings.push_back(
+            fmt::format("{}: building {} stands off the terrain; it is placed at height 0", where.toString(), id));
     footprint.base = datum.value_or(0.0f);
 }
 
 void warnIfHeightsIgnored(const CityData &data, const FileLoc &fileLoc, std::vector<std::string> &warnings) {
     for (const CityPoint &p : data.points) {
         if (p.u == 0) continue;
-        warnings.push_back(fmt::format("{}: the city stands on the landscape's terrain; the heights u of its points "
-                                       "(point {}: {}) are ignored",
-                                       p.loc.file.empty() ? fileLoc.toString() : p.loc.toString(), p.id, p.u));
+        warnings.push_back(
+            fmt::format("{}: the city stands on the landscape's terrain; the heights u of its points "
+                        "(point {}: {}) are ignored",
+                        p.loc.file.empty() ? fileLoc.toString() : p.loc.toString(), p.id, p.u));
         return;
     }
 }
@@ -129,9 +131,10 @@ void warnOfSharedId(std::unordered_map<uint32_t, FileLoc> &lotOfId, uint32_t id,
                     std::vector<std::string> &warnings) {
     auto [first, fresh] = lotOfId.emplace(id, lot);
     if (fresh) return;
-    warnings.push_back(fmt::format("{}: this lot's building has the id {} of the one at {} (a hash collision): they "
-                                   "share their random choices and their IndexBuilding id",
-                                   lot.toString(), id, first->second.toString()));
+    warnings.push_back(
+        fmt::format("{}: this lot's building has the id {} of the one at {} (a hash collision): they "
+                    "share their random choices and their IndexBuilding id",
+                    lot.toString(), id, first->second.toString()));
 }
 
 uint32_t buildCity(const CityData &data, uint32_t seed, ObjectId objectId, const FileLoc &fileLoc,
@@ -173,8 +176,9 @@ uint32_t buildCity(const CityData &data, uint32_t seed, ObjectId objectId, const
 // route into the scene's frame, without in local metres (OpenStreetMap's centring on the data).
 CityData readCityFile(const CityDesc &city, const std::optional<Georeference> &georeference) {
     if (city.epsg != 0 && !georeference)
-        throw InputError(city.crsLoc, "a city in map coordinates (crs) needs the scene's <georeference "
-                                      "crs=\"EPSG:…\" origin=\"E N\"> to be placed");
+        throw InputError(city.crsLoc,
+                         "a city in map coordinates (crs) needs the scene's <georeference "
+                         "crs=\"EPSG:…\" origin=\"E N\"> to be placed");
     if (city.file.extension() == ".osm") {
         if (city.epsg != 0)
             throw InputError(city.crsLoc, "OpenStreetMap data is WGS 84 longitude and latitude; leave out crs");

@@ -11,10 +11,10 @@
 #include "city/city_data.h"
 #include "city/footprint.h"
 #include "city/street_geometry.h"
+#include "description/scene_description.h"
 #include "geo/generate_landscape.h"
 #include "geodesy/georeference.h"
 #include "scene/render_scene.h"
-#include "description/scene_description.h"
 
 namespace veduta {
 

@@ -63,8 +63,8 @@ std::vector<bool> streetFlags(const Piece &piece, const Block &block) {
         for (size_t e = 0; e < m && !flags[i]; ++e) {
             if (!block.streetEdges[e]) continue;
             Vec2f a = block.points[e], b = block.points[(e + 1) % m];
-            flags[i] = distanceToSegment(piece[i], a, b) < kOnEdge &&
-                       distanceToSegment(piece[(i + 1) % n], a, b) < kOnEdge;
+            flags[i] =
+                distanceToSegment(piece[i], a, b) < kOnEdge && distanceToSegment(piece[(i + 1) % n], a, b) < kOnEdge;
         }
     }
     return flags;
@@ -81,7 +81,7 @@ CutSides cutPiece(const Piece &piece, const CutLine &line) {
     // and `on` may lie outside the box (an OBB's middle).
     CGAL::Bbox_2 box = polygon.bbox();
     double outside = std::max({0.0, box.xmin() - line.on.x, line.on.x - box.xmax()}) +
-                     std::max({0.0, box.ymin() - line.on.y, line.on.y - box.ymax()});
+        std::max({0.0, box.ymin() - line.on.y, line.on.y - box.ymax()});
     double reach = 2 * (box.xmax() - box.xmin() + box.ymax() - box.ymin() + outside);
     Point on(line.on.x, line.on.y);
     Vector along(line.dx, line.dy);

@@ -97,8 +97,8 @@ LotSubdivision algorithmFrom(const SettingValue &value) {
     for (const AlgorithmName &entry : kAlgorithmNames) {
         if (value.text == entry.name) return entry.algorithm;
     }
-    throw InputError(value.loc, fmt::format("LotSubdivision must be perimeter, recursive, obb or skeleton, not '{}'",
-                                            value.text));
+    throw InputError(value.loc,
+                     fmt::format("LotSubdivision must be perimeter, recursive, obb or skeleton, not '{}'", value.text));
 }
 
 }  // namespace
@@ -157,7 +157,8 @@ void fail(const std::optional<FileLoc> &loc, const std::string &message) {
 void checkBlock(const Block &block, const std::optional<FileLoc> &loc) {
     if (block.points.size() < 3) fail(loc, fmt::format("a block needs at least 3 points, not {}", block.points.size()));
     if (block.streetEdges.size() != block.points.size()) {
-        fail(loc, fmt::format("a block of {} edges has {} street flags", block.points.size(), block.streetEdges.size()));
+        fail(loc,
+             fmt::format("a block of {} edges has {} street flags", block.points.size(), block.streetEdges.size()));
     }
     for (Vec2f p : block.points) {
         if (!std::isfinite(p.x) || !std::isfinite(p.y)) fail(loc, "a block point is not a finite number");

@@ -74,14 +74,14 @@ inline constexpr int kMaxLotRecursion = 32;
 // perpendicular to the street at frontages drawn from [MinBuildingLength, MaxBuildingLength];
 // lots meeting at a corner of two street edges are one corner lot. The inset (the courtyard)
 // stays empty. No lots when the block has no street edge or cannot be inset.
-std::vector<Footprint> perimeterLots(const Block &block, const LotSettings &settings, uint32_t seed,
-                                     uint32_t blockId, const std::optional<FileLoc> &loc = std::nullopt);
+std::vector<Footprint> perimeterLots(const Block &block, const LotSettings &settings, uint32_t seed, uint32_t blockId,
+                                     const std::optional<FileLoc> &loc = std::nullopt);
 
 // Recursive subdivision (the thesis' subdivideLot-Mueller, after Müller 2001): pieces larger
 // than MaxLotArea are split perpendicular to one of their two longest edges near its middle;
 // pieces without a street edge are dropped and not split further.
-std::vector<Footprint> recursiveLots(const Block &block, const LotSettings &settings, uint32_t seed,
-                                     uint32_t blockId, const std::optional<FileLoc> &loc = std::nullopt);
+std::vector<Footprint> recursiveLots(const Block &block, const LotSettings &settings, uint32_t seed, uint32_t blockId,
+                                     const std::optional<FileLoc> &loc = std::nullopt);
 
 // CityEngine's recursive OBB subdivision (Vanegas et al. 2012): pieces larger than MaxLotArea
 // are split by a line across the longer axis of their minimum-area bounding rectangle, near its
@@ -94,13 +94,13 @@ std::vector<Footprint> obbLots(const Block &block, const LotSettings &settings, 
 // skeleton become one strip per street edge, corner regions go to the longer of two meeting
 // streets, the faces of other edges join a neighbouring strip, and each strip is cut
 // perpendicular to its street at frontages drawn from [MinBuildingLength, MaxBuildingLength].
-std::vector<Footprint> skeletonLots(const Block &block, const LotSettings &settings, uint32_t seed,
-                                    uint32_t blockId, const std::optional<FileLoc> &loc = std::nullopt);
+std::vector<Footprint> skeletonLots(const Block &block, const LotSettings &settings, uint32_t seed, uint32_t blockId,
+                                    const std::optional<FileLoc> &loc = std::nullopt);
 
 // The lots of the algorithm settings.algorithm names; for Perimeter, recursiveLots where
 // perimeterLots gives none (a piece too small for a ring of houses round a courtyard).
-std::vector<Footprint> subdivideBlock(const Block &block, const LotSettings &settings, uint32_t seed,
-                                      uint32_t blockId, const std::optional<FileLoc> &loc = std::nullopt);
+std::vector<Footprint> subdivideBlock(const Block &block, const LotSettings &settings, uint32_t seed, uint32_t blockId,
+                                      const std::optional<FileLoc> &loc = std::nullopt);
 
 // The algorithms' final filters (thesis L370–374): the lots with area > MinLotArea and every
 // interior angle > MinLotAngle, each of those kept with probability HousingDensity (a pure

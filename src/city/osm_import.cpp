@@ -9,12 +9,12 @@
 #include <string_view>
 #include <unordered_map>
 
-#include <GeographicLib/LocalCartesian.hpp>
 #include <cpl_error.h>
 #include <cpl_vsi.h>
 #include <fmt/format.h>
 #include <gdal_priv.h>
 #include <ogrsf_frmts.h>
+#include <GeographicLib/LocalCartesian.hpp>
 
 #include "city/footprint.h"
 #include "city/osm_config.h"
@@ -105,9 +105,9 @@ std::optional<float> positiveNumber(std::string_view text, bool metres) {
 std::optional<float> classWidth(std::string_view highway) {
     if (highway.ends_with("_link")) highway.remove_suffix(5);
     static const std::unordered_map<std::string_view, float> widths = {
-        {"motorway", 12.0f},    {"trunk", 12.0f},       {"primary", 12.0f},       {"secondary", 10.0f},
-        {"tertiary", 8.0f},     {"residential", 6.0f},  {"unclassified", 6.0f},   {"living_street", 4.0f},
-        {"service", 4.0f},      {"footway", 2.0f},      {"path", 2.0f},           {"cycleway", 2.0f}};
+        {"motorway", 12.0f}, {"trunk", 12.0f},      {"primary", 12.0f},     {"secondary", 10.0f},
+        {"tertiary", 8.0f},  {"residential", 6.0f}, {"unclassified", 6.0f}, {"living_street", 4.0f},
+        {"service", 4.0f},   {"footway", 2.0f},     {"path", 2.0f},         {"cycleway", 2.0f}};
     auto it = widths.find(highway);
     return it == widths.end() ? std::nullopt : std::optional(it->second);
 }
@@ -122,8 +122,8 @@ bool isStreet(std::string_view highway) {
 // OSM's roof:shape values with a RoofType setting of their own.
 std::optional<std::string_view> roofType(std::string_view shape) {
     static const std::unordered_map<std::string_view, std::string_view> types = {
-        {"gabled", "Gable"}, {"hipped", "Hip"},         {"pyramidal", "Pyramid"},     {"skillion", "Shed"},
-        {"flat", "Flat"},    {"mansard", "Mansard"},    {"half-hipped", "HalfHip"}};
+        {"gabled", "Gable"}, {"hipped", "Hip"},      {"pyramidal", "Pyramid"},  {"skillion", "Shed"},
+        {"flat", "Flat"},    {"mansard", "Mansard"}, {"half-hipped", "HalfHip"}};
     auto it = types.find(shape);
     return it == types.end() ? std::nullopt : std::optional(it->second);
 }
@@ -191,7 +191,8 @@ std::vector<std::vector<GeoRing>> geoPolygons(const OGRMultiPolygon &multiPolygo
 FileLoc featureLoc(const std::string &file, std::string_view layer, const OGRFeature &feature) {
     if (layer == "multipolygons") {
         int wayId = feature.GetFieldIndex("osm_way_id");
-        if (feature.IsFieldSetAndNotNull(wayId)) return {fmt::format("{}: way {}", file, feature.GetFieldAsString(wayId)), 0, 0};
+        if (feature.IsFieldSetAndNotNull(wayId))
+            return {fmt::format("{}: way {}", file, feature.GetFieldAsString(wayId)), 0, 0};
         return {fmt::format("{}: relation {}", file, feature.GetFieldAsString("osm_id")), 0, 0};
     }
     return {fmt::format("{}: way {}", file, feature.GetFieldAsString("osm_id")), 0, 0};
@@ -202,8 +203,8 @@ uint32_t areaIdentity(const OGRFeature &feature) {
     int wayId = feature.GetFieldIndex("osm_way_id");
     bool way = feature.IsFieldSetAndNotNull(wayId);
     auto id = uint64_t(way ? feature.GetFieldAsInteger64(wayId) : feature.GetFieldAsInteger64("osm_id"));
-    return hashValues({streamTag(way ? RandomStream::OsmWay : RandomStream::OsmRelation), uint32_t(id),
-                       uint32_t(id >> 32)});
+    return hashValues(
+        {streamTag(way ? RandomStream::OsmWay : RandomStream::OsmRelation), uint32_t(id), uint32_t(id >> 32)});
 }
 
 // Sorts one feature of GDAL's `lines` or `multipolygons` layer into `content`.
@@ -286,8 +287,9 @@ double distanceToLine(Vec2f p, const StreetLine &street) {
 
 class OsmImporter {
   public:
-    OsmImporter(std::optional<MapProjection> projection, GeographicPoint tangentOrigin, std::vector<std::string> warnings)
-        : projection_(std::move(projection)), tangentPlane_(tangentOrigin.latitude, tangentOrigin.longitude, 0) {
+    OsmImporter(std::optional<MapProjection> projection, GeographicPoint tangentOrigin,
+                std::vector<std::string> warnings) :
+        projection_(std::move(projection)), tangentPlane_(tangentOrigin.latitude, tangentOrigin.longitude, 0) {
         city_.warnings = std::move(warnings);
     }
 
@@ -346,8 +348,9 @@ class OsmImporter {
         std::string_view highway = *tag(line.tags, "highway");
         if (std::optional<std::string_view> width = tag(line.tags, "width")) {
             if (std::optional<float> metres = positiveNumber(*width, true)) return metres;
-            warn(line.loc, fmt::format("width '{}' is not a length in metres; the street takes highway={}'s width",
-                                       *width, highway));
+            warn(line.loc,
+                 fmt::format("width '{}' is not a length in metres; the street takes highway={}'s width", *width,
+                             highway));
         }
         return classWidth(highway);
     }
@@ -390,8 +393,9 @@ class OsmImporter {
         for (uint32_t part = 0; part < area.polygons.size(); ++part) {
             const std::vector<GeoRing> &polygon = area.polygons[part];
             if (polygon.size() > 1)
-                warn(area.loc, fmt::format("blocks have no holes: the residential area's {} inner ring(s) are ignored",
-                                           polygon.size() - 1));
+                warn(area.loc,
+                     fmt::format("blocks have no holes: the residential area's {} inner ring(s) are ignored",
+                                 polygon.size() - 1));
             std::optional<std::vector<Vec2f>> points = outline(polygon.front(), area.loc);
             if (!points) continue;
             CityBlock block;
@@ -408,8 +412,9 @@ class OsmImporter {
         for (uint32_t part = 0; part < area.polygons.size(); ++part) {
             const std::vector<GeoRing> &polygon = area.polygons[part];
             if (polygon.size() > 1)
-                warn(area.loc, fmt::format("lots have no holes: the building's {} inner ring(s) are ignored",
-                                           polygon.size() - 1));
+                warn(
+                    area.loc,
+                    fmt::format("lots have no holes: the building's {} inner ring(s) are ignored", polygon.size() - 1));
             std::optional<std::vector<Vec2f>> points = outline(polygon.front(), area.loc);
             if (!points) continue;
             CityLot lot;
@@ -440,9 +445,10 @@ class OsmImporter {
             bool cornersIn = std::all_of(lot.points.begin(), lot.points.end(),
                                          [&](Vec2f p) { return covers(block.points, p, kOutsideTolerance); });
             if (cornersIn && !edgeLeaving(lot.points, block.points, kOutsideTolerance)) return &block;
-            warn(lot.loc, fmt::format("the building reaches outside the residential area of {}; it stands in a "
-                                      "block of its own",
-                                      block.loc.toString()));
+            warn(lot.loc,
+                 fmt::format("the building reaches outside the residential area of {}; it stands in a "
+                             "block of its own",
+                             block.loc.toString()));
             return nullptr;
         }
         return nullptr;
@@ -474,20 +480,21 @@ class OsmImporter {
         std::optional<float> roofHeight = metresTag(area, "roof:height");
         if (roofHeight) set("RoofHeight", "roof:height", fmt::format("{}", *roofHeight));
         if (height && roofHeight && *roofHeight >= *height) {
-            warn(area.loc, fmt::format("roof:height {} is not below height {}; height is not used", *roofHeight, *height));
+            warn(area.loc,
+                 fmt::format("roof:height {} is not below height {}; height is not used", *roofHeight, *height));
         } else if (height) {
             set("BuildingHeight", "height", fmt::format("{}", *height - roofHeight.value_or(0)));
         } else if (std::optional<std::string_view> levels = tag(area.tags, "building:levels")) {
             if (std::optional<float> count = positiveNumber(*levels, false))
                 set("BuildingHeight", "building:levels", fmt::format("{}", *count * defaultFloorHeight()));
             else
-                warn(area.loc, fmt::format("building:levels '{}' is not a number; kept as osm:building:levels", *levels));
+                warn(area.loc,
+                     fmt::format("building:levels '{}' is not a number; kept as osm:building:levels", *levels));
         }
         if (std::optional<std::string_view> shape = tag(area.tags, "roof:shape")) {
             if (std::optional<std::string_view> type = roofType(*shape))
                 set("RoofType", "roof:shape", std::string(*type));
-            else
-                warn(area.loc, fmt::format("roof:shape '{}' has no RoofType; kept as osm:roof:shape", *shape));
+            else warn(area.loc, fmt::format("roof:shape '{}' has no RoofType; kept as osm:roof:shape", *shape));
         }
         return settings;
     }

@@ -57,8 +57,8 @@ Footprint footprintOf(const std::vector<Section> &sections, float base) {
 class PerimeterWalk {
   public:
     PerimeterWalk(const Block &block, std::vector<Vec2f> inset, const LotSettings &settings, uint32_t seed,
-                  uint32_t blockId, const std::optional<FileLoc> &loc)
-        : block_(block), inset_(std::move(inset)), settings_(settings), seed_(seed), blockId_(blockId), loc_(loc) {}
+                  uint32_t blockId, const std::optional<FileLoc> &loc) :
+        block_(block), inset_(std::move(inset)), settings_(settings), seed_(seed), blockId_(blockId), loc_(loc) {}
 
     std::vector<Footprint> run() {
         size_t n = block_.points.size();
@@ -102,9 +102,10 @@ class PerimeterWalk {
         for (float from = 0, lotStart = 0;;) {
             float cut = from + frontage();
             if (!(cut > from)) {
-                lots::fail(loc_, fmt::format("block {}: a frontage of {} m does not move the walk along an edge {} m "
-                                             "long (MinBuildingLength is too small)",
-                                             blockId_, cut - from, length));
+                lots::fail(loc_,
+                           fmt::format("block {}: a frontage of {} m does not move the walk along an edge {} m "
+                                       "long (MinBuildingLength is too small)",
+                                       blockId_, cut - from, length));
             }
             // Steps 1–2 → 8: the rest is too short for a lot; it joins the lot at the corner.
             if (length - cut <= settings_.minBuildingLength) break;
@@ -115,7 +116,8 @@ class PerimeterWalk {
             // beside an inset corner. The thesis then builds no lot up to it (step 9), which
             // leaves a gap beside nearly every corner; veduta moves the cut away from that inset
             // corner instead, as far as the lots on either side keep MinBuildingLength.
-            float lowest = insetFrom + settings_.minBuildingInnerLength, highest = insetTo - settings_.minBuildingInnerLength;
+            float lowest = insetFrom + settings_.minBuildingInnerLength,
+                  highest = insetTo - settings_.minBuildingInnerLength;
             if (lowest > highest) continue;
             cut = std::clamp(cut, lowest, highest);
             if (cut - lotStart < settings_.minBuildingLength || length - cut <= settings_.minBuildingLength) continue;
@@ -138,8 +140,9 @@ class PerimeterWalk {
 
     void closeOpen() {
         if (++pieces_ > kMaxLotsPerBlock) {
-            lots::fail(loc_, fmt::format("block {} would be cut into more than {} perimeter lots (MinBuildingLength {} m)",
-                                         blockId_, kMaxLotsPerBlock, settings_.minBuildingLength));
+            lots::fail(loc_,
+                       fmt::format("block {} would be cut into more than {} perimeter lots (MinBuildingLength {} m)",
+                                   blockId_, kMaxLotsPerBlock, settings_.minBuildingLength));
         }
         if (holdFirst_) {
             first_ = open_;

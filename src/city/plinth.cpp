@@ -12,7 +12,8 @@ Mesh plinthMesh(const Footprint &footprint, float depth) {
         Vec3f normal = footprint.outwardNormal(edge);
         float u0 = footprint.perimeterBefore(edge), u1 = u0 + footprint.edgeLength(edge);
         auto first = uint32_t(mesh.positions.size());
-        mesh.positions.insert(mesh.positions.end(), {{a.x, a.y, top}, {b.x, b.y, top}, {b.x, b.y, bottom}, {a.x, a.y, bottom}});
+        mesh.positions.insert(mesh.positions.end(),
+                              {{a.x, a.y, top}, {b.x, b.y, top}, {b.x, b.y, bottom}, {a.x, a.y, bottom}});
         mesh.normals.insert(mesh.normals.end(), 4, normal);
         mesh.uvs.insert(mesh.uvs.end(), {{u0, 0}, {u1, 0}, {u1, depth}, {u0, depth}});
         // Counter-clockwise seen from outside: a, bottom of a, bottom of b, then b.

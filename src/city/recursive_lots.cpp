@@ -27,7 +27,7 @@ bool isRightAngle(const Piece &piece, size_t edge, size_t neighbour) {
     size_t n = piece.size();
     Vec2f a = piece[edge], b = piece[(edge + 1) % n], c = piece[neighbour], d = piece[(neighbour + 1) % n];
     double cosine = ((double(b.x) - a.x) * (double(d.x) - c.x) + (double(b.y) - a.y) * (double(d.y) - c.y)) /
-                    (edgeLength(piece, edge) * edgeLength(piece, neighbour));
+        (edgeLength(piece, edge) * edgeLength(piece, neighbour));
     return std::abs(cosine) < kRightAngleCosine;
 }
 
@@ -41,9 +41,8 @@ int rightAngles(const Piece &piece, size_t edge) {
 size_t splitEdge(const Piece &piece) {
     std::vector<size_t> edges(piece.size());
     for (size_t i = 0; i < edges.size(); ++i) edges[i] = i;
-    std::partial_sort(edges.begin(), edges.begin() + 2, edges.end(), [&](size_t a, size_t b) {
-        return edgeLength(piece, a) > edgeLength(piece, b);
-    });
+    std::partial_sort(edges.begin(), edges.begin() + 2, edges.end(),
+                      [&](size_t a, size_t b) { return edgeLength(piece, a) > edgeLength(piece, b); });
     return rightAngles(piece, edges[1]) > rightAngles(piece, edges[0]) ? edges[1] : edges[0];
 }
 
@@ -54,8 +53,8 @@ std::vector<Piece> halves(const Piece &piece, uint32_t key) {
     Vec2f a = piece[edge], b = piece[(edge + 1) % piece.size()];
     float t = lots::normalBetween(kCutFrom, kCutTo, key);
     double length = edgeLength(piece, edge);
-    lots::CutLine across{{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)}, -(double(b.y) - a.y) / length,
-                         (double(b.x) - a.x) / length};
+    lots::CutLine across{
+        {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)}, -(double(b.y) - a.y) / length, (double(b.x) - a.x) / length};
     lots::CutSides sides = lots::cutPiece(piece, across);
     sides.left.insert(sides.left.end(), sides.right.begin(), sides.right.end());
     return sides.left;

@@ -34,8 +34,7 @@ RoofType chosenType(const Footprint &footprint, const SettingsStack &settings, u
     std::vector<RoofType> types;
     for (std::string word; words >> word;) {
         std::optional<RoofType> type = roofTypeFromName(word);
-        if (!type)
-            throw InputError(value->loc, fmt::format("RoofType '{}' is none of {}", word, roofTypeNames()));
+        if (!type) throw InputError(value->loc, fmt::format("RoofType '{}' is none of {}", word, roofTypeNames()));
         types.push_back(*type);
     }
     if (types.empty()) throw InputError(value->loc, "RoofType names no roof type");
@@ -60,7 +59,8 @@ float lengthSetting(const SettingsStack &settings, const char *name, float other
 std::optional<float> pitchSetting(const SettingsStack &settings) {
     std::optional<float> pitch = settings.number("RoofPitch");
     if (pitch && !(*pitch > 0 && *pitch < 90))
-        throw InputError(settings.find("RoofPitch")->loc, fmt::format("RoofPitch must be between 0° and 90°, not {}°", *pitch));
+        throw InputError(settings.find("RoofPitch")->loc,
+                         fmt::format("RoofPitch must be between 0° and 90°, not {}°", *pitch));
     return pitch;
 }
 
@@ -68,8 +68,7 @@ std::optional<float> pitchSetting(const SettingsStack &settings) {
 
 RoofType thesisRoofType(const Footprint &footprint) {
     bool gable = footprint.edgeCount() == 4 &&
-                 std::count(footprint.streetEdges.begin(), footprint.streetEdges.end(), true) == 1 &&
-                 isRightAngled(footprint);
+        std::count(footprint.streetEdges.begin(), footprint.streetEdges.end(), true) == 1 && isRightAngled(footprint);
     return gable ? RoofType::Gable : RoofType::Mansard;
 }
 

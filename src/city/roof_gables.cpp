@@ -72,7 +72,8 @@ std::optional<std::string> addGableEnd(SkeletonRoof &roof, size_t edge, std::opt
     const std::vector<uint32_t> &hip = roof.faces[edge].corners;
     uint32_t apex = hip[2];
     RoofFace before = roof.faces[sides.previous], after = roof.faces[sides.next];
-    if (before.corners[2] != apex || after.corners.back() != apex) return "the slopes beside it do not meet at its apex";
+    if (before.corners[2] != apex || after.corners.back() != apex)
+        return "the slopes beside it do not meet at its apex";
     // The ridge between the neighbouring slopes, carried on to the edge's line.
     std::optional<Line> ridge = meetingLine(before.plane, after.plane);
     std::optional<Point> top = ridge ? meetingPoint(*ridge, wallPlane(roof, edge)) : std::nullopt;
@@ -118,8 +119,8 @@ std::optional<std::string> addGableEnd(SkeletonRoof &roof, size_t edge, std::opt
         std::erase(after.corners, apex);
     }
     bool valid = isSimpleFromAbove(roof, before) && isSimpleFromAbove(roof, after) && liesIn(roof, before) &&
-                 liesIn(roof, after) && liesIn(roof, wall) &&
-                 std::all_of(added.begin(), added.end(), [&](const RoofFace &f) { return liesIn(roof, f); });
+        liesIn(roof, after) && liesIn(roof, wall) &&
+        std::all_of(added.begin(), added.end(), [&](const RoofFace &f) { return liesIn(roof, f); });
     if (!valid) {
         roof.corners.resize(cornersBefore);
         return "the slopes beside it would cross themselves or leave their planes";

@@ -166,7 +166,8 @@ void addCover(Mesh &m, const RoofFootprint &footprint, float eavesZ, const std::
 }
 
 void addFlatCover(Mesh &m, const RoofFootprint &footprint, float z) {
-    addCover(m, footprint, z, [](Vec2f) { return 0.0f; }, kUp, UvPlane{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+    addCover(
+        m, footprint, z, [](Vec2f) { return 0.0f; }, kUp, UvPlane{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
 }
 
 // The parapet's inner outline: the footprint moved in by the parapet's thickness, halved until
@@ -264,7 +265,8 @@ GabledRoof gableEnds(const Eaves &eaves, float slope, const std::optional<std::v
     GabledRoof gabled{Mesh{}, {}, {}};
     for (size_t edge : only ? *only : ridgeEnds(*roof)) {
         if (!endsARidge(*roof, edge)) {
-            if (only) gabled.refusals.push_back(fmt::format("edge {} ends no ridge: its hip face is no triangle", edge));
+            if (only)
+                gabled.refusals.push_back(fmt::format("edge {} ends no ridge: its hip face is no triangle", edge));
         } else if (auto refusal = addGableEnd(*roof, edge, halfHipFraction)) {
             gabled.refusals.push_back(fmt::format("edge {} stays hipped: {}", edge, *refusal));
         } else {
@@ -301,7 +303,8 @@ Attempt gabledRoof(const RoofFootprint &footprint, float wallTop, float slope, f
             }
         }
     }
-    if (std::holds_alternative<Mesh>(chosen.roof)) notes.insert(notes.end(), chosen.refusals.begin(), chosen.refusals.end());
+    if (std::holds_alternative<Mesh>(chosen.roof))
+        notes.insert(notes.end(), chosen.refusals.begin(), chosen.refusals.end());
     return std::move(chosen.roof);
 }
 
@@ -314,10 +317,13 @@ Attempt pyramidRoof(const RoofFootprint &footprint, float wallTop, float slope, 
     std::vector<RoofKernel::Point_2> points;
     for (Vec2f p : outer) points.emplace_back(p.x, p.y);
     if (!footprint.holes.empty()) return std::string("a pyramid needs a footprint without courtyards");
-    if (!CGAL::is_convex_2(points.begin(), points.end(), RoofKernel())) return std::string("a pyramid needs a convex footprint");
+    if (!CGAL::is_convex_2(points.begin(), points.end(), RoofKernel()))
+        return std::string("a pyramid needs a convex footprint");
     Vec2f centre = areaCentroid(outer);
     std::vector<float> reach;
-    forEachEdge(footprint, [&](Vec2f a, Vec2f b, float) { reach.push_back(dot(lift(a, 0) - lift(centre, 0), outwardNormal(a, b))); });
+    forEachEdge(footprint, [&](Vec2f a, Vec2f b, float) {
+        reach.push_back(dot(lift(a, 0) - lift(centre, 0), outwardNormal(a, b)));
+    });
     float nearest = *std::min_element(reach.begin(), reach.end());
     Vec3f apex = lift(centre, footprint.base + wallTop + nearest * slope);
     for (float &r : reach) r *= overhang / nearest;
@@ -373,7 +379,8 @@ Mesh shedRoof(const Eaves &eaves, float slope, size_t lowEdge) {
     float eavesZ = footprint.base + eavesAboveBase;
     Vec3f normal = normalize(-inwards * slope + kUp), along = direction(low, lowEnd);
     Mesh m;
-    addCover(m, footprint, eavesZ, heightAt, normal, UvPlane{lift(low, eavesZ + heightAt(low)), along, cross(normal, along)});
+    addCover(m, footprint, eavesZ, heightAt, normal,
+             UvPlane{lift(low, eavesZ + heightAt(low)), along, cross(normal, along)});
     forEachEdge(footprint, [&](Vec2f a, Vec2f b, float before) {
         float heightA = heightAt(a), heightB = heightAt(b);
         if (heightA == 0 && heightB == 0) return;
@@ -412,8 +419,8 @@ std::vector<RoofType> attemptOrder(RoofType type) {
 
 // Hip and mansard roofs overhang on every edge; a shed only at its low edge, its walls flush
 // with the house's; pyramids and gables work out their own.
-Attempt buildSloped(RoofType type, const RoofFootprint &footprint, float wallTop, float slope, const RoofOptions &options,
-                    std::vector<std::string> &notes) {
+Attempt buildSloped(RoofType type, const RoofFootprint &footprint, float wallTop, float slope,
+                    const RoofOptions &options, std::vector<std::string> &notes) {
     float overhang = options.overhang;
     std::optional<std::vector<size_t>> gableEdge;
     if (options.gableEdge >= 0) gableEdge = std::vector<size_t>{size_t(options.gableEdge)};
@@ -421,8 +428,8 @@ Attempt buildSloped(RoofType type, const RoofFootprint &footprint, float wallTop
     case RoofType::Hip:
         return hipRoof(eavesFor(footprint, wallTop, slope, overhang, everyEdge(footprint, overhang), notes), slope);
     case RoofType::Mansard:
-        return mansardOverFootprint(eavesFor(footprint, wallTop, slope, overhang, everyEdge(footprint, overhang), notes),
-                                    slope);
+        return mansardOverFootprint(
+            eavesFor(footprint, wallTop, slope, overhang, everyEdge(footprint, overhang), notes), slope);
     case RoofType::Pyramid: return pyramidRoof(footprint, wallTop, slope, overhang, notes);
     case RoofType::Gable: return gabledRoof(footprint, wallTop, slope, overhang, gableEdge, std::nullopt, notes);
     case RoofType::HalfHip:
@@ -432,7 +439,8 @@ Attempt buildSloped(RoofType type, const RoofFootprint &footprint, float wallTop
         // Where part of the footprint lies below the low edge's line, walls stand on that edge
         // too, and they must stay flush with the house's.
         float lowOverhang = liesBehindEdge(footprint, low) ? overhang : 0;
-        if (lowOverhang < overhang) notes.push_back("the shed's low edge is not its lowest line; built without an overhang");
+        if (lowOverhang < overhang)
+            notes.push_back("the shed's low edge is not its lowest line; built without an overhang");
         std::vector<float> reach(edgeCount(footprint), 0.0f);
         reach[low] = lowOverhang;
         return shedRoof(eavesFor(footprint, wallTop, slope, lowOverhang, reach, notes), slope, low);
@@ -445,7 +453,8 @@ Attempt buildSloped(RoofType type, const RoofFootprint &footprint, float wallTop
 void checkArguments(const RoofFootprint &footprint, const RoofOptions &options) {
     if (!isValid(footprint)) {
         throw std::invalid_argument(
-            "a roof footprint needs a simple counter-clockwise outline with simple clockwise holes inside it and apart");
+            "a roof footprint needs a simple counter-clockwise outline with simple clockwise holes inside it and "
+            "apart");
     }
     if (options.type != RoofType::Flat && !(options.pitchDegrees > 0 && options.pitchDegrees < 90)) {
         throw std::invalid_argument(fmt::format("a roof pitch of {}° is not between 0° and 90°", options.pitchDegrees));
@@ -460,10 +469,10 @@ void checkArguments(const RoofFootprint &footprint, const RoofOptions &options) 
         throw std::invalid_argument(fmt::format("the footprint has no edge {}", options.gableEdge));
     }
     if (!(options.halfHipFraction > 0 && options.halfHipFraction < 1)) {
-        throw std::invalid_argument(fmt::format("a half-hip fraction of {} is not between 0 and 1", options.halfHipFraction));
+        throw std::invalid_argument(
+            fmt::format("a half-hip fraction of {} is not between 0 and 1", options.halfHipFraction));
     }
 }
-
 
 }  // namespace
 

@@ -28,9 +28,9 @@ inline constexpr RoofType kRoofTypes[] = {RoofType::Flat,  RoofType::Hip,     Ro
 
 struct RoofOptions {
     RoofType type = RoofType::Hip;
-    float pitchDegrees = 40;    // the slopes' angle; a flat roof ignores it
-    float overhang = 0;         // metres the eaves reach beyond the walls (see buildRoof)
-    float parapetHeight = 0.8f; // a flat roof's parapet, 0 for none
+    float pitchDegrees = 40;     // the slopes' angle; a flat roof ignores it
+    float overhang = 0;          // metres the eaves reach beyond the walls (see buildRoof)
+    float parapetHeight = 0.8f;  // a flat roof's parapet, 0 for none
     // Shed: the low edge; gable and half-hip: the one edge to carry the gable end. −1: the
     // longest edge for a shed, every end of a ridge for a gable or half-hip (roof_gables.h).
     // An index into `outer`'s edges.
@@ -51,7 +51,7 @@ struct RoofResult {
 // always can.
 inline constexpr float kParapetThickness = 0.3f;  // halved until it fits, at most kParapetHalvings times
 inline constexpr int kParapetHalvings = 4;
-inline constexpr float kMansardInset = 2;         // the mansard's slope reaches this far in (roofs.h)
+inline constexpr float kMansardInset = 2;            // the mansard's slope reaches this far in (roofs.h)
 inline constexpr float kMinShedWallHeight = 0.001f;  // lower shed walls are left out
 
 std::string_view roofTypeName(RoofType type);
@@ -67,9 +67,9 @@ std::optional<RoofType> roofTypeFromName(std::string_view name);
 // the wall tops at eavesHeight. Hip, mansard and flat roofs overhang on every edge; a shed on
 // its low edge only; a gable or half-hip everywhere but its gable ends, whose walls stand
 // flush with the house's (and run down past the wall tops to the lowered eaves); a pyramid's
-// shallower faces reach out farther, so that all its eaves are lowered alike. Throws std::invalid_argument for a footprint that breaks the rules
-// above, a pitch outside (0°, 90°) on a sloped type, a negative overhang or parapet, or a
-// gableEdge that is no edge of `outer`, or a halfHipFraction outside (0, 1).
+// shallower faces reach out farther, so that all its eaves are lowered alike. Throws std::invalid_argument for a
+// footprint that breaks the rules above, a pitch outside (0°, 90°) on a sloped type, a negative overhang or parapet, or
+// a gableEdge that is no edge of `outer`, or a halfHipFraction outside (0, 1).
 RoofResult buildRoof(const RoofFootprint &footprint, float eavesHeight, const RoofOptions &options);
 
 }  // namespace veduta

@@ -111,8 +111,8 @@ std::variant<Mesh, std::string> roofMesh(const SkeletonRoof &roof) {
         size_t trianglesBefore = m.triangleCount();
         addProjectedFace(m, {corners}, normal, slopeUvPlane(corners), RoofCovering);
         if (m.triangleCount() - trianglesBefore != corners.size() - 2) {
-            return fmt::format("the roof face of edge ({} {}) – ({} {}) does not triangulate", edge.start.x, edge.start.y,
-                               edge.end.x, edge.end.y);
+            return fmt::format("the roof face of edge ({} {}) – ({} {}) does not triangulate", edge.start.x,
+                               edge.start.y, edge.end.x, edge.end.y);
         }
     }
     return m;

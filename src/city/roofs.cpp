@@ -12,9 +12,7 @@ namespace {
 // narrower than a centimetre is float noise, not a roof.
 constexpr float kMinTopEdgeLength = 0.01f;
 
-void addSlope(Mesh &m, const std::vector<Vec3f> &corners) {
-    addFace(m, corners, slopeUvPlane(corners), RoofCovering);
-}
+void addSlope(Mesh &m, const std::vector<Vec3f> &corners) { addFace(m, corners, slopeUvPlane(corners), RoofCovering); }
 
 // A horizontal polygon facing up, u = x and v = y in metres.
 void addFlatTop(Mesh &m, const std::vector<Vec2f> &outline, float z) {
@@ -65,7 +63,8 @@ MansardRoof mansardRoof(const Footprint &footprint, float eavesHeight, float roo
     float eavesZ = footprint.base + eavesHeight;
     for (int halvings = 0; inset > 0 && halvings <= kMansardInsetHalvings; ++halvings, inset /= 2) {
         std::vector<Vec2f> top = offsetPolygon(footprint.points, -inset);
-        if (isValidTop(footprint, top)) return slopedMansard(footprint, std::move(top), inset, eavesZ, eavesZ + roofHeight);
+        if (isValidTop(footprint, top))
+            return slopedMansard(footprint, std::move(top), inset, eavesZ, eavesZ + roofHeight);
     }
     MansardRoof flat{{}, 0, footprint.points};
     addFlatTop(flat.mesh, flat.top, eavesZ);

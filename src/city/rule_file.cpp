@@ -20,7 +20,6 @@ constexpr float kProbabilitySumTolerance = 1e-4f;
 
 constexpr const char *kWhiteSpace = " \t\r\n";
 
-
 std::optional<float> parseFloat(std::string_view text) {
     float value = 0;
     auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
@@ -63,9 +62,10 @@ Extent readExtent(const XmlElement &e, const char *attribute) {
     }
     std::optional<float> value = parseFloat(number);
     if (!value) {
-        e.failAt(attribute, fmt::format("'{}' is not a size: give metres ('4'), a share ('1r') or a floating "
-                                        "repeat size ('~2.1')",
-                                        text));
+        e.failAt(attribute,
+                 fmt::format("'{}' is not a size: give metres ('4'), a share ('1r') or a floating "
+                             "repeat size ('~2.1')",
+                             text));
     }
     if (*value <= 0) e.failAt(attribute, fmt::format("size '{}' is not positive", text));
     extent.value = *value;
@@ -165,7 +165,8 @@ class RuleSetReader {
 
     void readDocument(const XmlDocument &doc, const std::filesystem::path &baseDirectory, int depth) {
         XmlElement root(doc, doc.root());
-        if (root.name() != "Rulefile") root.fail(fmt::format("the root element is <{}>, expected <Rulefile>", root.name()));
+        if (root.name() != "Rulefile")
+            root.fail(fmt::format("the root element is <{}>, expected <Rulefile>", root.name()));
         std::string name = root.string("name");
         if (depth == 0) set_.name = name;
         // The schema references of Bilke's files are accepted and mean nothing to us.
@@ -324,10 +325,12 @@ class RuleSetReader {
     void normaliseProbabilities(Rule &rule) {
         float sum = 0;
         for (const Branch &b : rule.branches) sum += b.probability;
-        if (sum == 0) throw InputError(rule.loc, fmt::format("the probabilities of rule '{}' are all 0", rule.predecessor));
+        if (sum == 0)
+            throw InputError(rule.loc, fmt::format("the probabilities of rule '{}' are all 0", rule.predecessor));
         if (std::abs(sum - 1) > kProbabilitySumTolerance) {
-            warn(rule.loc, fmt::format("the probabilities of rule '{}' sum to {}, not 1; they are scaled to sum to 1",
-                                       rule.predecessor, sum));
+            warn(rule.loc,
+                 fmt::format("the probabilities of rule '{}' sum to {}, not 1; they are scaled to sum to 1",
+                             rule.predecessor, sum));
         }
         for (Branch &b : rule.branches) b.probability /= sum;
     }
@@ -335,8 +338,9 @@ class RuleSetReader {
     void addRule(Rule rule) {
         auto [it, added] = set_.ruleIndex.try_emplace(rule.predecessor, uint32_t(set_.rules.size()));
         if (!added) {
-            throw InputError(rule.loc, fmt::format("rule '{}' is defined twice: first at {}", rule.predecessor,
-                                                   set_.rules[it->second].loc.toString()));
+            throw InputError(rule.loc,
+                             fmt::format("rule '{}' is defined twice: first at {}", rule.predecessor,
+                                         set_.rules[it->second].loc.toString()));
         }
         set_.rules.push_back(std::move(rule));
     }
@@ -354,8 +358,8 @@ class RuleSetReader {
 // Which rules can derive into models alone, and, for those that cannot, why.
 class TerminationCheck {
   public:
-    TerminationCheck(const RuleSet &set, const IsModelName &isModel)
-        : set_(set), isModel_(isModel), finishes_(set.rules.size(), false) {
+    TerminationCheck(const RuleSet &set, const IsModelName &isModel) :
+        set_(set), isModel_(isModel), finishes_(set.rules.size(), false) {
         findFinishingRules();
     }
 
@@ -443,9 +447,10 @@ class TerminationCheck {
         }
         std::string path = rule.predecessor;
         for (size_t k = 1; k < cycle.size(); ++k) path += fmt::format(" → {}", set_.rules[cycle[k]].predecessor);
-        return fmt::format("rule '{}' can never finish: every branch derives a rule that cannot finish, round the "
-                           "cycle {}",
-                           rule.predecessor, path);
+        return fmt::format(
+            "rule '{}' can never finish: every branch derives a rule that cannot finish, round the "
+            "cycle {}",
+            rule.predecessor, path);
     }
 
     const RuleSet &set_;
@@ -458,8 +463,8 @@ RuleSet RuleSetReader::finish() && {
         for (const Branch &b : rule.branches) {
             for (const Successor &s : b.successors) {
                 if (!set_.find(s.name) && !isModel_(s.name)) {
-                    throw InputError(s.loc, fmt::format("unknown symbol '{}': no rule derives it and it is not a model",
-                                                        s.name));
+                    throw InputError(
+                        s.loc, fmt::format("unknown symbol '{}': no rule derives it and it is not a model", s.name));
                 }
             }
         }
@@ -476,8 +481,7 @@ RuleSet readRuleFile(const std::filesystem::path &file, const IsModelName &isMod
     return std::move(reader).finish();
 }
 
-RuleSet parseRuleFile(std::string xmlText, std::string name, const IsModelName &isModel,
-                      const RuleFileLimits &limits) {
+RuleSet parseRuleFile(std::string xmlText, std::string name, const IsModelName &isModel, const RuleFileLimits &limits) {
     RuleSetReader reader(isModel, limits);
     reader.readTopLevel(XmlDocument::fromString(std::move(xmlText), std::move(name)), {});
     return std::move(reader).finish();

@@ -22,8 +22,7 @@ struct RuleFileLimits {
 // Reads `file` and the files it includes, then checks the whole set: every successor is a
 // rule's predecessor or a model, and every rule can finish. Throws InputError; what is only
 // suspicious goes to RuleSet::warnings.
-RuleSet readRuleFile(const std::filesystem::path &file, const IsModelName &isModel,
-                     const RuleFileLimits &limits = {});
+RuleSet readRuleFile(const std::filesystem::path &file, const IsModelName &isModel, const RuleFileLimits &limits = {});
 // The same for rules held in memory (tests, built-in text): `name` is what messages call the
 // text, and its includes resolve relative to the current directory.
 RuleSet parseRuleFile(std::string xmlText, std::string name, const IsModelName &isModel,

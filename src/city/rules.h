@@ -35,12 +35,12 @@ struct Extent {
 struct Successor {
     std::string name;  // trimmed; terminals keep their ".wrl"
     FileLoc loc;
-    Extent size;              // along the split axis; unused in substitutions and repeats
-    std::string property;     // a setting that multiplies an absolute size (or a repeat's)
+    Extent size;                         // along the split axis; unused in substitutions and repeats
+    std::string property;                // a setting that multiplies an absolute size (or a repeat's)
     std::optional<std::string> texture;  // '/' separated, relative to the textures folder
-    Vec3f scale{1.0f};        // (right, up, out)
-    Vec3f translate{0.0f};    // metres, (right, up, out); +out points away from the wall
-    std::optional<Vec2f> uv;  // texture tiles are uv × their size: "0.5 0.5" tiles twice as often
+    Vec3f scale{1.0f};                   // (right, up, out)
+    Vec3f translate{0.0f};               // metres, (right, up, out); +out points away from the wall
+    std::optional<Vec2f> uv;             // texture tiles are uv × their size: "0.5 0.5" tiles twice as often
     ZScale zScale = ZScale::NotSet;
 };
 

@@ -48,9 +48,8 @@ std::optional<Skeleton> skeletonOf(const Block &block) {
         // The face's halfedge runs along its block edge; the skeleton keeps the block's points.
         auto edge = face->halfedge();
         const SkeletonKernel::Point_2 &start = edge->opposite()->vertex()->point();
-        auto index = std::find_if(block.points.begin(), block.points.end(), [&](Vec2f p) {
-            return double(p.x) == start.x() && double(p.y) == start.y();
-        });
+        auto index = std::find_if(block.points.begin(), block.points.end(),
+                                  [&](Vec2f p) { return double(p.x) == start.x() && double(p.y) == start.y(); });
         if (index == block.points.end()) return std::nullopt;
         size_t i = size_t(index - block.points.begin());
         result.faces[i].push_back(ExactPoint(start.x(), start.y()));
@@ -104,8 +103,8 @@ double interiorAngleDegrees(const Block &block, size_t point) {
 
 class SkeletonStrips {
   public:
-    SkeletonStrips(const Block &block, float minBuildingLength, Skeleton skeleton)
-        : block_(block), skeleton_(std::move(skeleton)), strips_(block.points.size()) {
+    SkeletonStrips(const Block &block, float minBuildingLength, Skeleton skeleton) :
+        block_(block), skeleton_(std::move(skeleton)), strips_(block.points.size()) {
         std::vector<bool> carries = stripEdges(block, minBuildingLength);
         for (size_t e = 0; e < strips_.size(); ++e) {
             if (!carries[e]) continue;
@@ -185,8 +184,8 @@ class SkeletonStrips {
 class StripCutter {
   public:
     StripCutter(const Block &block, const LotSettings &settings, uint32_t seed, uint32_t blockId,
-                const std::optional<FileLoc> &loc)
-        : block_(block), settings_(settings), seed_(seed), blockId_(blockId), loc_(loc) {}
+                const std::optional<FileLoc> &loc) :
+        block_(block), settings_(settings), seed_(seed), blockId_(blockId), loc_(loc) {}
 
     void cut(const Strip &strip, size_t edge) {
         std::vector<Piece> rest;
@@ -199,13 +198,14 @@ class StripCutter {
         double dx = (double(end.x) - start.x) / length, dy = (double(end.y) - start.y) / length;
         uint32_t draws = 0;
         for (double at = strip.from;;) {
-            uint32_t key = hashValues(
-                {seed_, blockId_, streamTag(RandomStream::LotSkeletonFrontage), uint32_t(edge), draws++});
+            uint32_t key =
+                hashValues({seed_, blockId_, streamTag(RandomStream::LotSkeletonFrontage), uint32_t(edge), draws++});
             at += lots::normalBetween(settings_.minBuildingLength, settings_.maxBuildingLength, key);
             if (strip.to - at < settings_.minBuildingLength) break;
             if (++cuts_ >= kMaxLotsPerBlock) {
-                lots::fail(loc_, fmt::format("block {} would be cut into more than {} skeleton lots (MinBuildingLength {} m)",
-                                             blockId_, kMaxLotsPerBlock, settings_.minBuildingLength));
+                lots::fail(loc_,
+                           fmt::format("block {} would be cut into more than {} skeleton lots (MinBuildingLength {} m)",
+                                       blockId_, kMaxLotsPerBlock, settings_.minBuildingLength));
             }
             lots::CutLine across{{float(start.x + dx * at), float(start.y + dy * at)}, -dy, dx};
             std::vector<Piece> beyond;

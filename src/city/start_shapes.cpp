@@ -8,8 +8,8 @@ namespace {
 
 // The longest street edge, or the longest edge when no edge faces a street.
 size_t frontEdge(const Footprint &footprint) {
-    bool anyStreet = std::find(footprint.streetEdges.begin(), footprint.streetEdges.end(), true) !=
-                     footprint.streetEdges.end();
+    bool anyStreet =
+        std::find(footprint.streetEdges.begin(), footprint.streetEdges.end(), true) != footprint.streetEdges.end();
     size_t front = footprint.edgeCount();
     for (size_t e = 0; e < footprint.edgeCount(); ++e) {
         if (anyStreet && !footprint.streetEdges[e]) continue;

@@ -81,7 +81,7 @@ StreetNetwork streetsNear(const std::vector<Vec2f> &outline, const StreetNetwork
         Vec2f a = network.nodes[s.from], b = network.nodes[s.to];
         float reach = s.width / 2 + extra;
         bool apart = std::min(a.x, b.x) - reach > high.x || std::max(a.x, b.x) + reach < low.x ||
-                     std::min(a.y, b.y) - reach > high.y || std::max(a.y, b.y) + reach < low.y;
+            std::min(a.y, b.y) - reach > high.y || std::max(a.y, b.y) + reach < low.y;
         if (!apart) near.streets.push_back(s);
     }
     return near;
@@ -197,7 +197,8 @@ PolygonSet junctionArea(const StreetNetwork &network, const PolygonSet &carriage
     std::vector<int> streetsAt(network.nodes.size(), 0);
     std::vector<float> widestHalf(network.nodes.size(), 0.0f);
     for (const StreetNetwork::Street &s : network.streets) {
-        if (network.nodes[s.from].x == network.nodes[s.to].x && network.nodes[s.from].y == network.nodes[s.to].y) continue;
+        if (network.nodes[s.from].x == network.nodes[s.to].x && network.nodes[s.from].y == network.nodes[s.to].y)
+            continue;
         for (uint32_t node : {s.from, s.to}) {
             ++streetsAt[node];
             widestHalf[node] = std::max(widestHalf[node], s.width / 2);

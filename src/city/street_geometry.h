@@ -39,8 +39,8 @@ inline constexpr int kStreetJointSides = 16;
 inline constexpr float kJunctionReach = 1.4142f;
 
 // One mesh: the carriageway at height + lift, its junctions apart (StreetJunction, the same
-// height), the sidewalks at height + lift + kerbHeight, the kerbs between; normals up (kerbs: towards the road), texture coordinates in metres (x, y).
-// Streets of zero length are skipped.
+// height), the sidewalks at height + lift + kerbHeight, the kerbs between; normals up (kerbs: towards the road),
+// texture coordinates in metres (x, y). Streets of zero length are skipped.
 Mesh streetGeometry(const StreetNetwork &network, const StreetStyle &style = {});
 
 // The street area (carriageways and sidewalks) as overlapping pieces whose union it is: every

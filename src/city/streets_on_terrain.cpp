@@ -49,11 +49,11 @@ class BoxIndex {
 // A street's strip: its carriageway and sidewalks, from node `from` along d for `length`.
 struct Strip {
     uint32_t from = 0, to = 0;
-    Vec2d start, d, n;  // n = up × d
+    Vec2d start, d, n;            // n = up × d
     double length = 0, half = 0;  // half: of carriageway and sidewalks
     double roadHalf = 0;          // of the carriageway
-    std::vector<double> cuts;    // distances along where the height may change slope; empty: level throughout
-    std::vector<uint32_t> vars;  // the height variable at each cut (the first and last: the end nodes' platforms)
+    std::vector<double> cuts;     // distances along where the height may change slope; empty: level throughout
+    std::vector<uint32_t> vars;   // the height variable at each cut (the first and last: the end nodes' platforms)
 
     Vec2d at(double t, double s) const { return start + t * d + s * n; }
 };
@@ -69,8 +69,8 @@ double overlapReach(Vec2d d, double half, Vec2d e, double other) {
 
 class StreetHeights {
   public:
-    StreetHeights(const StreetNetwork &network, const TerrainSurface &terrain, const StreetStyle &style)
-        : network_(network), terrain_(terrain), group_(network.nodes.size()) {
+    StreetHeights(const StreetNetwork &network, const TerrainSurface &terrain, const StreetStyle &style) :
+        network_(network), terrain_(terrain), group_(network.nodes.size()) {
         makeStrips(style);
         platformRadii();
         mergePlatforms();
@@ -157,7 +157,8 @@ class StreetHeights {
             double r = 0, joint = jointRadius_[n];
             for (const End &a : ends[n]) {
                 r = std::max(r, std::sqrt(std::max(0.0, joint * joint - a.half * a.half)));
-                if (ends[n].size() >= 3) r = std::max(r, kJunctionReach * a.roadHalf / std::cos(kPi / kStreetJointSides));
+                if (ends[n].size() >= 3)
+                    r = std::max(r, kJunctionReach * a.roadHalf / std::cos(kPi / kStreetJointSides));
                 for (const End &b : ends[n])
                     if (&a != &b) r = std::max(r, overlapReach(a.d, a.half, b.d, b.half));
             }
@@ -304,9 +305,7 @@ PlanVertex crossing(const PlanVertex &a, double fa, const PlanVertex &b, double 
 // line misses it).
 void splitBy(const PlanPolygon &polygon, const std::array<Vec2d, 2> &line, std::vector<PlanPolygon> &out) {
     Vec2d d = line[1] - line[0];
-    auto side = [&](const PlanVertex &v) {
-        return d.x * (v.y - line[0].y) - d.y * (v.x - line[0].x);
-    };
+    auto side = [&](const PlanVertex &v) { return d.x * (v.y - line[0].y) - d.y * (v.x - line[0].x); };
     std::vector<double> f;
     bool below = false, above = false;
     for (const PlanVertex &v : polygon) {

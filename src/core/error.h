@@ -17,8 +17,8 @@ struct FileLoc {
 
 class InputError : public std::runtime_error {
   public:
-    InputError(const FileLoc &loc, const std::string &message)
-        : std::runtime_error(loc.toString() + ": " + message), loc_(loc), message_(message) {}
+    InputError(const FileLoc &loc, const std::string &message) :
+        std::runtime_error(loc.toString() + ": " + message), loc_(loc), message_(message) {}
     const FileLoc &loc() const { return loc_; }
     // What is wrong, without the place: for a caller that knows the place better.
     const std::string &message() const { return message_; }

@@ -14,9 +14,13 @@ std::string formatDuration(double seconds) {
     return fmt::format("{}h{:02}m", s / 3600, (s % 3600) / 60);
 }
 
-Progress::Progress(std::string stage, uint64_t total, std::string unit, bool enabled)
-    : stage_(std::move(stage)), unit_(std::move(unit)), total_(total), enabled_(enabled && isatty(STDERR_FILENO)),
-      start_(std::chrono::steady_clock::now()), lastDraw_(start_) {}
+Progress::Progress(std::string stage, uint64_t total, std::string unit, bool enabled) :
+    stage_(std::move(stage)),
+    unit_(std::move(unit)),
+    total_(total),
+    enabled_(enabled && isatty(STDERR_FILENO)),
+    start_(std::chrono::steady_clock::now()),
+    lastDraw_(start_) {}
 
 Progress::~Progress() { finish(); }
 

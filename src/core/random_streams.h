@@ -14,21 +14,21 @@ namespace veduta {
 enum class RandomStream : uint32_t {
     // The sampler: pixel seeds hash the seed times this odd tag (a bijection that keeps 0, and
     // with it every image rendered with seed 0 before the tag), not the tag as an input.
-    Sampler = 0x50495853u,             // "PIXS": a pixel's Sobol scrambles (render/sampler.h)
-    RuleBranches = 0x52554c45u,        // "RULE": the branch a rule takes in a building
-    RuleFileChoice = 0x52554c46u,      // "RULF": which of a city's rule files builds a lot
-    BuildingHeights = 0x48454947u,     // "HEIG": a building's height, floor and roof heights within their Var
-    MaterialPalette = 0x4d41544cu,     // "MATL": a building's material of each category
-    RoofChoice = 0x524f4f46u,          // "ROOF": the roof type drawn from a RoofType list
-    LotHousingDensity = 0x6c6f7473u,   // "lots": whether a lot is kept (HousingDensity)
+    Sampler = 0x50495853u,               // "PIXS": a pixel's Sobol scrambles (render/sampler.h)
+    RuleBranches = 0x52554c45u,          // "RULE": the branch a rule takes in a building
+    RuleFileChoice = 0x52554c46u,        // "RULF": which of a city's rule files builds a lot
+    BuildingHeights = 0x48454947u,       // "HEIG": a building's height, floor and roof heights within their Var
+    MaterialPalette = 0x4d41544cu,       // "MATL": a building's material of each category
+    RoofChoice = 0x524f4f46u,            // "ROOF": the roof type drawn from a RoofType list
+    LotHousingDensity = 0x6c6f7473u,     // "lots": whether a lot is kept (HousingDensity)
     LotPerimeterFrontage = 0x4c504552u,  // "LPER": the frontages of perimeter lots along a block's street
-    LotRecursiveSplit = 0x4c524543u,   // "LREC": where the recursive and OBB subdivisions cut (the root key)
-    LotObbTurned = 0x4f424254u,        // "OBBT": the OBB subdivision's retry across the shorter axis
-    LotSkeletonFrontage = 0x4c534b45u,  // "LSKE": the frontages of straight-skeleton strips
-    TreeModel = 0x5452454du,           // "TREM": the key of a tree prototype (kind, variant)
-    TreeRewrite = 1,                   // a tree's L-system productions (under its TreeModel key)
-    TreeTurtle = 2,                    // a tree's angle, length and width jitter (under its TreeModel key)
-    TreePlacement = 0x54524550u,       // "TREP": a tree's place, kind, variant, size and turn in its object
+    LotRecursiveSplit = 0x4c524543u,     // "LREC": where the recursive and OBB subdivisions cut (the root key)
+    LotObbTurned = 0x4f424254u,          // "OBBT": the OBB subdivision's retry across the shorter axis
+    LotSkeletonFrontage = 0x4c534b45u,   // "LSKE": the frontages of straight-skeleton strips
+    TreeModel = 0x5452454du,             // "TREM": the key of a tree prototype (kind, variant)
+    TreeRewrite = 1,                     // a tree's L-system productions (under its TreeModel key)
+    TreeTurtle = 2,                      // a tree's angle, length and width jitter (under its TreeModel key)
+    TreePlacement = 0x54524550u,         // "TREP": a tree's place, kind, variant, size and turn in its object
 
     // Identities: not random, but hashed like the draws and kept apart from them.
     CityDataBlock = 0x4344424bu,  // "CDBK": a CityData block, from the ids of its outline's points
@@ -41,13 +41,27 @@ enum class RandomStream : uint32_t {
 };
 
 inline constexpr RandomStream kAllRandomStreams[] = {
-    RandomStream::Sampler,         RandomStream::RuleBranches,         RandomStream::RuleFileChoice,
-    RandomStream::BuildingHeights, RandomStream::MaterialPalette,      RandomStream::RoofChoice,
-    RandomStream::LotHousingDensity, RandomStream::LotPerimeterFrontage, RandomStream::LotRecursiveSplit,
-    RandomStream::LotObbTurned,    RandomStream::LotSkeletonFrontage,  RandomStream::TreeModel,
-    RandomStream::TreeRewrite,     RandomStream::TreeTurtle,           RandomStream::TreePlacement,
-    RandomStream::CityDataBlock,   RandomStream::CityDataLot,          RandomStream::OsmWay,
-    RandomStream::OsmRelation,     RandomStream::CutLot,               RandomStream::CityBuilding,
+    RandomStream::Sampler,
+    RandomStream::RuleBranches,
+    RandomStream::RuleFileChoice,
+    RandomStream::BuildingHeights,
+    RandomStream::MaterialPalette,
+    RandomStream::RoofChoice,
+    RandomStream::LotHousingDensity,
+    RandomStream::LotPerimeterFrontage,
+    RandomStream::LotRecursiveSplit,
+    RandomStream::LotObbTurned,
+    RandomStream::LotSkeletonFrontage,
+    RandomStream::TreeModel,
+    RandomStream::TreeRewrite,
+    RandomStream::TreeTurtle,
+    RandomStream::TreePlacement,
+    RandomStream::CityDataBlock,
+    RandomStream::CityDataLot,
+    RandomStream::OsmWay,
+    RandomStream::OsmRelation,
+    RandomStream::CutLot,
+    RandomStream::CityBuilding,
     RandomStream::AtkisGeometry,
 };
 

@@ -11,7 +11,8 @@ namespace veduta {
 
 class RgbaImage {
   public:
-    RgbaImage(int width, int height) : width_(width), height_(height), pixels_(size_t(width) * size_t(height) * 4, 0.0f) {}
+    RgbaImage(int width, int height) :
+        width_(width), height_(height), pixels_(size_t(width) * size_t(height) * 4, 0.0f) {}
 
     int width() const { return width_; }
     int height() const { return height_; }

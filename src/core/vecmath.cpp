@@ -25,7 +25,7 @@ Transform operator*(const Transform &a, const Transform &b) {
 
 float Transform::determinant() const {
     return m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) +
-           m[2] * (m[4] * m[9] - m[5] * m[8]);
+        m[2] * (m[4] * m[9] - m[5] * m[8]);
 }
 
 Transform Transform::inverse() const {
@@ -41,8 +41,7 @@ Transform Transform::inverse() const {
     r.m[9] = (m[1] * m[8] - m[0] * m[9]) * inv;
     r.m[10] = (m[0] * m[5] - m[1] * m[4]) * inv;
     for (int row = 0; row < 3; ++row) {
-        r.m[row * 4 + 3] =
-            -(r.m[row * 4 + 0] * m[3] + r.m[row * 4 + 1] * m[7] + r.m[row * 4 + 2] * m[11]);
+        r.m[row * 4 + 3] = -(r.m[row * 4 + 0] * m[3] + r.m[row * 4 + 1] * m[7] + r.m[row * 4 + 2] * m[11]);
     }
     return r;
 }

@@ -35,9 +35,24 @@ struct Vec3f {
     float &operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }
 
     Vec3f operator-() const { return {-x, -y, -z}; }
-    Vec3f &operator+=(const Vec3f &o) { x += o.x; y += o.y; z += o.z; return *this; }
-    Vec3f &operator*=(const Vec3f &o) { x *= o.x; y *= o.y; z *= o.z; return *this; }
-    Vec3f &operator*=(float s) { x *= s; y *= s; z *= s; return *this; }
+    Vec3f &operator+=(const Vec3f &o) {
+        x += o.x;
+        y += o.y;
+        z += o.z;
+        return *this;
+    }
+    Vec3f &operator*=(const Vec3f &o) {
+        x *= o.x;
+        y *= o.y;
+        z *= o.z;
+        return *this;
+    }
+    Vec3f &operator*=(float s) {
+        x *= s;
+        y *= s;
+        z *= s;
+        return *this;
+    }
     bool operator==(const Vec3f &) const = default;
 };
 
@@ -60,9 +75,7 @@ inline Vec3f cross(const Vec3f &a, const Vec3f &b) {
 inline float length(const Vec3f &a) { return std::sqrt(dot(a, a)); }
 inline Vec3f normalize(const Vec3f &a) { return a / length(a); }
 inline float maxComponent(const Vec3f &a) { return std::max(a.x, std::max(a.y, a.z)); }
-inline Vec3f faceForward(const Vec3f &n, const Vec3f &towards) {
-    return dot(n, towards) < 0 ? -n : n;
-}
+inline Vec3f faceForward(const Vec3f &n, const Vec3f &towards) { return dot(n, towards) < 0 ? -n : n; }
 
 // An orthonormal basis around a unit normal (Duff et al. 2017, "Building an Orthonormal
 // Basis, Revisited"): branch-free and continuous except at one pole.
@@ -84,9 +97,7 @@ struct Frame {
 struct Transform {
     std::array<float, 12> m{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
 
-    static Transform translate(const Vec3f &t) {
-        return {{1, 0, 0, t.x, 0, 1, 0, t.y, 0, 0, 1, t.z}};
-    }
+    static Transform translate(const Vec3f &t) { return {{1, 0, 0, t.x, 0, 1, 0, t.y, 0, 0, 1, t.z}}; }
     static Transform scale(const Vec3f &s) { return {{s.x, 0, 0, 0, 0, s.y, 0, 0, 0, 0, s.z, 0}}; }
     // Rotation about a coordinate axis (0 = x, 1 = y, 2 = z), counter-clockwise seen from +axis.
     static Transform rotate(int axis, float degrees);

@@ -26,9 +26,10 @@ MaterialCategory readCategory(const XmlElement &e) {
     for (const auto &[text, category] : kCategories) {
         if (name == text) return category;
     }
-    e.failAt("category", fmt::format("unknown material category '{}' (facade, roof, material, door, wall, window, "
-                                     "reflection)",
-                                     name));
+    e.failAt("category",
+             fmt::format("unknown material category '{}' (facade, roof, material, door, wall, window, "
+                         "reflection)",
+                         name));
 }
 
 // `<kind>_map="file"` with an optional `<kind>_map_colorspace`. Colour maps default to the

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <vector>
 
-#include "io/xml_reader.h"
 #include "description/scene_description.h"
+#include "io/xml_reader.h"
 
 namespace veduta {
 

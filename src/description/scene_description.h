@@ -9,9 +9,9 @@
 
 #include "core/error.h"
 #include "description/settings_map.h"
+#include "geodesy/georeference.h"
 #include "scene/camera.h"
 #include "scene/environment.h"
-#include "geodesy/georeference.h"
 #include "scene/material.h"
 #include "scene/render_settings.h"
 #include "scene/shapes.h"
@@ -38,7 +38,7 @@ struct GeometryDesc {
     FileLoc meshCrsLoc;
     Transform transform;
     NameRef material;
-    uint32_t objectId = 0;  // 0 inside prototypes: their instances carry the id
+    uint32_t objectId = 0;    // 0 inside prototypes: their instances carry the id
     uint32_t buildingId = 0;  // the building it is part of; 0: none (and inside prototypes)
 };
 
@@ -166,8 +166,8 @@ struct LandscapeDesc {
     bool fillNoData = true;            // nodata="fill" (a warning) or "cut" (holes stay open)
     float simplify = 0;                // the largest height error of a simplified mesh; 0: full resolution
     bool trees = true;
-    uint32_t treeBudget = 500000;      // more trees than this is an error
-    std::optional<uint32_t> seed;      // with each object's identity, every random choice; unset: the scene's
+    uint32_t treeBudget = 500000;  // more trees than this is an error
+    std::optional<uint32_t> seed;  // with each object's identity, every random choice; unset: the scene's
     uint32_t objectId = 0;
 };
 

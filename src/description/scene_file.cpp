@@ -8,10 +8,10 @@
 
 #include <fmt/format.h>
 
-#include "geodesy/crs.h"
-#include "io/xml_reader.h"
 #include "description/material_file.h"
 #include "description/scene_description.h"
+#include "geodesy/crs.h"
+#include "io/xml_reader.h"
 
 namespace veduta {
 
@@ -28,8 +28,8 @@ bool parsesAsCivilTime(std::string_view date, std::string_view time, std::string
 
 class SceneFileReader {
   public:
-    SceneFileReader(const XmlDocument &doc, std::filesystem::path baseDirectory)
-        : doc_(doc), baseDirectory_(std::move(baseDirectory)) {}
+    SceneFileReader(const XmlDocument &doc, std::filesystem::path baseDirectory) :
+        doc_(doc), baseDirectory_(std::move(baseDirectory)) {}
 
     SceneDescription read() {
         XmlElement root(doc_, doc_.root());
@@ -135,9 +135,9 @@ class SceneFileReader {
             t.time = parseCivilTime(date, time, offset);
         } catch (const std::invalid_argument &error) {
             // Point at the part that is wrong: each is tried with known-good others.
-            const char *culprit = !parsesAsCivilTime(date, "00:00", "Z")         ? "date"
-                                  : !parsesAsCivilTime("2000-01-01", time, "Z") ? "time"
-                                                                                : "utc_offset";
+            const char *culprit = !parsesAsCivilTime(date, "00:00", "Z") ? "date"
+                : !parsesAsCivilTime("2000-01-01", time, "Z")            ? "time"
+                                                                         : "utc_offset";
             e.failAt(culprit, error.what());
         }
         if (e.has("latitude") != e.has("longitude")) e.fail("give the sun both 'latitude' and 'longitude'");
@@ -178,7 +178,7 @@ class SceneFileReader {
         std::string crs = e.string(attribute);
         int epsg = 0;
         bool epsgForm = crs.rfind("EPSG:", 0) == 0 && crs.size() >= 6 &&
-                        crs.find_first_not_of("0123456789", 5) == std::string::npos;
+            crs.find_first_not_of("0123456789", 5) == std::string::npos;
         if (!epsgForm) e.failAt(attribute, fmt::format("crs '{}' is not of the form EPSG:<code>", crs));
         auto [end, parseError] = std::from_chars(crs.data() + 5, crs.data() + crs.size(), epsg);
         if (parseError != std::errc() || end != crs.data() + crs.size())
@@ -253,8 +253,9 @@ class SceneFileReader {
         for (MaterialDesc &m : materials) {
             for (const MaterialDesc &other : scene_.materials) {
                 if (other.material.name == m.material.name) {
-                    throw InputError(m.loc, fmt::format("material '{}' is already defined at {}", m.material.name,
-                                                        other.loc.toString()));
+                    throw InputError(
+                        m.loc,
+                        fmt::format("material '{}' is already defined at {}", m.material.name, other.loc.toString()));
                 }
             }
             scene_.materials.push_back(std::move(m));
@@ -294,7 +295,8 @@ class SceneFileReader {
         }
         e.checkAllRead();
         for (const XmlElement &child : e.children()) {
-            if (!isGeometry(child.name())) child.fail(fmt::format("<{}> cannot stand inside <prototype>", child.name()));
+            if (!isGeometry(child.name()))
+                child.fail(fmt::format("<{}> cannot stand inside <prototype>", child.name()));
             p.parts.push_back(readGeometry(child, false));
         }
         if (p.parts.empty()) e.fail(fmt::format("prototype '{}' has no geometry", p.name));
@@ -360,7 +362,8 @@ class SceneFileReader {
         e.checkAllRead();
         for (const XmlElement &child : e.children()) {
             if (child.name() != "dgm" && child.name() != "atkis")
-                child.fail(fmt::format("<{}> cannot stand inside <landscape>; expected <dgm> or <atkis>", child.name()));
+                child.fail(
+                    fmt::format("<{}> cannot stand inside <landscape>; expected <dgm> or <atkis>", child.name()));
             DataFileDesc data;
             data.loc = child.attributeLoc("file");
             data.file = pathAttribute(child, "file");
@@ -408,8 +411,9 @@ class SceneFileReader {
         b.streetLoc = e.attributeLoc("street");
         for (float edge : e.has("street") ? e.numbers("street") : std::vector<float>{}) {
             if (edge < 0 || edge != std::floor(edge) || edge >= float(b.footprint.size()))
-                e.failAt("street", fmt::format("street edges are numbers of footprint edges, 0 to {}; {} is not one",
-                                               b.footprint.size() - 1, edge));
+                e.failAt("street",
+                         fmt::format("street edges are numbers of footprint edges, 0 to {}; {} is not one",
+                                     b.footprint.size() - 1, edge));
             b.streetEdges.push_back(uint32_t(edge));
         }
         if (e.has("base")) b.base = e.number("base", 0);
@@ -437,8 +441,8 @@ class SceneFileReader {
         SettingsMap settings;
         for (const XmlElement &child : e.children()) {
             if (child.name() != "BuildingSettings")
-                child.fail(fmt::format("<{}> cannot stand inside <{}>; expected <BuildingSettings>", child.name(),
-                                       e.name()));
+                child.fail(
+                    fmt::format("<{}> cannot stand inside <{}>; expected <BuildingSettings>", child.name(), e.name()));
             settings = readBuildingSettings(child);
         }
         return settings;
@@ -465,8 +469,10 @@ class SceneFileReader {
         } else {
             for (const char *attribute : {"id", "building"}) {
                 if (e.has(attribute)) {
-                    e.failAt(attribute, fmt::format("parts of a prototype have no {} of their own; give it to the "
-                                                    "<instance>", attribute));
+                    e.failAt(attribute,
+                             fmt::format("parts of a prototype have no {} of their own; give it to the "
+                                         "<instance>",
+                                         attribute));
                 }
             }
         }
@@ -520,7 +526,7 @@ class SceneFileReader {
         Vec3f rotate = e.vec3("rotate", {0, 0, 0});
         Vec3f translate = e.vec3("translate", {0, 0, 0});
         return Transform::translate(translate) * Transform::rotate(2, rotate.z) * Transform::rotate(1, rotate.y) *
-               Transform::rotate(0, rotate.x) * Transform::scale(scale);
+            Transform::rotate(0, rotate.x) * Transform::scale(scale);
     }
 
     static NameRef readNameRef(const XmlElement &e, const char *attribute) {
@@ -551,7 +557,8 @@ class SceneFileReader {
             for (FacadeDesc &f : group.facades) byPlace[{f.loc.line, f.loc.column}] = &f.objectId;
         }
         for (CityDesc &c : scene_.cities) byPlace[{c.loc.line, c.loc.column}] = &c.objectId;
-        if (scene_.landscape) byPlace[{scene_.landscape->loc.line, scene_.landscape->loc.column}] = &scene_.landscape->objectId;
+        if (scene_.landscape)
+            byPlace[{scene_.landscape->loc.line, scene_.landscape->loc.column}] = &scene_.landscape->objectId;
         uint32_t next = 1;
         for (auto &[place, id] : byPlace) {
             auto given = idsByPlace_.find(place);

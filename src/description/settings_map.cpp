@@ -25,7 +25,8 @@ SettingsMap readBuildingSettings(const XmlElement &element) {
         child.checkLeaf();
         auto [it, fresh] = settings.emplace(std::string(child.name()), settingValue(child.text(), child.textLoc()));
         if (!fresh)
-            child.fail(fmt::format("the setting {} is given twice (first at {})", child.name(), it->second.loc.toString()));
+            child.fail(
+                fmt::format("the setting {} is given twice (first at {})", child.name(), it->second.loc.toString()));
     }
     return settings;
 }

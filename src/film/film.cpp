@@ -11,8 +11,8 @@ FilmBuffer bufferOf(std::string name, std::vector<T> &values) {
 
 }  // namespace
 
-Film::Film(int fullWidth, int fullHeight, PixelWindow window)
-    : fullWidth_(fullWidth), fullHeight_(fullHeight), window_(window) {
+Film::Film(int fullWidth, int fullHeight, PixelWindow window) :
+    fullWidth_(fullWidth), fullHeight_(fullHeight), window_(window) {
     size_t n = window.area();
     sum_.assign(n * 3, 0.0);
     evenSum_.assign(n * 3, 0.0);
@@ -55,9 +55,9 @@ void Film::setFirstSample(size_t pixel, const FirstHit &first) {
 }
 
 std::vector<FilmBuffer> Film::buffers() {
-    return {bufferOf("radiance", sum_),       bufferOf("even radiance", evenSum_), bufferOf("normal", normalSum_),
-            bufferOf("albedo", albedoSum_),   bufferOf("samples", count_),         bufferOf("even samples", evenCount_),
-            bufferOf("depth", depth_),        bufferOf("position", position_),     bufferOf("ids", ids_)};
+    return {bufferOf("radiance", sum_),     bufferOf("even radiance", evenSum_), bufferOf("normal", normalSum_),
+            bufferOf("albedo", albedoSum_), bufferOf("samples", count_),         bufferOf("even samples", evenCount_),
+            bufferOf("depth", depth_),      bufferOf("position", position_),     bufferOf("ids", ids_)};
 }
 
 }  // namespace veduta

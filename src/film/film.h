@@ -18,11 +18,11 @@ namespace veduta {
 
 // What a camera ray met first (cut-outs are looked through, panes of glass are not).
 struct FirstHit {
-    bool hit = false;  // false: the ray left the scene, everything else is zero
-    Vec3f position;    // world space
-    Vec3f normal;      // the shading normal (normal-mapped), facing the camera, world space
-    Vec3f albedo;      // the diffuse colour k_d · diffuse map; black for glass
-    float depth = 0;   // along the camera's view axis, as Blender's Z pass
+    bool hit = false;         // false: the ray left the scene, everything else is zero
+    Vec3f position;           // world space
+    Vec3f normal;             // the shading normal (normal-mapped), facing the camera, world space
+    Vec3f albedo;             // the diffuse colour k_d · diffuse map; black for glass
+    float depth = 0;          // along the camera's view axis, as Blender's Z pass
     uint32_t objectId = 0;    // the scene file's object id
     uint32_t materialId = 0;  // 1 + the material's index in the scene (0: background)
     uint32_t buildingId = 0;  // the object's building, 0 if none

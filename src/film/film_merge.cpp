@@ -75,8 +75,9 @@ void checkSameRender(const Part &part, const Part &first) {
     const LayeredImage &a = *part.image, &b = *first.image;
     const std::string &name = *part.name, &firstName = *first.name;
     if (a.fullWidth != b.fullWidth || a.fullHeight != b.fullHeight) {
-        throw InputError(FileLoc{name}, fmt::format("is a {}x{} image, {} is {}x{}", a.fullWidth, a.fullHeight,
-                                                    firstName, b.fullWidth, b.fullHeight));
+        throw InputError(FileLoc{name},
+                         fmt::format("is a {}x{} image, {} is {}x{}", a.fullWidth, a.fullHeight, firstName, b.fullWidth,
+                                     b.fullHeight));
     }
     std::vector<std::string> channels = sortedChannelNames(a), firstChannels = sortedChannelNames(b);
     for (const std::string &c : channels) {
@@ -87,8 +88,8 @@ void checkSameRender(const Part &part, const Part &first) {
     }
     for (const char *key : {kSceneHashAttribute, kSeedAttribute}) {
         if (a.metadata.at(key) != b.metadata.at(key)) {
-            throw InputError(FileLoc{name}, fmt::format("has a different {} from {}: not the same render", key,
-                                                        firstName));
+            throw InputError(FileLoc{name},
+                             fmt::format("has a different {} from {}: not the same render", key, firstName));
         }
     }
 }
@@ -126,10 +127,10 @@ std::vector<SampleRanges> groupByWindow(const std::vector<Part> &parts) {
         for (size_t i = 1; i < group.size(); ++i) {
             const Part &before = group[i - 1], &part = group[i];
             if (part.offset < before.end()) {
-                throw InputError(FileLoc{*part.name}, fmt::format("its samples {} overlap the samples {} of {}",
-                                                                  rangeText(part.offset, part.end()),
-                                                                  rangeText(before.offset, before.end()),
-                                                                  *before.name));
+                throw InputError(
+                    FileLoc{*part.name},
+                    fmt::format("its samples {} overlap the samples {} of {}", rangeText(part.offset, part.end()),
+                                rangeText(before.offset, before.end()), *before.name));
             }
             if (part.offset > before.end()) {
                 throw InputError(FileLoc{*part.name},
@@ -161,10 +162,10 @@ PixelWindow checkTiles(const std::vector<SampleRanges> &groups) {
         for (size_t j = 0; j < i; ++j) {
             const PixelWindow &other = groups[j][0].image->dataWindow;
             if (w.overlaps(other)) {
-                throw InputError(FileLoc{*group[0].name}, fmt::format("its data window {} overlaps the data window {} "
-                                                                      "of {}",
-                                                                      windowText(w), windowText(other),
-                                                                      *groups[j][0].name));
+                throw InputError(FileLoc{*group[0].name},
+                                 fmt::format("its data window {} overlaps the data window {} "
+                                             "of {}",
+                                             windowText(w), windowText(other), *groups[j][0].name));
             }
         }
         box = {std::min(box.x0, w.x0), std::min(box.y0, w.y0), std::max(box.x1, w.x1), std::max(box.y1, w.y1)};

@@ -62,12 +62,11 @@ LayeredImage developFilm(const Film &film) {
     for (const Pass &pass : kPasses) {
         for (const char *c : pass.channels) image.addChannel(passChannel(pass.name, c));
     }
-    auto [combined, even, odd, depth, normal, albedo, position, ids, materials, buildings, instances, samples] =
-        [&] {
-            std::array<std::vector<std::vector<float> *>, std::size(kPasses)> all;
-            for (size_t i = 0; i < all.size(); ++i) all[i] = channelsOf(image, kPasses[i]);
-            return all;
-        }();
+    auto [combined, even, odd, depth, normal, albedo, position, ids, materials, buildings, instances, samples] = [&] {
+        std::array<std::vector<std::vector<float> *>, std::size(kPasses)> all;
+        for (size_t i = 0; i < all.size(); ++i) all[i] = channelsOf(image, kPasses[i]);
+        return all;
+    }();
 
     for (size_t p = 0; p < film.pixelCount(); ++p) {
         uint32_t n = film.sampleCount(p), nEven = film.evenSampleCount(p);

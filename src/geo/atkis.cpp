@@ -85,9 +85,11 @@ std::optional<Number> number(std::string_view text) {
 // Metres; a wider width attribute ("inf", a unit mistake) is unreadable and the class default holds.
 constexpr double kWidestRibbon = 200;
 
-std::optional<double> widthAttribute(const AtkisObject &object, const std::string &decimetres, const std::string &inMetres) {
+std::optional<double> widthAttribute(const AtkisObject &object, const std::string &decimetres,
+                                     const std::string &inMetres) {
     if (auto text = attribute(object, decimetres))
-        if (auto value = number<long>(*text); value && *value > 0 && *value <= 10 * kWidestRibbon) return double(*value) / 10.0;
+        if (auto value = number<long>(*text); value && *value > 0 && *value <= 10 * kWidestRibbon)
+            return double(*value) / 10.0;
     if (auto text = attribute(object, inMetres))
         if (auto value = number<double>(*text); value && *value > 0 && *value <= kWidestRibbon) return *value;
     return std::nullopt;

@@ -21,10 +21,10 @@ struct AtkisObject {
     std::string typeName;  // the source's own class name (NAS: AX_Wald), or empty
     AtkisGeometry geometry = AtkisGeometry::Area;
     std::map<std::string, std::string> attributes;  // "BRF" → "0065"
-    std::vector<MapRing> areas;   // Area: one closed outline per object part (ATKIS areas have no holes)
-    std::vector<MapLine> lines;   // Line: one polyline per object part
-    std::vector<MapPoint> points; // Point: the reference point(s)
-    std::string where;            // for messages: "file.edbs: record 123" or "file.gpkg: layer x, feature 7"
+    std::vector<MapRing> areas;    // Area: one closed outline per object part (ATKIS areas have no holes)
+    std::vector<MapLine> lines;    // Line: one polyline per object part
+    std::vector<MapPoint> points;  // Point: the reference point(s)
+    std::string where;             // for messages: "file.edbs: record 123" or "file.gpkg: layer x, feature 7"
 };
 
 struct AtkisData {

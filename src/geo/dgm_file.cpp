@@ -30,18 +30,21 @@ void placeTile(const Tile &first, Tile &tile, int64_t mosaicNodes) {
     FileLoc loc{tile.file.string(), 0, 0};
     // A spacing error that would move the far nodes of the mosaic by a noticeable part of a spacing.
     if (std::abs(a.spacing - b.spacing) * double(mosaicNodes) > kAlignTolerance * a.spacing)
-        throw InputError(loc, fmt::format("the grid spacing {:.9g} m differs from the {:.9g} m of {}", b.spacing,
-                                          a.spacing, first.file.string()));
+        throw InputError(loc,
+                         fmt::format("the grid spacing {:.9g} m differs from the {:.9g} m of {}", b.spacing, a.spacing,
+                                     first.file.string()));
     double column = (b.west - a.west) / a.spacing, row = (b.south - a.south) / a.spacing;
     tile.column = int64_t(std::llround(column));
     tile.row = int64_t(std::llround(row));
     if (std::abs(column - double(tile.column)) > kAlignTolerance || std::abs(row - double(tile.row)) > kAlignTolerance)
-        throw InputError(loc, fmt::format("the nodes are off the nodes of {} by {:.4f} m east, {:.4f} m north",
-                                          first.file.string(), (column - double(tile.column)) * a.spacing,
-                                          (row - double(tile.row)) * a.spacing));
+        throw InputError(
+            loc,
+            fmt::format("the nodes are off the nodes of {} by {:.4f} m east, {:.4f} m north", first.file.string(),
+                        (column - double(tile.column)) * a.spacing, (row - double(tile.row)) * a.spacing));
     if (first.dgm.epsg && tile.dgm.epsg && first.dgm.epsg != tile.dgm.epsg)
-        throw InputError(loc, fmt::format("the CRS is EPSG:{}, but {} is in EPSG:{}", tile.dgm.epsg, first.file.string(),
-                                          first.dgm.epsg));
+        throw InputError(loc,
+                         fmt::format("the CRS is EPSG:{}, but {} is in EPSG:{}", tile.dgm.epsg, first.file.string(),
+                                     first.dgm.epsg));
 }
 
 Dgm mosaic(std::vector<Tile> &tiles, std::vector<std::string> &warnings) {
@@ -57,9 +60,9 @@ Dgm mosaic(std::vector<Tile> &tiles, std::vector<std::string> &warnings) {
     }
     double columns = double(east - west + 1), rows = double(north - south + 1);
     if (columns * rows > kMaxNodes)
-        throw InputError({first.file.string(), 0, 0},
-                         fmt::format("the tiles span {} × {} nodes, more than the {:.0e} a DGM may have", columns, rows,
-                                     kMaxNodes));
+        throw InputError(
+            {first.file.string(), 0, 0},
+            fmt::format("the tiles span {} × {} nodes, more than the {:.0e} a DGM may have", columns, rows, kMaxNodes));
     Dgm result;
     HeightGrid &grid = result.grid;
     grid.spacing = first.dgm.grid.spacing;
@@ -88,14 +91,16 @@ Dgm mosaic(std::vector<Tile> &tiles, std::vector<std::string> &warnings) {
             }
         }
         if (disagreeing)
-            warnings.push_back(fmt::format("{}: {} nodes where it overlaps earlier tiles differ from them by up to "
-                                           "{:.3f} m; the earlier tiles' heights are kept",
-                                           t.file.string(), disagreeing, largestDifference));
+            warnings.push_back(
+                fmt::format("{}: {} nodes where it overlaps earlier tiles differ from them by up to "
+                            "{:.3f} m; the earlier tiles' heights are kept",
+                            t.file.string(), disagreeing, largestDifference));
     }
     return result;
 }
 
-void applyPolicy(Dgm &dgm, NoDataPolicy noData, const std::filesystem::path &first, std::vector<std::string> &warnings) {
+void applyPolicy(Dgm &dgm, NoDataPolicy noData, const std::filesystem::path &first,
+                 std::vector<std::string> &warnings) {
     size_t missing = countNoData(dgm.grid);
     if (missing == dgm.grid.heights.size()) throw InputError({first.string(), 0, 0}, "the DGM has no height at all");
     if (missing == 0) return;
@@ -104,9 +109,10 @@ void applyPolicy(Dgm &dgm, NoDataPolicy noData, const std::filesystem::path &fir
         warnings.push_back(fmt::format("{}: {} of {} DGM nodes had no data and were filled from their neighbours",
                                        first.string(), missing, dgm.grid.heights.size()));
     } else {
-        warnings.push_back(fmt::format("{}: {} of {} DGM nodes have no data; the terrain leaves out the cells around "
-                                       "them",
-                                       first.string(), missing, dgm.grid.heights.size()));
+        warnings.push_back(
+            fmt::format("{}: {} of {} DGM nodes have no data; the terrain leaves out the cells around "
+                        "them",
+                        first.string(), missing, dgm.grid.heights.size()));
     }
 }
 

@@ -82,7 +82,7 @@ struct DrapeGrid {
     int64_t nodeIndex(int c, int r) const { return int64_t(r) * heights.columns + c; }
     bool cellHasData(int c, int r) const {
         return !std::isnan(heights.node(c, r)) && !std::isnan(heights.node(c + 1, r)) &&
-               !std::isnan(heights.node(c, r + 1)) && !std::isnan(heights.node(c + 1, r + 1));
+            !std::isnan(heights.node(c, r + 1)) && !std::isnan(heights.node(c + 1, r + 1));
     }
     // The grid's surface at p in cell (c, r): the SW–NE diagonal splits the cell into a
     // south-east and a north-west triangle. The weights make nodes and cell edges exact (a
@@ -117,9 +117,11 @@ std::vector<std::vector<Vec2d>> cutOutlines(const std::vector<DrapeArea> &areas,
         }
         while (ring.size() > 1 && ring.back() == ring.front()) ring.pop_back();
         std::vector<Vec2d> sorted = ring;
-        std::sort(sorted.begin(), sorted.end(), [](Vec2d a, Vec2d b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+        std::sort(sorted.begin(), sorted.end(),
+                  [](Vec2d a, Vec2d b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
         if (std::unique(sorted.begin(), sorted.end()) - sorted.begin() < 3) {
-            throw InputError(FileLoc{}, fmt::format("{}: an outline needs at least 3 distinct points", areaName(areas, i)));
+            throw InputError(FileLoc{},
+                             fmt::format("{}: an outline needs at least 3 distinct points", areaName(areas, i)));
         }
         rings.push_back(splitAtGridLines(ring, lines, true));
     }
@@ -161,7 +163,8 @@ std::vector<CellItem> itemsByCell(const std::vector<std::vector<Vec2d>> &rings, 
         GridLines::CellSpan columns = g.lines.columnsHolding(std::min(a.x, b.x), std::max(a.x, b.x));
         GridLines::CellSpan rows = g.lines.rowsHolding(std::min(a.y, b.y), std::max(a.y, b.y));
         for (int r = rows.first; r < rows.first + rows.count; ++r) {
-            for (int c = columns.first; c < columns.first + columns.count; ++c) items.push_back({g.cellIndex(c, r), a, b});
+            for (int c = columns.first; c < columns.first + columns.count; ++c)
+                items.push_back({g.cellIndex(c, r), a, b});
         }
     };
     for (const std::vector<Vec2d> &ring : rings) {
@@ -276,7 +279,8 @@ std::optional<CutCell> cutAtDiagonal(Vec2d sw, Vec2d ne, const CellItem *items, 
         if (!(cut == a)) cell.segments.push_back({a, cut});
         if (!(cut == b)) cell.segments.push_back({cut, b});
     }
-    std::sort(onDiagonal.begin(), onDiagonal.end(), [](Vec2d a, Vec2d b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    std::sort(onDiagonal.begin(), onDiagonal.end(),
+              [](Vec2d a, Vec2d b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
     onDiagonal.erase(std::unique(onDiagonal.begin(), onDiagonal.end()), onDiagonal.end());
     cell.diagonal.push_back(sw);
     for (Vec2d p : onDiagonal) {
@@ -333,7 +337,8 @@ std::vector<Piece> triangulateCell(const DrapeGrid &g, int c, int r, const CellI
         insertCorners(cdt, g, c, r);
         for (Vec2d p : cut.points) cdt.insert(P(p.x, p.y));
         for (size_t i = 1; i < cut.diagonal.size(); ++i) {
-            cdt.insert_constraint(P(cut.diagonal[i - 1].x, cut.diagonal[i - 1].y), P(cut.diagonal[i].x, cut.diagonal[i].y));
+            cdt.insert_constraint(P(cut.diagonal[i - 1].x, cut.diagonal[i - 1].y),
+                                  P(cut.diagonal[i].x, cut.diagonal[i].y));
         }
         for (const Segment &e : cut.segments) cdt.insert_constraint(P(e.first.x, e.first.y), P(e.second.x, e.second.y));
         collectPieces(cdt, g, c, r, row, ranking, pieces);
@@ -397,8 +402,8 @@ struct PointHash {
 // Collects pieces into one mesh, one vertex per grid node and per outline point.
 class TerrainBuilder {
   public:
-    TerrainBuilder(const DrapeGrid &g, DrapedTerrain &out)
-        : g_(g), out_(out), nodeVertices_(g.heights.heights.size(), kNoVertex) {
+    TerrainBuilder(const DrapeGrid &g, DrapedTerrain &out) :
+        g_(g), out_(out), nodeVertices_(g.heights.heights.size(), kNoVertex) {
         plan_.reserve(out.mesh.positions.capacity());
     }
 
@@ -412,8 +417,8 @@ class TerrainBuilder {
     void addPlainCell(int c, int r, uint32_t area) {
         auto corner = [&](int dc, int dr) {
             int64_t node = g_.nodeIndex(c + dc, r + dr);
-            return PieceVertex{node, {g_.lines.xs[size_t(c + dc)], g_.lines.ys[size_t(r + dr)]},
-                               g_.heights.heights[size_t(node)]};
+            return PieceVertex{
+                node, {g_.lines.xs[size_t(c + dc)], g_.lines.ys[size_t(r + dr)]}, g_.heights.heights[size_t(node)]};
         };
         PieceVertex sw = corner(0, 0), se = corner(1, 0), nw = corner(0, 1), ne = corner(1, 1);
         add({{sw, se, ne}, area});
@@ -460,7 +465,7 @@ float outlineMinimum(const DrapeGrid &g, const std::vector<Vec2d> &ring) {
         if (!g.cellHasData(c, r)) return;
         auto diagonal = [&](Vec2d p) {  // u − v: zero on the diagonal
             return (p.x - g.lines.xs[size_t(c)]) / (g.lines.xs[size_t(c) + 1] - g.lines.xs[size_t(c)]) -
-                   (p.y - g.lines.ys[size_t(r)]) / (g.lines.ys[size_t(r) + 1] - g.lines.ys[size_t(r)]);
+                (p.y - g.lines.ys[size_t(r)]) / (g.lines.ys[size_t(r) + 1] - g.lines.ys[size_t(r)]);
         };
         double da = diagonal(a), db = diagonal(b);
         lowest = std::fmin(lowest, std::fmin(g.heightIn(c, r, a), g.heightIn(c, r, b)));

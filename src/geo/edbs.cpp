@@ -87,7 +87,8 @@ class FieldReader {
     int repeat(std::string_view what, size_t leastGroupSize) {
         size_t at = pos_;
         std::string_view field = take(kWhf, fmt::format("the repetition factor of {}", what));
-        if (!isDigits(field)) fail(at, fmt::format("repetition factor of {} is '{}', not 4 digits", what, printable(field)));
+        if (!isDigits(field))
+            fail(at, fmt::format("repetition factor of {} is '{}', not 4 digits", what, printable(field)));
         int count = int(digits(field));
         if (size_t(count) * leastGroupSize > remaining())
             fail(at, fmt::format("{} × {} does not fit in the {} characters left", count, what, remaining()));
@@ -292,7 +293,8 @@ struct Header {
 
 [[noreturn]] void recordError(const std::string &path, int line, int column, std::optional<int> number,
                               const std::string &message) {
-    std::string what = number ? fmt::format("record {}: {}", *number, message) : fmt::format("record header: {}", message);
+    std::string what =
+        number ? fmt::format("record {}: {}", *number, message) : fmt::format("record header: {}", message);
     throw InputError(FileLoc{path, line, column}, what);
 }
 
@@ -301,12 +303,15 @@ Header readHeader(const std::string &path, std::string_view text, int line) {
     if (text.size() >= 22 && isDigits(text.substr(16, 6))) number = int(digits(text.substr(16, 6)));
     auto fail = [&](int column, const std::string &message) { recordError(path, line, column, number, message); };
     if (text.size() > kMaxRecordLength)
-        fail(kMaxRecordLength + 1, fmt::format("the record is {} characters long; EDBS allows {}", text.size(), kMaxRecordLength));
+        fail(kMaxRecordLength + 1,
+             fmt::format("the record is {} characters long; EDBS allows {}", text.size(), kMaxRecordLength));
     if (text.substr(0, 4) != "EDBS") fail(1, "not an EDBS record: it does not start with 'EDBS'");
     if (text.size() < kHeaderLength)
-        fail(int(text.size()) + 1, fmt::format("the record header needs {} characters, the record has {}", kHeaderLength, text.size()));
+        fail(int(text.size()) + 1,
+             fmt::format("the record header needs {} characters, the record has {}", kHeaderLength, text.size()));
     if (!number) fail(17, fmt::format("record number '{}' is not 6 digits", printable(text.substr(16, 6))));
-    if (!isDigits(text.substr(4, 4))) fail(5, fmt::format("length field '{}' is not 4 digits", printable(text.substr(4, 4))));
+    if (!isDigits(text.substr(4, 4)))
+        fail(5, fmt::format("length field '{}' is not 4 digits", printable(text.substr(4, 4))));
     size_t length = size_t(digits(text.substr(4, 4)));
     if (length != text.size() - 12)
         fail(5, fmt::format("length field says {} characters after it, the record has {}", length, text.size() - 12));
@@ -379,7 +384,8 @@ class RecordAssembler {
 
     void finish() {
         if (pending_)
-            recordError(path_, pending_->line, 23, pending_->number, "continued record has no end record (E) before the end of the file");
+            recordError(path_, pending_->line, 23, pending_->number,
+                        "continued record has no end record (E) before the end of the file");
     }
 
   private:
@@ -423,12 +429,14 @@ EdbsFile parseEdbs(std::string_view text, const std::string &name) {
     size_t start = 0;
     while (start < text.size()) {
         size_t end = text.find('\n', start);
-        std::string_view record = text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start);
+        std::string_view record =
+            text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start);
         start = end == std::string_view::npos ? text.size() : end + 1;
         ++line;
         if (!record.empty() && record.back() == '\r') record.remove_suffix(1);
         if (record.find_first_not_of(' ') == std::string_view::npos) {
-            if (text.substr(start).find_first_not_of(" \r\n") == std::string_view::npos) break;  // blank lines at the end
+            if (text.substr(start).find_first_not_of(" \r\n") == std::string_view::npos)
+                break;  // blank lines at the end
             recordError(name, line, 1, std::nullopt, "empty line between records");
         }
         assembler.add(record, line);

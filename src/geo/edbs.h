@@ -28,10 +28,10 @@ struct EdbsSource {
 
 // "Funktion der Linie": which objects a vector element belongs to, right and left of it.
 struct EdbsLineFunction {
-    std::string folie;      // 3 characters
-    std::string type;       // Objektart as written, 4 characters ("0233", "N231" for a line object)
-    std::string right, left;            // Objektnummer, 7 characters, empty when blank
-    std::string rightPart, leftPart;    // Objektteilnummer, blanks trimmed
+    std::string folie;                // 3 characters
+    std::string type;                 // Objektart as written, 4 characters ("0233", "N231" for a line object)
+    std::string right, left;          // Objektnummer, 7 characters, empty when blank
+    std::string rightPart, leftPart;  // Objektteilnummer, blanks trimmed
 };
 
 // A vector element: "Grundrisskennzeichen" (start), Lageparameter, "Endpunkt der Linie".
@@ -50,14 +50,14 @@ struct EdbsInfo {
     std::string type;     // Objektart bzw. Signaturnummer, 6 characters
     std::string text;     // 33 characters, trailing blanks trimmed
     std::string geometryKind;
-    std::string part;     // Objektteilnummer
+    std::string part;              // Objektteilnummer
     std::vector<MapPoint> points;  // Geometrieangaben that are points ("TT" angles left out)
 };
 
 // "Funktion des Objekts" with its Grundrisskennzeichen as the reference point.
 struct EdbsObject {
-    std::string id;    // Objektnummer, 7 characters
-    std::string type;  // Objektart, 4 digits
+    std::string id;       // Objektnummer, 7 characters
+    std::string type;     // Objektart, 4 digits
     char geometry = 'F';  // Objekttyp: P, L or F
     std::string folie, actuality, modelType, date, change;
     MapPoint reference;
@@ -78,16 +78,16 @@ enum class EdbsCoordinates { Alk, Atkis };
 
 struct EdbsFile {
     std::string path;
-    int records = 0;  // physical records (lines)
-    std::map<std::string, int> recordCounts;  // "BSPE ULOBNN" → physical records
-    bool hasEnd = false;                      // an AEND record closed the file
+    int records = 0;                                    // physical records (lines)
+    std::map<std::string, int> recordCounts;            // "BSPE ULOBNN" → physical records
+    bool hasEnd = false;                                // an AEND record closed the file
     std::optional<std::pair<MapPoint, MapPoint>> area;  // BKRT: lower left, upper right
-    std::vector<std::string> texts;           // BINF/OTEX ULOTEX texts
+    std::vector<std::string> texts;                     // BINF/OTEX ULOTEX texts
     std::vector<EdbsObject> objects;
     std::vector<EdbsLine> lines;
     std::vector<EdbsAttributes> attributes;
-    int alkPoints = 0, atkisPoints = 0;       // coordinates read in either form
-    int curvedElements = 0;                   // elements whose Art der Geometrie is not 11 or 15
+    int alkPoints = 0, atkisPoints = 0;  // coordinates read in either form
+    int curvedElements = 0;              // elements whose Art der Geometrie is not 11 or 15
 
     // ATKIS when any coordinate came in the ATKIS form, else ALK.
     EdbsCoordinates coordinates() const { return atkisPoints > 0 ? EdbsCoordinates::Atkis : EdbsCoordinates::Alk; }

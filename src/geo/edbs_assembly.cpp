@@ -135,8 +135,8 @@ class Assembler {
             a.attributes["OBJART"] = object.type;
         }
         a.geometry = object.geometry == 'P' ? AtkisGeometry::Point
-                     : object.geometry == 'L' ? AtkisGeometry::Line
-                                              : AtkisGeometry::Area;
+            : object.geometry == 'L'        ? AtkisGeometry::Line
+                                            : AtkisGeometry::Area;
         a.where = fmt::format("{}: record {}", file_.path, object.source.record);
         return a;
     }
@@ -173,9 +173,10 @@ class Assembler {
             }
             RingChaining chained = chainRings(it->second);
             if (!chained.closed) {
-                incomplete(object, fmt::format("{}: outline does not close: it stops at {}, {} of its {} elements left over",
-                                               label(object, part), pointText(chained.openEnd), chained.unusedElements,
-                                               it->second.size()));
+                incomplete(object,
+                           fmt::format("{}: outline does not close: it stops at {}, {} of its {} elements left over",
+                                       label(object, part), pointText(chained.openEnd), chained.unusedElements,
+                                       it->second.size()));
                 return false;
             }
             target.areas = outlines(object, part, std::move(chained.rings));
@@ -233,8 +234,6 @@ class Assembler {
 
 }  // namespace
 
-EdbsConversion toAtkis(const EdbsFile &file, IncompleteObjects incomplete) {
-    return Assembler(file, incomplete).run();
-}
+EdbsConversion toAtkis(const EdbsFile &file, IncompleteObjects incomplete) { return Assembler(file, incomplete).run(); }
 
 }  // namespace veduta

@@ -12,10 +12,10 @@
 namespace veduta {
 
 struct RingChaining {
-    std::vector<MapRing> rings;   // closed outlines, no point repeated in a row, none closing
-    bool closed = true;           // false: the elements do not close; rings then holds those that did
-    MapPoint openEnd;             // where the walk stopped when not closed
-    size_t unusedElements = 0;    // elements left when it stopped, the stuck walk's included
+    std::vector<MapRing> rings;  // closed outlines, no point repeated in a row, none closing
+    bool closed = true;          // false: the elements do not close; rings then holds those that did
+    MapPoint openEnd;            // where the walk stopped when not closed
+    size_t unusedElements = 0;   // elements left when it stopped, the stuck walk's included
 };
 
 // Every element used once. Elements of fewer than two points are ignored; rings that come

@@ -13,18 +13,18 @@
 #include "core/hash.h"
 #include "core/random_streams.h"
 #include "geo/atkis.h"
-#include "geodesy/crs.h"
 #include "geo/dgm_file.h"
 #include "geo/drape_areas.h"
 #include "geo/edbs.h"
-#include "geodesy/local_frame.h"
-#include "geodesy/map_projection.h"
 #include "geo/ribbons.h"
 #include "geo/terrain_mesh.h"
 #include "geo/terrain_surface.h"
 #include "geo/tree_models.h"
 #include "geo/tree_placement.h"
 #include "geo/vector_file.h"
+#include "geodesy/crs.h"
+#include "geodesy/local_frame.h"
+#include "geodesy/map_projection.h"
 
 namespace veduta {
 
@@ -34,27 +34,27 @@ namespace {
 Material landMaterial(LandClass c) {
     std::string name = fmt::format("land/{}", landClassName(c));
     switch (c) {
-        case LandClass::Road:
-        case LandClass::CityStreet: return Material::lambertian(name, {0.13f, 0.13f, 0.14f});  // under the streets
-        case LandClass::Path: return Material::lambertian(name, {0.42f, 0.38f, 0.31f});
-        case LandClass::Rail: return Material::lambertian(name, {0.27f, 0.24f, 0.22f});
-        case LandClass::Settlement: return Material::lambertian(name, {0.21f, 0.24f, 0.14f});  // gardens and yards
-        case LandClass::Park: return Material::lambertian(name, {0.12f, 0.22f, 0.07f});
-        case LandClass::Farmland: return Material::lambertian(name, {0.34f, 0.27f, 0.16f});
-        case LandClass::Grassland: return Material::lambertian(name, {0.13f, 0.23f, 0.06f});
-        case LandClass::Forest: return Material::lambertian(name, {0.08f, 0.09f, 0.04f});
-        case LandClass::Shrubs:
-        case LandClass::TreeRow:
-        case LandClass::Hedge: return Material::lambertian(name, {0.1f, 0.15f, 0.06f});
-        case LandClass::Water:
-        case LandClass::River: {
-            Material water = Material::lambertian(name, {0.015f, 0.03f, 0.035f});
-            water.specular = Vec3f(0.25f);
-            water.shininess = 800;
-            water.reflectivity = Vec3f(0.04f);
-            return water;
-        }
-        case LandClass::Other: break;
+    case LandClass::Road:
+    case LandClass::CityStreet: return Material::lambertian(name, {0.13f, 0.13f, 0.14f});  // under the streets
+    case LandClass::Path: return Material::lambertian(name, {0.42f, 0.38f, 0.31f});
+    case LandClass::Rail: return Material::lambertian(name, {0.27f, 0.24f, 0.22f});
+    case LandClass::Settlement: return Material::lambertian(name, {0.21f, 0.24f, 0.14f});  // gardens and yards
+    case LandClass::Park: return Material::lambertian(name, {0.12f, 0.22f, 0.07f});
+    case LandClass::Farmland: return Material::lambertian(name, {0.34f, 0.27f, 0.16f});
+    case LandClass::Grassland: return Material::lambertian(name, {0.13f, 0.23f, 0.06f});
+    case LandClass::Forest: return Material::lambertian(name, {0.08f, 0.09f, 0.04f});
+    case LandClass::Shrubs:
+    case LandClass::TreeRow:
+    case LandClass::Hedge: return Material::lambertian(name, {0.1f, 0.15f, 0.06f});
+    case LandClass::Water:
+    case LandClass::River: {
+        Material water = Material::lambertian(name, {0.015f, 0.03f, 0.035f});
+        water.specular = Vec3f(0.25f);
+        water.shininess = 800;
+        water.reflectivity = Vec3f(0.04f);
+        return water;
+    }
+    case LandClass::Other: break;
     }
     return Material::lambertian("land/bare", {0.2f, 0.24f, 0.11f});
 }
@@ -73,9 +73,10 @@ HeightGrid readTerrain(const LandscapeDesc &land, int sceneEpsg, std::vector<std
     const DataFileDesc &first = land.dgm.front();
     int epsg = dataEpsg(first, dgm.epsg, sceneEpsg);
     if (epsg != sceneEpsg) {
-        throw InputError(first.loc, fmt::format("the DGM is in EPSG:{} and the scene in EPSG:{}; a DGM is not "
-                                                "reprojected: give it in the scene's CRS (gdalwarp does it)",
-                                                epsg, sceneEpsg));
+        throw InputError(first.loc,
+                         fmt::format("the DGM is in EPSG:{} and the scene in EPSG:{}; a DGM is not "
+                                     "reprojected: give it in the scene's CRS (gdalwarp does it)",
+                                     epsg, sceneEpsg));
     }
     return std::move(dgm.grid);
 }
@@ -101,8 +102,10 @@ void convertPoints(AtkisData &data, const MapProjection &projection) {
     };
     for (AtkisObject &o : data.objects) {
         object = &o;
-        for (MapRing &ring : o.areas) for (MapPoint &p : ring) convertPoint(p);
-        for (MapLine &line : o.lines) for (MapPoint &p : line) convertPoint(p);
+        for (MapRing &ring : o.areas)
+            for (MapPoint &p : ring) convertPoint(p);
+        for (MapLine &line : o.lines)
+            for (MapPoint &p : line) convertPoint(p);
         for (MapPoint &p : o.points) convertPoint(p);
     }
 }
@@ -215,9 +218,13 @@ class LandscapeBuilder {
   public:
     LandscapeBuilder(const LandscapeDesc &land, uint32_t seed, const Georeference &georef,
                      const std::vector<LocalPolygon> &streetAreas, RenderSceneBuilder &builder,
-                     std::vector<std::string> &warnings)
-        : land_(land), seed_(seed), frame_{{georef.originEasting, georef.originNorthing}}, streetAreas_(streetAreas),
-          builder_(builder), warnings_(warnings) {
+                     std::vector<std::string> &warnings) :
+        land_(land),
+        seed_(seed),
+        frame_{{georef.originEasting, georef.originNorthing}},
+        streetAreas_(streetAreas),
+        builder_(builder),
+        warnings_(warnings) {
         grid_ = readTerrain(land, georef.epsg, warnings);
         for (const DataFileDesc &d : land.layers) {
             AtkisData layer = readLayer(d, georef, warnings);
@@ -265,9 +272,10 @@ class LandscapeBuilder {
             mesh = terrainMesh(grid_, frame_, options);
         } else {
             if (land_.simplify > 0)
-                warnings_.push_back(fmt::format("{}: the terrain keeps its full resolution under draped ATKIS areas; "
-                                                "simplify applies to bare terrain only",
-                                                land_.loc.toString()));
+                warnings_.push_back(
+                    fmt::format("{}: the terrain keeps its full resolution under draped ATKIS areas; "
+                                "simplify applies to bare terrain only",
+                                land_.loc.toString()));
             DrapedTerrain draped = atLandscape([&] { return drapeAreas(grid_, frame_, areas, {}); });
             MaterialId bare = builder_.findOrAddMaterial(landMaterial(LandClass::Other));
             triangleObject_.resize(draped.triangleArea.size(), kNoArea);
@@ -288,7 +296,8 @@ class LandscapeBuilder {
         Mesh ribbons;
         for (const AtkisObject &o : objects_) {
             LandClass c = landClass(o);
-            if (o.geometry != AtkisGeometry::Line || (c != LandClass::Road && c != LandClass::Path && c != LandClass::Rail))
+            if (o.geometry != AtkisGeometry::Line ||
+                (c != LandClass::Road && c != LandClass::Path && c != LandClass::Rail))
                 continue;
             RibbonOptions options;
             options.lift = ribbonLift(c);
@@ -323,9 +332,10 @@ class LandscapeBuilder {
             planter.resize(set.trees.size(), uint32_t(i));
         }
         if (set.limitReached)
-            throw InputError(land_.loc, fmt::format("the landscape would have more than {} trees (tree_budget); "
-                                                    "raise tree_budget or set trees=\"false\"",
-                                                    land_.treeBudget));
+            throw InputError(land_.loc,
+                             fmt::format("the landscape would have more than {} trees (tree_budget); "
+                                         "raise tree_budget or set trees=\"false\"",
+                                         land_.treeBudget));
         addTreeInstances(set, planter);
     }
 
@@ -341,12 +351,13 @@ class LandscapeBuilder {
         if (owner == kNoArea) return true;
         LandClass c = landClass(objects_[owner]);
         return c != LandClass::Water && c != LandClass::River && c != LandClass::Road && c != LandClass::Path &&
-               c != LandClass::Rail;
+            c != LandClass::Rail;
     }
 
     void addTreeInstances(const TreeSet &set, const std::vector<uint32_t> &planter) {
-        TreeMaterials broadleaf{builder_.findOrAddMaterial(Material::lambertian("land/bark", {0.16f, 0.12f, 0.09f})),
-                                builder_.findOrAddMaterial(Material::lambertian("land/foliage", {0.09f, 0.19f, 0.04f}))};
+        TreeMaterials broadleaf{
+            builder_.findOrAddMaterial(Material::lambertian("land/bark", {0.16f, 0.12f, 0.09f})),
+            builder_.findOrAddMaterial(Material::lambertian("land/foliage", {0.09f, 0.19f, 0.04f}))};
         TreeMaterials conifer{broadleaf.bark,
                               builder_.findOrAddMaterial(Material::lambertian("land/needles", {0.04f, 0.1f, 0.04f}))};
         PrototypeId prototypes[2][kTreeVariants] = {};
@@ -375,9 +386,10 @@ class LandscapeBuilder {
         while (side < std::max(grid_.columns, grid_.rows)) side = 2 * side;
         double bytes = 4 * (side + 1) * (side + 1);
         if (bytes > kSimplifyBytes)
-            throw InputError(land_.loc, fmt::format("simplifying this {} × {} DGM needs {:.1f} GB (it is padded to a "
-                                                    "square); cut it into square tiles or leave simplify at 0",
-                                                    grid_.columns, grid_.rows, bytes / 1e9));
+            throw InputError(land_.loc,
+                             fmt::format("simplifying this {} × {} DGM needs {:.1f} GB (it is padded to a "
+                                         "square); cut it into square tiles or leave simplify at 0",
+                                         grid_.columns, grid_.rows, bytes / 1e9));
     }
 
     // An error of draping or a ribbon at the <landscape>, naming the object when known.

@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "geodesy/georeference.h"
+#include "description/scene_description.h"
 #include "geo/ground_height.h"
 #include "geo/terrain_surface.h"
+#include "geodesy/georeference.h"
 #include "scene/render_scene.h"
-#include "description/scene_description.h"
 
 namespace veduta {
 

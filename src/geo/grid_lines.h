@@ -43,8 +43,8 @@ Vec2d toLocalDouble(const MapPoint &p, const LocalFrame &frame);
 // line's double); the other coordinate is interpolated and clamped to the segment's range, so
 // that every resulting segment lies in one closed cell even where rounding would misorder two
 // crossings near a node. The lines run on beyond the grid (outlines leaving the grid are cut
-// where they pass its rows, which is what the inside tests by rows need). With `closed`, the segment from the last point back to the first
-// is cut too and the result stays a ring (its first point not repeated).
+// where they pass its rows, which is what the inside tests by rows need). With `closed`, the segment from the last
+// point back to the first is cut too and the result stays a ring (its first point not repeated).
 std::vector<Vec2d> splitAtGridLines(const std::vector<Vec2d> &line, const GridLines &lines, bool closed);
 
 }  // namespace veduta

@@ -15,9 +15,9 @@ struct HeightGrid {
     // Node (0, 0) is the south-west node; column c lies at west + c·spacing, row r at
     // south + r·spacing. Nodes are sample points (pixel centres of a raster), not cells.
     double west = 0, south = 0;
-    double spacing = 0;            // metres, the same east–west and north–south
+    double spacing = 0;  // metres, the same east–west and north–south
     int columns = 0, rows = 0;
-    std::vector<float> heights;    // row-major from the south row; NaN where there is no data
+    std::vector<float> heights;  // row-major from the south row; NaN where there is no data
 
     float node(int column, int row) const { return heights[size_t(row) * size_t(columns) + size_t(column)]; }
     float &node(int column, int row) { return heights[size_t(row) * size_t(columns) + size_t(column)]; }

@@ -51,7 +51,8 @@ int epsgOf(const GDALDataset &dataset) {
 void flipRows(HeightGrid &grid) {
     size_t width = size_t(grid.columns);
     for (int low = 0, high = grid.rows - 1; low < high; ++low, --high) {
-        std::swap_ranges(grid.heights.begin() + ptrdiff_t(low * width), grid.heights.begin() + ptrdiff_t((low + 1) * width),
+        std::swap_ranges(grid.heights.begin() + ptrdiff_t(low * width),
+                         grid.heights.begin() + ptrdiff_t((low + 1) * width),
                          grid.heights.begin() + ptrdiff_t(high * width));
     }
 }
@@ -70,19 +71,22 @@ Dgm readRasterGrid(const std::filesystem::path &path) {
     double transform[6] = {0, 1, 0, 0, 0, 1};
     if (dataset->GetGeoTransform(transform) != CE_None)
         throw InputError(loc, "the raster has no georeference (no geotransform)");
-    if (transform[2] != 0 || transform[4] != 0) throw InputError(loc, "the raster is rotated; only north-up rasters are read");
+    if (transform[2] != 0 || transform[4] != 0)
+        throw InputError(loc, "the raster is rotated; only north-up rasters are read");
     double dx = transform[1], dy = transform[5];
     if (!(dx > 0)) throw InputError(loc, fmt::format("the pixel width is {}; it must be positive", dx));
     if (!(std::abs(dx - std::abs(dy)) < 1e-6 * dx))
-        throw InputError(loc, fmt::format("the pixels are not square ({} m × {} m); a DGM needs one spacing", dx, std::abs(dy)));
+        throw InputError(
+            loc, fmt::format("the pixels are not square ({} m × {} m); a DGM needs one spacing", dx, std::abs(dy)));
 
     Dgm dgm;
     HeightGrid &grid = dgm.grid;
     grid.columns = dataset->GetRasterXSize();
     grid.rows = dataset->GetRasterYSize();
     if (double(grid.columns) * grid.rows > kMaxNodes)
-        throw InputError(loc, fmt::format("the raster has {} × {} pixels, more than the {:.0e} a DGM may have",
-                                          grid.columns, grid.rows, kMaxNodes));
+        throw InputError(loc,
+                         fmt::format("the raster has {} × {} pixels, more than the {:.0e} a DGM may have", grid.columns,
+                                     grid.rows, kMaxNodes));
     grid.spacing = dx;
     grid.west = transform[0] + 0.5 * dx;
     // Row 0 of a north-up raster is its north edge; the grid counts from the south.

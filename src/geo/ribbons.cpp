@@ -89,9 +89,10 @@ Mesh drapeRibbon(const MapLine &centre, double width, const TerrainSurface &surf
         throw InputError(FileLoc{}, fmt::format("a ribbon's width must be a positive number, not {}", width));
     }
     if (!(options.tileLength > 0) || !(options.lift >= 0) || !(options.miterLimit >= 1)) {
-        throw InputError(FileLoc{}, fmt::format("ribbon options: tile length {} must be positive, lift {} not negative, "
-                                                "miter limit {} at least 1",
-                                                options.tileLength, options.lift, options.miterLimit));
+        throw InputError(FileLoc{},
+                         fmt::format("ribbon options: tile length {} must be positive, lift {} not negative, "
+                                     "miter limit {} at least 1",
+                                     options.tileLength, options.lift, options.miterLimit));
     }
     Mesh mesh;
     std::vector<Vec2d> line = centreLine(centre, surface, frame);
@@ -127,13 +128,15 @@ Mesh drapeRibbon(const MapLine &centre, double width, const TerrainSurface &surf
         double rise = -std::numeric_limits<double>::infinity();
         for (std::array<int, 3> triangle : {std::array<int, 3>{0, 1, 2}, std::array<int, 3>{0, 2, 3}}) {
             auto z = [&](int k) { return k == 0 || k == 3 ? heights[i] : heights[i + 1]; };
-            std::array<Vec2d, 3> corners{quad[size_t(triangle[0])], quad[size_t(triangle[1])], quad[size_t(triangle[2])]};
-            std::optional<HeightPlane> plane = planeThrough(corners[0], z(triangle[0]), corners[1], z(triangle[1]),
-                                                            corners[2], z(triangle[2]));
+            std::array<Vec2d, 3> corners{quad[size_t(triangle[0])], quad[size_t(triangle[1])],
+                                         quad[size_t(triangle[2])]};
+            std::optional<HeightPlane> plane =
+                planeThrough(corners[0], z(triangle[0]), corners[1], z(triangle[1]), corners[2], z(triangle[2]));
             // A triangle flat in plan covers nothing; its edges belong to the other one or the
             // neighbours.
             if (!plane) continue;
-            if (std::optional<double> above = surface.maxAbove(corners, *plane)) rise = std::max(rise, *above + options.lift);
+            if (std::optional<double> above = surface.maxAbove(corners, *plane))
+                rise = std::max(rise, *above + options.lift);
         }
         if (rise > 0) heights[i] += rise, heights[i + 1] += rise;
     }

@@ -4,8 +4,8 @@
 #pragma once
 
 #include "geo/atkis.h"
-#include "geodesy/local_frame.h"
 #include "geo/terrain_surface.h"
+#include "geodesy/local_frame.h"
 #include "scene/mesh.h"
 
 namespace veduta {
@@ -24,10 +24,10 @@ double ribbonLift(LandClass landClass);
 // along its length. The centre line is cut at the surface's cell lines. Each cross-section
 // starts at the highest ground across it plus `lift`; each piece between two cuts (level
 // across, linear along) is then raised, ends together, until it lies `lift` above the surface
-// everywhere (TerrainSurface::maxAbove of its two triangles), one pass from the start. Corners use the averaged perpendicular (a miter, clamped at
-// miterLimit), so pieces share their corner vertices: no gaps. u runs 0 (left) to 1 (right),
-// v = distance along the centre / tileLength. An empty mesh for fewer than 2 distinct points
-// or a line off the terrain. Throws InputError for a non-finite point or width ≤ 0.
+// everywhere (TerrainSurface::maxAbove of its two triangles), one pass from the start. Corners use the averaged
+// perpendicular (a miter, clamped at miterLimit), so pieces share their corner vertices: no gaps. u runs 0 (left) to 1
+// (right), v = distance along the centre / tileLength. An empty mesh for fewer than 2 distinct points or a line off the
+// terrain. Throws InputError for a non-finite point or width ≤ 0.
 Mesh drapeRibbon(const MapLine &centre, double width, const TerrainSurface &surface, const LocalFrame &frame,
                  const RibbonOptions &options);
 

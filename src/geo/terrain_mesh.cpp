@@ -64,7 +64,7 @@ Mesh fullResolution(const HeightGrid &grid, const LocalFrame &frame, const Terra
             nodes += !std::isnan(grid.node(c, r));
             if (r + 1 < rows && c + 1 < columns)
                 cells += hasHeight(grid, c, r) && hasHeight(grid, c + 1, r) && hasHeight(grid, c, r + 1) &&
-                         hasHeight(grid, c + 1, r + 1);
+                    hasHeight(grid, c + 1, r + 1);
         }
         vertexStart[size_t(r) + 1] = nodes;
         triangleStart[size_t(r)] = 2 * cells;

@@ -8,9 +8,9 @@
 namespace veduta {
 
 struct TerrainMeshOptions {
-    float uvTile = 10;         // metres per texture repeat: uv = local metres / uvTile
-    double maxError = 0;       // metres; 0: full resolution, > 0: simplified (below)
-    MaterialId material = 0;   // of every triangle
+    float uvTile = 10;        // metres per texture repeat: uv = local metres / uvTile
+    double maxError = 0;      // metres; 0: full resolution, > 0: simplified (below)
+    MaterialId material = 0;  // of every triangle
 };
 
 // Full resolution (maxError 0): one vertex per node with a height, two triangles per cell

@@ -53,8 +53,8 @@ std::vector<Vec2d> toDouble(std::span<const Vec2f> polygon) {
 
 }  // namespace
 
-TerrainSurface::TerrainSurface(const Mesh &terrain, GridLines cellLines)
-    : positions_(terrain.positions), indices_(terrain.indices), lines_(std::move(cellLines)) {
+TerrainSurface::TerrainSurface(const Mesh &terrain, GridLines cellLines) :
+    positions_(terrain.positions), indices_(terrain.indices), lines_(std::move(cellLines)) {
     if (positions_.empty() || indices_.empty()) return;
     double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
     for (const Vec3f &p : positions_) {
@@ -76,7 +76,8 @@ TerrainSurface::TerrainSurface(const Mesh &terrain, GridLines cellLines)
 
     bucketStart_.assign(size_t(bucketColumns_) * size_t(bucketRows_) + 1, 0);
     auto forEachBucket = [&](size_t t, auto &&f) {
-        const Vec3f &a = positions_[indices_[3 * t]], &b = positions_[indices_[3 * t + 1]], &c = positions_[indices_[3 * t + 2]];
+        const Vec3f &a = positions_[indices_[3 * t]], &b = positions_[indices_[3 * t + 1]],
+                    &c = positions_[indices_[3 * t + 2]];
         int c0 = bucketColumn(std::min({a.x, b.x, c.x})), c1 = bucketColumn(std::max({a.x, b.x, c.x}));
         int r0 = bucketRow(std::min({a.y, b.y, c.y})), r1 = bucketRow(std::max({a.y, b.y, c.y}));
         for (int r = r0; r <= r1; ++r) {
@@ -87,7 +88,8 @@ TerrainSurface::TerrainSurface(const Mesh &terrain, GridLines cellLines)
     for (size_t k = 1; k < bucketStart_.size(); ++k) bucketStart_[k] += bucketStart_[k - 1];
     bucketTriangles_.resize(bucketStart_.back());
     std::vector<uint32_t> fill(bucketStart_.begin(), bucketStart_.end() - 1);
-    for (size_t t = 0; t < triangles; ++t) forEachBucket(t, [&](size_t k) { bucketTriangles_[fill[k]++] = uint32_t(t); });
+    for (size_t t = 0; t < triangles; ++t)
+        forEachBucket(t, [&](size_t k) { bucketTriangles_[fill[k]++] = uint32_t(t); });
 }
 
 int TerrainSurface::bucketColumn(double x) const {
@@ -104,7 +106,8 @@ std::vector<uint32_t> TerrainSurface::trianglesNear(double x0, double y0, double
     for (int r = bucketRow(y0); r <= bucketRow(y1); ++r) {
         for (int c = bucketColumn(x0); c <= bucketColumn(x1); ++c) {
             size_t k = size_t(r) * size_t(bucketColumns_) + size_t(c);
-            found.insert(found.end(), bucketTriangles_.begin() + bucketStart_[k], bucketTriangles_.begin() + bucketStart_[k + 1]);
+            found.insert(found.end(), bucketTriangles_.begin() + bucketStart_[k],
+                         bucketTriangles_.begin() + bucketStart_[k + 1]);
         }
     }
     std::sort(found.begin(), found.end());
@@ -117,7 +120,8 @@ std::optional<TerrainSurface::PointOnSurface> TerrainSurface::triangleAt(Vec2d p
     double bestMin = -std::numeric_limits<double>::infinity();
     PointOnSurface best;
     for (uint32_t t : trianglesNear(p.x, p.y, p.x, p.y)) {
-        const Vec3f &a = positions_[indices_[3 * t]], &b = positions_[indices_[3 * t + 1]], &c = positions_[indices_[3 * t + 2]];
+        const Vec3f &a = positions_[indices_[3 * t]], &b = positions_[indices_[3 * t + 1]],
+                    &c = positions_[indices_[3 * t + 2]];
         double d = (double(b.y) - c.y) * (double(a.x) - c.x) + (double(c.x) - b.x) * (double(a.y) - c.y);
         if (d == 0) continue;
         double la = ((double(b.y) - c.y) * (p.x - c.x) + (double(c.x) - b.x) * (p.y - c.y)) / d;
@@ -164,8 +168,12 @@ std::optional<double> TerrainSurface::extreme(std::span<const Vec2d> polygon, co
 
 std::optional<double> TerrainSurface::maxOver(std::span<const Vec2d> polygon) const { return extreme(polygon, {}, 1); }
 std::optional<double> TerrainSurface::minOver(std::span<const Vec2d> polygon) const { return extreme(polygon, {}, -1); }
-std::optional<double> TerrainSurface::maxOver(std::span<const Vec2f> polygon) const { return maxOver(toDouble(polygon)); }
-std::optional<double> TerrainSurface::minOver(std::span<const Vec2f> polygon) const { return minOver(toDouble(polygon)); }
+std::optional<double> TerrainSurface::maxOver(std::span<const Vec2f> polygon) const {
+    return maxOver(toDouble(polygon));
+}
+std::optional<double> TerrainSurface::minOver(std::span<const Vec2f> polygon) const {
+    return minOver(toDouble(polygon));
+}
 
 std::optional<double> TerrainSurface::maxAbove(std::span<const Vec2d> polygon, const HeightPlane &plane) const {
     return extreme(polygon, plane, 1);

@@ -29,7 +29,7 @@ struct Species {
     std::string_view axiom;
     std::vector<Production> productions;
     int iterations = 0;
-    std::string_view foliageSymbols;  // symbols drawn as a foliage blob
+    std::string_view foliageSymbols;     // symbols drawn as a foliage blob
     float pitch = 0, roll = 0, yaw = 0;  // the turtle's turns in degrees
     float angleJitter = 0;               // each turn is scaled by 1 ± this, hashed per symbol
     float lengthRatio = 1;               // ' scales the segment length by it
@@ -53,8 +53,7 @@ Species broadleaf(uint32_t variant) {
         {{"FFA", 34, 0.80f, 0.06f}, {"FFA", 42, 0.78f, 0.0f}, {"FFA", 30, 0.80f, -0.06f}}};
     const Tweak &t = tweaks[variant];
     return {.axiom = t.axiom,
-            .productions = {{'A', 0.6f, "![&'FA]/[&'FA]/[&'FA]"}, {'A', 0.3f, "![&'FA]//[&'FA]"},
-                            {'A', 0.1f, "'F/A"}},
+            .productions = {{'A', 0.6f, "![&'FA]/[&'FA]/[&'FA]"}, {'A', 0.3f, "![&'FA]//[&'FA]"}, {'A', 0.1f, "'F/A"}},
             .iterations = 5,
             .foliageSymbols = "A",
             .pitch = t.pitch,
@@ -80,10 +79,9 @@ Species conifer(uint32_t variant) {
     };
     // A spruce with five branches to a whorl, a slim fir with four, a pine-like one with a
     // long bare trunk and a flatter crown.
-    const std::array<Tweak, kTreeVariants> tweaks = {
-        {{"FT", "F[&!'B]/[&!'B]/[&!'B]/[&!'B]/[&!'B]T", 8, 78, 0.32f},
-         {"FT", "F[&!'B]/[&!'B]/[&!'B]/[&!'B]T", 9, 70, 0.26f},
-         {"FFFT", "F[&!'B]/[&!'B]/[&!'B]/[&!'B]/[&!'B]T", 6, 62, 0.36f}}};
+    const std::array<Tweak, kTreeVariants> tweaks = {{{"FT", "F[&!'B]/[&!'B]/[&!'B]/[&!'B]/[&!'B]T", 8, 78, 0.32f},
+                                                      {"FT", "F[&!'B]/[&!'B]/[&!'B]/[&!'B]T", 9, 70, 0.26f},
+                                                      {"FFFT", "F[&!'B]/[&!'B]/[&!'B]/[&!'B]/[&!'B]T", 6, 62, 0.36f}}};
     const Tweak &t = tweaks[variant];
     return {.axiom = t.axiom,
             .productions = {{'T', 1.0f, t.leader}, {'B', 1.0f, "FNB"}},
@@ -155,8 +153,8 @@ struct Turtle {
 
 class TreeBuilder {
   public:
-    TreeBuilder(const Species &sp, uint32_t key, const TreeMaterials &materials)
-        : sp_(sp), key_(key), materials_(materials) {}
+    TreeBuilder(const Species &sp, uint32_t key, const TreeMaterials &materials) :
+        sp_(sp), key_(key), materials_(materials) {}
 
     Mesh build(const std::string &word) {
         Turtle turtle;
@@ -264,13 +262,13 @@ class TreeBuilder {
     // the bud it sits on. Radial jitter keeps it star-shaped, so every face stays outward.
     void drawFoliage(const Turtle &t, size_t symbol) {
         static const float g = (1 + std::sqrt(5.0f)) / 2;
-        static const std::array<Vec3f, 12> corners = {
-            Vec3f{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
-            {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+        static const std::array<Vec3f, 12> corners = {Vec3f{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0},
+                                                      {0, -1, g},      {0, 1, g}, {0, -1, -g}, {0, 1, -g},
+                                                      {g, 0, -1},      {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
         static const std::array<std::array<uint32_t, 3>, 20> faces = {
-            {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-             {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
-             {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}}};
+            {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+             {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+             {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}}};
         Vec3f s = sp_.foliageScale * t.length;
         Vec3f center = t.position + t.heading * (0.5f * s.x);
         auto base = uint32_t(mesh_.positions.size());

@@ -26,9 +26,8 @@ struct Candidate {
 };
 
 float draw(uint32_t seed, uint32_t objectId, const Candidate &cand, Draw d) {
-    return bitsToUnitFloat(
-        hashValues({seed, objectId, streamTag(RandomStream::TreePlacement), uint32_t(cand.source), cand.a, cand.b,
-                    cand.c, uint32_t(d)}));
+    return bitsToUnitFloat(hashValues({seed, objectId, streamTag(RandomStream::TreePlacement), uint32_t(cand.source),
+                                       cand.a, cand.b, cand.c, uint32_t(d)}));
 }
 
 // False, and the set marked, once it holds its limit.
@@ -170,7 +169,8 @@ class AreaSampler {
             const std::vector<RowSample> &samples = rows_[slot(r)];
             auto from = std::lower_bound(samples.begin(), samples.end(), column - 2,
                                          [](const RowSample &s, int64_t c) { return s.column < c; });
-            for (auto it = from; it != samples.end() && it->column <= column + 2; ++it) neighbours_.push_back(it->position);
+            for (auto it = from; it != samples.end() && it->column <= column + 2; ++it)
+                neighbours_.push_back(it->position);
         }
     }
 
@@ -183,8 +183,8 @@ class AreaSampler {
     }
 
     float spacing_, cell_;
-    std::vector<Edge> edges_;   // sorted by lowest y
-    std::vector<Edge> active_;  // those crossing the current row's band
+    std::vector<Edge> edges_;                     // sorted by lowest y
+    std::vector<Edge> active_;                    // those crossing the current row's band
     std::array<std::vector<RowSample>, 3> rows_;  // the current row and the two below, by row mod 3
     std::vector<Vec2f> neighbours_;
 };
@@ -197,21 +197,20 @@ TreeStand treeStand(LandClass landClass, TreeKind kind) {
     case LandClass::Shrubs: return {.kind = kind, .spacing = 3, .minHeight = 3, .maxHeight = 9};
     case LandClass::TreeRow: return {.kind = kind, .spacing = 9, .minHeight = 10, .maxHeight = 20};
     case LandClass::Hedge:
-        return {.kind = TreeKind::Broadleaf, .spacing = 1.5f, .minHeight = 1.5f, .maxHeight = 3.5f, .widthJitter = 0.25f};
+        return {
+            .kind = TreeKind::Broadleaf, .spacing = 1.5f, .minHeight = 1.5f, .maxHeight = 3.5f, .widthJitter = 0.25f};
     default: return {.kind = kind, .spacing = 0};
     }
 }
 
-void plantArea(TreeSet &set, const std::vector<Vec2f> &ring, const TreeStand &stand, uint32_t seed,
-               uint32_t objectId) {
+void plantArea(TreeSet &set, const std::vector<Vec2f> &ring, const TreeStand &stand, uint32_t seed, uint32_t objectId) {
     checkSpacing(stand);
     if (ring.size() < 3 || !std::all_of(ring.begin(), ring.end(), finite)) return;
     checkLocal(ring);
     AreaSampler(ring, stand.spacing).run(set, stand, seed, objectId);
 }
 
-void plantLine(TreeSet &set, const std::vector<Vec2f> &line, const TreeStand &stand, uint32_t seed,
-               uint32_t objectId) {
+void plantLine(TreeSet &set, const std::vector<Vec2f> &line, const TreeStand &stand, uint32_t seed, uint32_t objectId) {
     checkSpacing(stand);
     if (line.empty() || !std::all_of(line.begin(), line.end(), finite)) return;
     checkLocal(line);
@@ -253,7 +252,7 @@ void plantPoints(TreeSet &set, const std::vector<Vec2f> &points, const TreeStand
 Transform treeTransform(const PlacedTree &tree, float groundHeight) {
     float width = tree.height * tree.widthScale;
     return Transform::translate({tree.position.x, tree.position.y, groundHeight}) *
-           Transform::rotate(2, degrees(tree.rotation)) * Transform::scale({width, width, tree.height});
+        Transform::rotate(2, degrees(tree.rotation)) * Transform::scale({width, width, tree.height});
 }
 
 }  // namespace veduta

@@ -17,10 +17,10 @@ namespace veduta {
 
 // How trees grow in one object.
 struct TreeStand {
-    TreeKind kind = TreeKind::Mixed;  // Mixed: each tree is broadleaf or conifer by a hashed draw
-    float conifersInMixed = 0.4f;     // the share of conifers where kind is Mixed
-    float spacing = 5.5f;             // areas: the minimum distance; lines: the mean distance (m)
-    float rowJitter = 0.15f;          // lines: each tree moves along the line by ± this × spacing
+    TreeKind kind = TreeKind::Mixed;       // Mixed: each tree is broadleaf or conifer by a hashed draw
+    float conifersInMixed = 0.4f;          // the share of conifers where kind is Mixed
+    float spacing = 5.5f;                  // areas: the minimum distance; lines: the mean distance (m)
+    float rowJitter = 0.15f;               // lines: each tree moves along the line by ± this × spacing
     float minHeight = 12, maxHeight = 28;  // metres, drawn uniformly
     float widthJitter = 0.12f;             // the crown's width scales by 1 ± this
 };
@@ -52,13 +52,11 @@ struct TreeSet {
 // non-finite coordinates plant nothing. Throws std::invalid_argument when stand.spacing is not
 // positive or a point lies more than 1000 km from the origin (not local coordinates); callers
 // turn that into an InputError naming the object.
-void plantArea(TreeSet &set, const std::vector<Vec2f> &ring, const TreeStand &stand, uint32_t seed,
-               uint32_t objectId);
+void plantArea(TreeSet &set, const std::vector<Vec2f> &ring, const TreeStand &stand, uint32_t seed, uint32_t objectId);
 // Trees along the polyline in equal steps of about stand.spacing metres, jittered along it,
 // the first half a step from its start. A line shorter than one spacing gets one tree near its
 // middle. The same errors as plantArea.
-void plantLine(TreeSet &set, const std::vector<Vec2f> &line, const TreeStand &stand, uint32_t seed,
-               uint32_t objectId);
+void plantLine(TreeSet &set, const std::vector<Vec2f> &line, const TreeStand &stand, uint32_t seed, uint32_t objectId);
 // One tree at each point.
 void plantPoints(TreeSet &set, const std::vector<Vec2f> &points, const TreeStand &stand, uint32_t seed,
                  uint32_t objectId);

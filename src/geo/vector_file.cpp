@@ -151,8 +151,8 @@ void collect(const OGRGeometry &g, FeatureGeometry &out) {
 
 class VectorReader {
   public:
-    VectorReader(const std::filesystem::path &path, std::vector<std::string> &warnings)
-        : path_(path.string()), warnings_(warnings) {}
+    VectorReader(const std::filesystem::path &path, std::vector<std::string> &warnings) :
+        path_(path.string()), warnings_(warnings) {}
 
     AtkisData read(GDALDataset &dataset, int headerEpsg) {
         AtkisData data;
@@ -161,9 +161,10 @@ class VectorReader {
             // AtkisData has one CRS: layers of a file that name two are refused, not mixed.
             int epsg = headerEpsg != 0 ? headerEpsg : layerEpsg(*layer);
             if (data.epsg != 0 && epsg != 0 && epsg != data.epsg)
-                throw InputError(FileLoc{path_}, fmt::format("layer {} is in EPSG:{}, an earlier layer in EPSG:{}; "
-                                                             "give the layers of one file one CRS",
-                                                             layer->GetName(), epsg, data.epsg));
+                throw InputError(FileLoc{path_},
+                                 fmt::format("layer {} is in EPSG:{}, an earlier layer in EPSG:{}; "
+                                             "give the layers of one file one CRS",
+                                             layer->GetName(), epsg, data.epsg));
             if (data.epsg == 0) data.epsg = epsg;
             layer->ResetReading();
             for (auto &feature : *layer) addFeature(*layer, *feature, data);
@@ -204,7 +205,9 @@ class VectorReader {
         if (g.degenerate > 0)
             warnings_.push_back(fmt::format("{}: {} part{} without enough points or of another kind left out",
                                             object.where, g.degenerate, g.degenerate == 1 ? "" : "s"));
-        object.geometry = !g.areas.empty() ? AtkisGeometry::Area : !g.lines.empty() ? AtkisGeometry::Line : AtkisGeometry::Point;
+        object.geometry = !g.areas.empty() ? AtkisGeometry::Area
+            : !g.lines.empty()             ? AtkisGeometry::Line
+                                           : AtkisGeometry::Point;
         if (g.areas.empty() && g.lines.empty() && g.points.empty()) return;
         object.areas = std::move(g.areas);
         object.lines = std::move(g.lines);
@@ -229,7 +232,8 @@ class VectorReader {
 }  // namespace
 
 int nasClassType(std::string_view layerName) {
-    auto it = std::find_if(kNasClasses.begin(), kNasClasses.end(), [&](const ClassEntry &e) { return e.name == layerName; });
+    auto it =
+        std::find_if(kNasClasses.begin(), kNasClasses.end(), [&](const ClassEntry &e) { return e.name == layerName; });
     return it == kNasClasses.end() ? 0 : it->type;
 }
 
@@ -271,7 +275,8 @@ AtkisData readVectorFile(const std::filesystem::path &path, std::vector<std::str
         }
         // NAS says so when no schema came with the file; it reads on without one.
         std::erase(messages.failures, std::string("No schema information loaded"));
-        for (const std::string &m : messages.failures) warnings.push_back(fmt::format("{}: GDAL: {}", loc.toString(), m));
+        for (const std::string &m : messages.failures)
+            warnings.push_back(fmt::format("{}: GDAL: {}", loc.toString(), m));
         messages.failures.clear();
         int headerEpsg = driverName == "NAS" ? nasStandardCrs(copy->bytes()) : 0;
         data = VectorReader(path, warnings).read(*dataset, headerEpsg);

@@ -49,7 +49,8 @@ double parseNumber(std::string_view token, const FileLoc &loc, bool isHeight) {
     std::string_view digits = token.front() == '+' ? token.substr(1) : token;
     double value = 0;
     auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-    if (error == std::errc::result_out_of_range) throw InputError(loc, fmt::format("'{}' is out of range", shown(token)));
+    if (error == std::errc::result_out_of_range)
+        throw InputError(loc, fmt::format("'{}' is out of range", shown(token)));
     if (error != std::errc() || end != digits.data() + digits.size() || digits.empty())
         throw InputError(loc, fmt::format("'{}' is not a number", shown(token)));
     if (std::isnan(value) && isHeight)
@@ -171,9 +172,10 @@ HeightGrid emptyGridOver(const GridScan &scan, const std::string &file) {
     double columns = std::round((scan.maxX() - scan.minX()) / scan.spacing()) + 1;
     double rows = std::round((scan.maxY() - scan.minY()) / scan.spacing()) + 1;
     if (columns * rows > kMaxNodes)
-        throw InputError({file, 0, 0}, fmt::format("the points span {} × {} nodes of {:.6g} m, more than the {:.0e} "
-                                                   "a DGM may have",
-                                                   columns, rows, scan.spacing(), kMaxNodes));
+        throw InputError({file, 0, 0},
+                         fmt::format("the points span {} × {} nodes of {:.6g} m, more than the {:.0e} "
+                                     "a DGM may have",
+                                     columns, rows, scan.spacing(), kMaxNodes));
     HeightGrid grid;
     grid.west = scan.minX();
     grid.south = scan.minY();

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <fmt/format.h>
 #include <GeographicLib/Constants.hpp>
 #include <GeographicLib/Geocentric.hpp>
 #include <GeographicLib/TransverseMercator.hpp>
-#include <fmt/format.h>
 
 namespace veduta {
 
@@ -22,11 +22,10 @@ constexpr double kBesselA = 6377397.155, kBesselF = 1 / 299.1528128;
 constexpr double kGrs80A = 6378137, kGrs80F = 1 / 298.257222101;
 
 constexpr Crs gaussKrueger(int zone) {
-    constexpr std::string_view names[] = {
-        "DHDN / 3-degree Gauss-Kruger zone 2", "DHDN / 3-degree Gauss-Kruger zone 3",
-        "DHDN / 3-degree Gauss-Kruger zone 4", "DHDN / 3-degree Gauss-Kruger zone 5"};
-    return {31464 + zone, names[zone - 2], Datum::Dhdn, Ellipsoid::Bessel1841, true, 3.0 * zone,
-            zone * 1e6 + 500000, zone};
+    constexpr std::string_view names[] = {"DHDN / 3-degree Gauss-Kruger zone 2", "DHDN / 3-degree Gauss-Kruger zone 3",
+                                          "DHDN / 3-degree Gauss-Kruger zone 4", "DHDN / 3-degree Gauss-Kruger zone 5"};
+    return {31464 + zone, names[zone - 2], Datum::Dhdn,         Ellipsoid::Bessel1841,
+            true,         3.0 * zone,      zone * 1e6 + 500000, zone};
 }
 
 constexpr Crs utm(int epsg, std::string_view name, Datum datum, Ellipsoid ellipsoid, int zone) {
@@ -57,9 +56,9 @@ const TransverseMercator &transverseMercator(const Crs &crs) {
     static const TransverseMercator utmGrs80(kGrs80A, kGrs80F, GeographicLib::Constants::UTM_k0());
     static const TransverseMercator utmWgs84 = TransverseMercator::UTM();
     switch (crs.ellipsoid) {
-        case Ellipsoid::Bessel1841: return gaussKruegerBessel;
-        case Ellipsoid::Grs80: return utmGrs80;
-        case Ellipsoid::Wgs84: return utmWgs84;
+    case Ellipsoid::Bessel1841: return gaussKruegerBessel;
+    case Ellipsoid::Grs80: return utmGrs80;
+    case Ellipsoid::Wgs84: return utmWgs84;
     }
     throw std::invalid_argument("unknown ellipsoid");
 }
@@ -91,9 +90,10 @@ Mat3d inverse(const Mat3d &a) {
     double c01 = m[1][2] * m[2][0] - m[1][0] * m[2][2];
     double c02 = m[1][0] * m[2][1] - m[1][1] * m[2][0];
     double det = m[0][0] * c00 + m[0][1] * c01 + m[0][2] * c02;
-    return {{{c00 / det, (m[0][2] * m[2][1] - m[0][1] * m[2][2]) / det, (m[0][1] * m[1][2] - m[0][2] * m[1][1]) / det},
-             {c01 / det, (m[0][0] * m[2][2] - m[0][2] * m[2][0]) / det, (m[0][2] * m[1][0] - m[0][0] * m[1][2]) / det},
-             {c02 / det, (m[0][1] * m[2][0] - m[0][0] * m[2][1]) / det, (m[0][0] * m[1][1] - m[0][1] * m[1][0]) / det}}};
+    return {
+        {{c00 / det, (m[0][2] * m[2][1] - m[0][1] * m[2][2]) / det, (m[0][1] * m[1][2] - m[0][2] * m[1][1]) / det},
+         {c01 / det, (m[0][0] * m[2][2] - m[0][2] * m[2][0]) / det, (m[0][2] * m[1][0] - m[0][0] * m[1][2]) / det},
+         {c02 / det, (m[0][1] * m[2][0] - m[0][0] * m[2][1]) / det, (m[0][0] * m[1][1] - m[0][1] * m[1][0]) / det}}};
 }
 
 // EPSG:1777, DHDN to ETRS89 (and WGS 84), 7 parameters in the position-vector convention
@@ -186,7 +186,8 @@ const Crs &parseCrs(std::string_view text) {
     auto [end, error] = std::from_chars(code.data(), code.data() + code.size(), epsg);
     // from_chars takes a leading minus sign; a code is digits only.
     if (code.empty() || code[0] == '-' || error != std::errc() || end != code.data() + code.size()) {
-        throw std::invalid_argument(fmt::format("'{}' is not a CRS; write EPSG:<code> or the code, e.g. EPSG:31467", text));
+        throw std::invalid_argument(
+            fmt::format("'{}' is not a CRS; write EPSG:<code> or the code, e.g. EPSG:31467", text));
     }
     return crsByEpsg(epsg);
 }
@@ -228,20 +229,21 @@ GridFactors gridFactors(const Crs &crs, const MapPoint &point) {
 
 GaussKruegerZone gaussKruegerZone(double rechtswert) {
     if (!(rechtswert >= 1e6 && rechtswert < 1e7)) {
-        throw std::out_of_range(fmt::format("{} is no Gauss-Kruger Rechtswert: it has seven digits before the point, "
-                                            "the first the zone",
-                                            rechtswert));
+        throw std::out_of_range(
+            fmt::format("{} is no Gauss-Kruger Rechtswert: it has seven digits before the point, "
+                        "the first the zone",
+                        rechtswert));
     }
     GaussKruegerZone z;
     z.zone = int(rechtswert / 1e6);
     z.centralMeridian = 3.0 * z.zone;
     z.offsetFromMeridian = rechtswert - z.zone * 1e6 - 500000;
     if (std::abs(z.offsetFromMeridian) > kMaxGaussKruegerOffset) {
-        throw std::out_of_range(fmt::format("Rechtswert {} lies {:.0f} km {} of zone {}'s central meridian ({}° E); "
-                                            "no more than {:.0f} km fit a zone",
-                                            rechtswert, std::abs(z.offsetFromMeridian) / 1000,
-                                            direction(z.offsetFromMeridian), z.zone, z.centralMeridian,
-                                            kMaxGaussKruegerOffset / 1000));
+        throw std::out_of_range(
+            fmt::format("Rechtswert {} lies {:.0f} km {} of zone {}'s central meridian ({}° E); "
+                        "no more than {:.0f} km fit a zone",
+                        rechtswert, std::abs(z.offsetFromMeridian) / 1000, direction(z.offsetFromMeridian), z.zone,
+                        z.centralMeridian, kMaxGaussKruegerOffset / 1000));
     }
     return z;
 }
@@ -275,8 +277,8 @@ void checkAxis(const Crs &crs, int axis, double value) {
     } else {
         double offset = value - crs.falseEasting;
         if (!(std::abs(offset) < 500000)) {
-            throw std::out_of_range(fmt::format("easting {} lies more than 500 km from the central meridian of EPSG:{}",
-                                                value, crs.epsg));
+            throw std::out_of_range(
+                fmt::format("easting {} lies more than 500 km from the central meridian of EPSG:{}", value, crs.epsg));
         }
     }
 }

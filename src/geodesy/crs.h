@@ -30,7 +30,7 @@ struct Crs {
     bool projected = false;
     double centralMeridian = 0;  // degrees east; projected only
     double falseEasting = 0;     // metres; every supported CRS has false northing 0
-    int gaussKruegerZone = 0;  // the Kennziffer of a Gauss-Krüger CRS, 0 for the others
+    int gaussKruegerZone = 0;    // the Kennziffer of a Gauss-Krüger CRS, 0 for the others
 };
 
 struct GeographicPoint {

@@ -14,9 +14,10 @@ const Crs &projectedCrs(int epsg) {
     for (const Crs &crs : supportedCrss()) {
         if (crs.epsg == epsg && crs.projected) return crs;
     }
-    throw std::invalid_argument(fmt::format("EPSG:{} is not supported; use 25832, 25833, 32632, 32633 (UTM) "
-                                            "or 31466 to 31469 (Gauss-Kruger)",
-                                            epsg));
+    throw std::invalid_argument(
+        fmt::format("EPSG:{} is not supported; use 25832, 25833, 32632, 32633 (UTM) "
+                    "or 31466 to 31469 (Gauss-Kruger)",
+                    epsg));
 }
 
 }  // namespace

@@ -10,14 +10,15 @@ namespace {
 
 const Crs &projectedSceneCrs(const Georeference &scene) {
     const Crs &crs = crsByEpsg(scene.epsg);
-    if (!crs.projected) throw std::invalid_argument(fmt::format("a scene's CRS is projected; EPSG:{} is not", crs.epsg));
+    if (!crs.projected)
+        throw std::invalid_argument(fmt::format("a scene's CRS is projected; EPSG:{} is not", crs.epsg));
     return crs;
 }
 
 }  // namespace
 
-MapProjection::MapProjection(const Crs &source, const Georeference &scene)
-    : source_(&source), scene_(&projectedSceneCrs(scene)), frame_{{scene.originEasting, scene.originNorthing}} {}
+MapProjection::MapProjection(const Crs &source, const Georeference &scene) :
+    source_(&source), scene_(&projectedSceneCrs(scene)), frame_{{scene.originEasting, scene.originNorthing}} {}
 
 MapPoint MapProjection::toScene(const MapPoint &p) const {
     checkAxis(*source_, 0, p.easting);

@@ -6,9 +6,9 @@
 
 #include "core/vecmath.h"
 #include "geodesy/crs.h"
+#include "geodesy/georeference.h"
 #include "geodesy/local_frame.h"
 #include "geodesy/map_point.h"
-#include "geodesy/georeference.h"
 
 namespace veduta {
 

@@ -68,8 +68,8 @@ std::shared_ptr<const ColorConfig> ColorConfig::loadFile(const std::filesystem::
     return std::make_shared<const ColorConfig>(config, file.string());
 }
 
-ColorConfig::ColorConfig(OCIO::ConstConfigRcPtr config, std::string source)
-    : config_(std::move(config)), source_(std::move(source)) {
+ColorConfig::ColorConfig(OCIO::ConstConfigRcPtr config, std::string source) :
+    config_(std::move(config)), source_(std::move(source)) {
     OCIO::ConstColorSpaceRcPtr linear = config_->getColorSpace(OCIO::ROLE_SCENE_LINEAR);
     if (!linear) throw std::runtime_error("the colour configuration has no scene_linear role");
     linear_ = linear->getName();
@@ -89,9 +89,7 @@ std::string ColorConfig::names() const {
 
 void ColorConfig::toLinear(Image &image, const std::string &colorSpace) const { convert(image, colorSpace, linear_); }
 
-void ColorConfig::fromLinear(Image &image, const std::string &colorSpace) const {
-    convert(image, linear_, colorSpace);
-}
+void ColorConfig::fromLinear(Image &image, const std::string &colorSpace) const { convert(image, linear_, colorSpace); }
 
 void ColorConfig::convert(Image &image, const std::string &from, const std::string &to) const {
     OCIO::ConstProcessorRcPtr processor = config_->getProcessor(from.c_str(), to.c_str());

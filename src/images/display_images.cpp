@@ -99,9 +99,9 @@ OCIO::ConstProcessorRcPtr displayProcessor(const DisplayChoice &choice) {
     try {
         return pipeline->getProcessor(config.ocio(), config.ocio()->getCurrentContext());
     } catch (const OCIO::Exception &e) {
-        throw InputError(FileLoc{config.source()},
-                         fmt::format("cannot build the view '{}' of display '{}': {}", choice.view, choice.display,
-                                     e.what()));
+        throw InputError(
+            FileLoc{config.source()},
+            fmt::format("cannot build the view '{}' of display '{}': {}", choice.view, choice.display, e.what()));
     }
 }
 
@@ -130,9 +130,9 @@ DisplayChoice chooseDisplay(const DisplaySettings &settings, std::shared_ptr<con
     const FileLoc where{choice.config->source()};
     choice.display =
         chooseName(settings.display, config.getDefaultDisplay(), displayNames(config), "display", "", where);
-    choice.view = chooseName(settings.view, config.getDefaultView(choice.display.c_str()),
-                             viewNames(config, choice.display), "view",
-                             fmt::format(" for display '{}'", choice.display), where);
+    choice.view =
+        chooseName(settings.view, config.getDefaultView(choice.display.c_str()), viewNames(config, choice.display),
+                   "view", fmt::format(" for display '{}'", choice.display), where);
     checkLooks(settings.look, config, where);
     choice.look = settings.look;
     choice.exposureStops = settings.exposureStops;

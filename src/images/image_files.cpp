@@ -11,8 +11,8 @@
 #include <OpenImageIO/filesystem.h>
 #include <fmt/format.h>
 
-#include "core/error.h"
 #include "core/atomic_file.h"
+#include "core/error.h"
 
 namespace veduta {
 
@@ -50,12 +50,12 @@ std::string lowercaseExtension(const std::filesystem::path &file) {
 
 OIIO::ImageSpec readImageSpec(const std::filesystem::path &file) { return openImage(file)->spec(); }
 
-std::string fileColorSpace(const std::filesystem::path &file, const OIIO::ImageSpec &spec,
-                           const std::string &requested, const ColorConfig &config) {
+std::string fileColorSpace(const std::filesystem::path &file, const OIIO::ImageSpec &spec, const std::string &requested,
+                           const ColorConfig &config) {
     if (!requested.empty()) return knownSpace(file, requested, config);
     if (auto declared = config.find(spec.get_string_attribute("oiio:ColorSpace"))) return *declared;
     bool isFloat = spec.format.basetype == OIIO::TypeDesc::FLOAT || spec.format.basetype == OIIO::TypeDesc::HALF ||
-                   spec.format.basetype == OIIO::TypeDesc::DOUBLE;
+        spec.format.basetype == OIIO::TypeDesc::DOUBLE;
     return isFloat ? config.linear() : knownSpace(file, "sRGB", config);
 }
 
@@ -95,7 +95,7 @@ void writeEncodedImage(const std::filesystem::path &file, const Image &encoded, 
         OIIO::Filesystem::IOVecOutput memory(bytes);
         bool inMemory = output->supports("ioproxy") && output->set_ioproxy(&memory);
         bool written = output->open(temporary.string(), spec) &&
-                       output->write_image(OIIO::TypeFloat, encoded.pixels.data()) && output->close();
+            output->write_image(OIIO::TypeFloat, encoded.pixels.data()) && output->close();
         if (!written) throw std::runtime_error(fmt::format("{}: {}", file.string(), output->geterror()));
         if (inMemory) writeWholeFile(temporary, bytes.data(), bytes.size(), file);
     });

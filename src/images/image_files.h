@@ -18,8 +18,8 @@ OIIO::ImageSpec readImageSpec(const std::filesystem::path &file);
 // The colour space the pixels of `file` are in, by its config name: `requested` when given,
 // else the one the file's metadata (oiio:ColorSpace) names if the config knows it, else linear
 // for float files and sRGB for integer ones. Throws InputError for a name the config lacks.
-std::string fileColorSpace(const std::filesystem::path &file, const OIIO::ImageSpec &spec,
-                           const std::string &requested, const ColorConfig &config);
+std::string fileColorSpace(const std::filesystem::path &file, const OIIO::ImageSpec &spec, const std::string &requested,
+                           const ColorConfig &config);
 
 // The first subimage's full-resolution pixels as float, all channels, converted from the
 // file's colour space (see fileColorSpace) to linear. Throws InputError naming the file.

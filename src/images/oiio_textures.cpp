@@ -11,10 +11,10 @@
 
 namespace veduta {
 
-OiioTextures::OiioTextures(std::filesystem::path cacheDirectory, std::shared_ptr<const ColorConfig> config)
-    : cacheDirectory_(std::move(cacheDirectory)),
-      config_(std::move(config)),
-      system_(OIIO::TextureSystem::create(/*shared=*/false)) {}
+OiioTextures::OiioTextures(std::filesystem::path cacheDirectory, std::shared_ptr<const ColorConfig> config) :
+    cacheDirectory_(std::move(cacheDirectory)),
+    config_(std::move(config)),
+    system_(OIIO::TextureSystem::create(/*shared=*/false)) {}
 
 OiioTextures::~OiioTextures() { OIIO::TextureSystem::destroy(system_, /*teardown_imagecache=*/true); }
 
@@ -34,8 +34,9 @@ OiioTextures::Entry OiioTextures::open(const std::filesystem::path &texture, con
     Entry entry;
     entry.texture = texture.filename().string();
     entry.handle = system_->get_texture_handle(OIIO::ustring(texture.string()));
-    if (!entry.handle || !system_->get_texture_info(entry.handle, nullptr, 0, OIIO::ustring("channels"),
-                                                    OIIO::TypeInt, &entry.channels)) {
+    if (!entry.handle ||
+        !system_->get_texture_info(entry.handle, nullptr, 0, OIIO::ustring("channels"), OIIO::TypeInt,
+                                   &entry.channels)) {
         throw InputError(FileLoc{file.string()},
                          fmt::format("cannot open its texture {}: {}", texture.string(), system_->geterror()));
     }
@@ -50,8 +51,8 @@ void OiioTextures::lookup(TextureId id, Vec2f uv, float footprint, float *out, i
     options.interpmode = OIIO::TextureOpt::InterpBilinear;
     // OpenImageIO's t runs down from the top row; our v runs up.
     float s = uv.x, t = 1.0f - uv.y;
-    if (!system_->texture(entry.handle, system_->get_perthread_info(), options, s, t, footprint, 0.0f, 0.0f,
-                          footprint, std::min(count, entry.channels), out)) {
+    if (!system_->texture(entry.handle, system_->get_perthread_info(), options, s, t, footprint, 0.0f, 0.0f, footprint,
+                          std::min(count, entry.channels), out)) {
         throw std::runtime_error(fmt::format("texture lookup failed: {}", system_->geterror()));
     }
 }

@@ -6,9 +6,9 @@
 #include <OpenImageIO/imagebufalgo.h>
 #include <fmt/format.h>
 
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include "images/image_files.h"
-#include "core/atomic_file.h"
 
 namespace veduta {
 
@@ -33,21 +33,21 @@ void convertToTexture(const std::filesystem::path &file, const std::string &colo
     settings.attribute("maketx:filtername", "box");  // each mip texel the mean of the texels it covers
     writeFileAtomically(texture, [&](const std::filesystem::path &temporary) {
         if (!OIIO::ImageBufAlgo::make_texture(OIIO::ImageBufAlgo::MakeTxTexture, input, temporary.string(), settings)) {
-            throw std::runtime_error(fmt::format("{}: cannot make the texture {}: {}", file.string(), texture.string(),
-                                                 OIIO::geterror()));
+            throw std::runtime_error(
+                fmt::format("{}: cannot make the texture {}: {}", file.string(), texture.string(), OIIO::geterror()));
         }
     });
 }
 
 }  // namespace
 
-std::filesystem::path cachedTexturePath(const std::filesystem::path &cacheDirectory,
-                                        const std::filesystem::path &file, const std::string &colorSpace) {
+std::filesystem::path cachedTexturePath(const std::filesystem::path &cacheDirectory, const std::filesystem::path &file,
+                                        const std::string &colorSpace) {
     std::error_code error;
     std::filesystem::path absolute = std::filesystem::absolute(file, error);
     uintmax_t size = error ? 0 : std::filesystem::file_size(absolute, error);
-    std::filesystem::file_time_type modified = error ? std::filesystem::file_time_type{}
-                                                     : std::filesystem::last_write_time(absolute, error);
+    std::filesystem::file_time_type modified =
+        error ? std::filesystem::file_time_type{} : std::filesystem::last_write_time(absolute, error);
     if (error) throw InputError(FileLoc{file.string()}, error.message());
     std::string key = fmt::format("{}\n{}\n{}\n{}\n{}", kTextureFormatVersion, absolute.string(), size,
                                   modified.time_since_epoch().count(), colorSpace);

@@ -12,8 +12,8 @@ namespace veduta {
 // The cached texture for `file` read in `colorSpace` (a config name): its name is a hash of
 // the absolute path, size, modification time, colour space and the conversion's version, so a
 // changed file gets a new one. Throws InputError naming the file when it cannot be read.
-std::filesystem::path cachedTexturePath(const std::filesystem::path &cacheDirectory,
-                                        const std::filesystem::path &file, const std::string &colorSpace);
+std::filesystem::path cachedTexturePath(const std::filesystem::path &cacheDirectory, const std::filesystem::path &file,
+                                        const std::string &colorSpace);
 
 // Returns the cached texture, converting `file` first if the cache lacks it. The texture is
 // written atomically, so runs in parallel never read half a file. Throws InputError naming the

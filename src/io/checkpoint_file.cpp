@@ -6,8 +6,8 @@
 
 #include <fmt/format.h>
 
-#include "core/error.h"
 #include "core/atomic_file.h"
+#include "core/error.h"
 
 namespace veduta {
 
@@ -86,8 +86,7 @@ void writeCheckpoint(const std::filesystem::path &file, const RenderIdentity &id
     writeBytesAtomically(file, pieces);
 }
 
-void readCheckpoint(const std::filesystem::path &file, const RenderIdentity &identity, Film &film,
-                    RenderStats &stats) {
+void readCheckpoint(const std::filesystem::path &file, const RenderIdentity &identity, Film &film, RenderStats &stats) {
     Reader reader(file);
     if (reader.line() != kMagic) reader.fail("does not start with its signature: not a veduta checkpoint");
     RenderIdentity written;

@@ -24,7 +24,6 @@ void writeCheckpoint(const std::filesystem::path &file, const RenderIdentity &id
 // Restores `film` (made for the same window) and `stats` from `file`. Throws InputError naming
 // the file if it is not a checkpoint, is damaged, or was written for another render (then the
 // message lists every entry that differs, there and here).
-void readCheckpoint(const std::filesystem::path &file, const RenderIdentity &identity, Film &film,
-                    RenderStats &stats);
+void readCheckpoint(const std::filesystem::path &file, const RenderIdentity &identity, Film &film, RenderStats &stats);
 
 }  // namespace veduta

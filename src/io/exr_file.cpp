@@ -8,9 +8,9 @@
 #include <OpenEXR/ImfFloatAttribute.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfIO.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfIntAttribute.h>
-#include <OpenEXR/ImfIO.h>
 #include <OpenEXR/ImfMatrixAttribute.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStringAttribute.h>
@@ -93,10 +93,12 @@ void writeExr(const LayeredImage &image, const std::filesystem::path &file) {
         for (const auto &[name, value] : image.metadata) insertMetadata(header, name, value);
         Imf::FrameBuffer frame;
         for (const LayeredImage::Channel &c : image.channels) {
-            if (c.values.size() != w.area()) throw std::logic_error(fmt::format("channel {} has the wrong size", c.name));
+            if (c.values.size() != w.area())
+                throw std::logic_error(fmt::format("channel {} has the wrong size", c.name));
             header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
-            frame.insert(c.name, Imf::Slice(Imf::FLOAT, sliceBase(c.values, w), sizeof(float),
-                                            sizeof(float) * size_t(w.width())));
+            frame.insert(
+                c.name,
+                Imf::Slice(Imf::FLOAT, sliceBase(c.values, w), sizeof(float), sizeof(float) * size_t(w.width())));
         }
         Imf::OutputFile out(stream, header);
         out.setFrameBuffer(frame);
@@ -126,8 +128,9 @@ LayeredImage readExr(const std::filesystem::path &file) {
         Imf::FrameBuffer frame;
         for (auto c = header.channels().begin(); c != header.channels().end(); ++c) {
             std::vector<float> &values = image.addChannel(c.name());
-            frame.insert(c.name(), Imf::Slice(Imf::FLOAT, sliceBase(values, w), sizeof(float),
-                                              sizeof(float) * size_t(w.width())));
+            frame.insert(
+                c.name(),
+                Imf::Slice(Imf::FLOAT, sliceBase(values, w), sizeof(float), sizeof(float) * size_t(w.width())));
         }
         in.setFrameBuffer(frame);
         in.readPixels(w.y0, w.y1 - 1);

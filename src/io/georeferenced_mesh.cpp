@@ -88,8 +88,9 @@ class ObjMeshBuilder {
     // tinyobjloader only warns of an index beyond the file's lists.
     void check(int index, size_t count, const char *what) const {
         if (index < 0 || size_t(index) >= count)
-            throw InputError({file_.string()}, fmt::format("face {} refers to {} {}, beyond the {} the file has", face_ + 1,
-                                                           what, index + 1, count));
+            throw InputError(
+                {file_.string()},
+                fmt::format("face {} refers to {} {}, beyond the {} the file has", face_ + 1, what, index + 1, count));
     }
 
     const tinyobj::attrib_t &attrib_;
@@ -124,8 +125,9 @@ Mesh place(const MapMesh &in, const MapProjection &projection, const std::filesy
             mesh.positions.push_back(projection.toRender(p));
             if (!in.normals.empty()) mesh.normals.push_back(gridTurn(projection, {p.x, p.y}).normal(in.normals[i]));
         } catch (const std::out_of_range &e) {
-            throw InputError({file.string()}, fmt::format("vertex {} ({}, {}) is no point of EPSG:{}: {}", i + 1, p.x,
-                                                          p.y, projection.source().epsg, e.what()));
+            throw InputError({file.string()},
+                             fmt::format("vertex {} ({}, {}) is no point of EPSG:{}: {}", i + 1, p.x, p.y,
+                                         projection.source().epsg, e.what()));
         }
     }
     mesh.uvs = in.uvs;
@@ -142,9 +144,10 @@ Mesh importGeoreferencedMesh(const std::filesystem::path &file, const MapProject
     for (char &c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
     if (extension == ".obj") return place(readObj(file), projection, file);
     if (extension == ".ply") return place(readPlyFile(file), projection, file);
-    throw InputError({file.string()}, fmt::format("georeferenced meshes are read from OBJ and PLY, whose coordinates "
-                                                  "keep double precision; convert this {} file to one of them",
-                                                  extension.empty() ? "extensionless" : extension));
+    throw InputError({file.string()},
+                     fmt::format("georeferenced meshes are read from OBJ and PLY, whose coordinates "
+                                 "keep double precision; convert this {} file to one of them",
+                                 extension.empty() ? "extensionless" : extension));
 }
 
 }  // namespace veduta

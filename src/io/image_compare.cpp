@@ -10,9 +10,9 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/rel_mse.h"
-#include "core/atomic_file.h"
 
 namespace veduta {
 
@@ -39,8 +39,8 @@ std::string combinedPrefix(const OIIO::ImageSpec &spec) {
 // An image that takes part in a comparison, with the name messages give it and the prefix of the
 // channels it is compared through.
 struct Role {
-    Role(const OIIO::ImageBuf *buffer, const char *messageName)
-        : image(buffer), name(messageName), prefix(combinedPrefix(buffer->spec())) {}
+    Role(const OIIO::ImageBuf *buffer, const char *messageName) :
+        image(buffer), name(messageName), prefix(combinedPrefix(buffer->spec())) {}
 
     // The index of `channel` (R, G, …) of the compared pass; -1 when there is none.
     int channelIndex(const std::string &channel) const { return image->spec().channelindex(prefix + channel); }
@@ -82,8 +82,8 @@ void requireRgb(const std::vector<Role> &roles) {
 std::vector<std::string> sharedChannels(const std::vector<Role> &roles) {
     std::vector<std::string> shared;
     for (const std::string &name : roles.front().channels()) {
-        bool everywhere = std::all_of(roles.begin() + 1, roles.end(),
-                                      [&](const Role &r) { return r.channelIndex(name) >= 0; });
+        bool everywhere =
+            std::all_of(roles.begin() + 1, roles.end(), [&](const Role &r) { return r.channelIndex(name) >= 0; });
         if (everywhere) shared.push_back(name);
     }
     return shared;
@@ -92,8 +92,8 @@ std::vector<std::string> sharedChannels(const std::vector<Role> &roles) {
 // One image's pixels as float, whatever the buffer stores, read through the compared channels.
 class ChannelReader {
   public:
-    ChannelReader(const Role &role, const std::vector<std::string> &channels)
-        : stride_(size_t(role.image->nchannels())) {
+    ChannelReader(const Role &role, const std::vector<std::string> &channels) :
+        stride_(size_t(role.image->nchannels())) {
         OIIO::ROI roi = role.image->roi();
         values_.resize(roi.npixels() * stride_);
         if (!role.image->get_pixels(roi, OIIO::TypeFloat, values_.data())) {
@@ -129,9 +129,9 @@ double relativeSquaredError(double error, float reference) {
 class ZTest {
   public:
     // Šidák correction: with `valueCount` tests, all pass by chance with probability 1 - significance.
-    ZTest(uint32_t samplesPerPixel, uint64_t valueCount)
-        : sqrtSpp_(std::sqrt(double(samplesPerPixel))),
-          alpha_(-std::expm1(std::log1p(-kZTestSignificance) / double(valueCount))) {}
+    ZTest(uint32_t samplesPerPixel, uint64_t valueCount) :
+        sqrtSpp_(std::sqrt(double(samplesPerPixel))),
+        alpha_(-std::expm1(std::log1p(-kZTestSignificance) / double(valueCount))) {}
 
     // A NaN variance gives a NaN p-value, which fails.
     bool passes(double error, float variance) const {
@@ -197,12 +197,9 @@ Totals sumErrors(const std::vector<Role> &roles, const std::vector<std::string> 
 
 bool verdict(const ImageDiff &diff, const ImageDiffOptions &options) {
     switch (options.metric) {
-    case DiffMetric::Fail:
-        return diff.failedPercent <= options.failPercent;
-    case DiffMetric::RelMse:
-        return diff.relMse <= *options.maxRelMse;
-    case DiffMetric::ZTest:
-        return *diff.zTestPassFraction >= kZTestMinPassFraction;
+    case DiffMetric::Fail: return diff.failedPercent <= options.failPercent;
+    case DiffMetric::RelMse: return diff.relMse <= *options.maxRelMse;
+    case DiffMetric::ZTest: return *diff.zTestPassFraction >= kZTestMinPassFraction;
     }
     throw std::invalid_argument("unknown metric");
 }

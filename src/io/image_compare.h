@@ -51,11 +51,11 @@ struct ImageDiff {
     double maxError = 0;
     int maxErrorX = 0, maxErrorY = 0;  // the pixel of maxError, from the top left
     double rmse = 0;
-    double relMse = 0;                 // mean of (a - b)² / (b² + 0.01)
-    double psnrDb = 0;                 // for a peak of 1; infinite for identical images
+    double relMse = 0;                        // mean of (a - b)² / (b² + 0.01)
+    double psnrDb = 0;                        // for a peak of 1; infinite for identical images
     std::optional<double> zTestPassFraction;  // of the values whose p-value exceeds the corrected alpha
-    bool warned = false;  // more than warnPercent of the pixels exceed the warning threshold
-    bool passed = false;  // the verdict of the chosen metric
+    bool warned = false;                      // more than warnPercent of the pixels exceed the warning threshold
+    bool passed = false;                      // the verdict of the chosen metric
 };
 
 // The Z-test passes when at least this fraction of the values pass (as in Mitsuba 3).

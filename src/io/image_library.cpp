@@ -46,9 +46,8 @@ std::unique_ptr<ImageLibrary> loadImageLibrary(const std::filesystem::path &file
     // Never closed: the library's objects run code from the plugin until the process ends.
     void *plugin = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!plugin) {
-        throw std::runtime_error(
-            fmt::format("cannot load the image plugin {} (set VEDUTA_IMAGE_PLUGIN to its path): {}", file.string(),
-                        dlerror()));
+        throw std::runtime_error(fmt::format(
+            "cannot load the image plugin {} (set VEDUTA_IMAGE_PLUGIN to its path): {}", file.string(), dlerror()));
     }
     auto *create = reinterpret_cast<CreateImageLibraryFunction *>(dlsym(plugin, kImagePluginEntry));
     if (!create) {

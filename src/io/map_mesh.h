@@ -13,8 +13,8 @@ namespace veduta {
 
 struct MapMesh {
     std::vector<CrsCoordinate> positions;
-    std::vector<Vec3f> normals;  // per vertex, in the file's grid; empty: none
-    std::vector<Vec2f> uvs;      // per vertex; empty: none
+    std::vector<Vec3f> normals;     // per vertex, in the file's grid; empty: none
+    std::vector<Vec2f> uvs;         // per vertex; empty: none
     std::vector<uint32_t> indices;  // three per triangle
 };
 

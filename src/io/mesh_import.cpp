@@ -1,9 +1,9 @@
 #include "io/mesh_import.h"
 
-#include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <fmt/format.h>
+#include <assimp/Importer.hpp>
 
 #include "core/error.h"
 
@@ -18,20 +18,24 @@ Transform toTransform(const aiMatrix4x4 &m) {
 Mesh convert(const aiMesh &in, const std::filesystem::path &file) {
     Mesh m;
     m.positions.reserve(in.mNumVertices);
-    for (unsigned i = 0; i < in.mNumVertices; ++i) m.positions.push_back({in.mVertices[i].x, in.mVertices[i].y, in.mVertices[i].z});
+    for (unsigned i = 0; i < in.mNumVertices; ++i)
+        m.positions.push_back({in.mVertices[i].x, in.mVertices[i].y, in.mVertices[i].z});
     if (in.HasNormals()) {
-        for (unsigned i = 0; i < in.mNumVertices; ++i) m.normals.push_back({in.mNormals[i].x, in.mNormals[i].y, in.mNormals[i].z});
+        for (unsigned i = 0; i < in.mNumVertices; ++i)
+            m.normals.push_back({in.mNormals[i].x, in.mNormals[i].y, in.mNormals[i].z});
     }
     if (in.HasTextureCoords(0)) {
-        for (unsigned i = 0; i < in.mNumVertices; ++i) m.uvs.push_back({in.mTextureCoords[0][i].x, in.mTextureCoords[0][i].y});
+        for (unsigned i = 0; i < in.mNumVertices; ++i)
+            m.uvs.push_back({in.mTextureCoords[0][i].x, in.mTextureCoords[0][i].y});
     }
     for (unsigned f = 0; f < in.mNumFaces; ++f) {
         const aiFace &face = in.mFaces[f];
         if (face.mNumIndices != 3) continue;  // points and lines left after triangulation
         for (unsigned k = 0; k < 3; ++k) {
             if (face.mIndices[k] >= in.mNumVertices) {
-                throw InputError({file.string()}, fmt::format("face {} refers to vertex {}, beyond the {} vertices", f,
-                                                              face.mIndices[k], in.mNumVertices));
+                throw InputError({file.string()},
+                                 fmt::format("face {} refers to vertex {}, beyond the {} vertices", f, face.mIndices[k],
+                                             in.mNumVertices));
             }
         }
         m.indices.insert(m.indices.end(), {face.mIndices[0], face.mIndices[1], face.mIndices[2]});
@@ -53,8 +57,8 @@ Mesh importMesh(const std::filesystem::path &file) {
     if (!std::filesystem::is_regular_file(file)) throw InputError({file.string()}, "no such mesh file");
     Assimp::Importer importer;
     // Normals are the file's own; we do not invent smooth normals for faceted models.
-    const aiScene *scene = importer.ReadFile(file.string(), aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                                                                aiProcess_SortByPType);
+    const aiScene *scene = importer.ReadFile(
+        file.string(), aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
     if (!scene || !scene->mRootNode || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) {
         throw InputError({file.string()}, std::string("cannot read mesh: ") + importer.GetErrorString());
     }

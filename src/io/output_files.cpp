@@ -22,7 +22,8 @@ void prepareOutputFile(const std::filesystem::path &file) {
     std::filesystem::path folder = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
     std::error_code error;
     std::filesystem::create_directories(folder, error);
-    if (error) throw std::runtime_error(fmt::format("{}: cannot create its folder: {}", file.string(), error.message()));
+    if (error)
+        throw std::runtime_error(fmt::format("{}: cannot create its folder: {}", file.string(), error.message()));
     if (std::filesystem::is_directory(file)) throw std::runtime_error(fmt::format("{}: is a folder", file.string()));
     if (access(folder.c_str(), W_OK) != 0) {
         throw std::runtime_error(fmt::format("{}: its folder is not writable", file.string()));

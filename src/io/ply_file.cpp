@@ -22,11 +22,11 @@ enum class PlyType { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64
 
 std::optional<PlyType> plyType(std::string_view name) {
     static const std::pair<std::string_view, PlyType> names[] = {
-        {"char", PlyType::Int8},     {"int8", PlyType::Int8},       {"uchar", PlyType::UInt8},
-        {"uint8", PlyType::UInt8},   {"short", PlyType::Int16},     {"int16", PlyType::Int16},
-        {"ushort", PlyType::UInt16}, {"uint16", PlyType::UInt16},   {"int", PlyType::Int32},
-        {"int32", PlyType::Int32},   {"uint", PlyType::UInt32},     {"uint32", PlyType::UInt32},
-        {"float", PlyType::Float32}, {"float32", PlyType::Float32}, {"double", PlyType::Float64},
+        {"char", PlyType::Int8},      {"int8", PlyType::Int8},       {"uchar", PlyType::UInt8},
+        {"uint8", PlyType::UInt8},    {"short", PlyType::Int16},     {"int16", PlyType::Int16},
+        {"ushort", PlyType::UInt16},  {"uint16", PlyType::UInt16},   {"int", PlyType::Int32},
+        {"int32", PlyType::Int32},    {"uint", PlyType::UInt32},     {"uint32", PlyType::UInt32},
+        {"float", PlyType::Float32},  {"float32", PlyType::Float32}, {"double", PlyType::Float64},
         {"float64", PlyType::Float64}};
     for (auto [n, type] : names)
         if (n == name) return type;
@@ -35,14 +35,14 @@ std::optional<PlyType> plyType(std::string_view name) {
 
 size_t typeSize(PlyType type) {
     switch (type) {
-        case PlyType::Int8:
-        case PlyType::UInt8: return 1;
-        case PlyType::Int16:
-        case PlyType::UInt16: return 2;
-        case PlyType::Int32:
-        case PlyType::UInt32:
-        case PlyType::Float32: return 4;
-        case PlyType::Float64: return 8;
+    case PlyType::Int8:
+    case PlyType::UInt8: return 1;
+    case PlyType::Int16:
+    case PlyType::UInt16: return 2;
+    case PlyType::Int32:
+    case PlyType::UInt32:
+    case PlyType::Float32: return 4;
+    case PlyType::Float64: return 8;
     }
     return 0;
 }
@@ -56,14 +56,14 @@ double fromBytes(const unsigned char *bytes) {
 
 double binaryValue(PlyType type, const unsigned char *bytes) {
     switch (type) {
-        case PlyType::Int8: return fromBytes<int8_t>(bytes);
-        case PlyType::UInt8: return fromBytes<uint8_t>(bytes);
-        case PlyType::Int16: return fromBytes<int16_t>(bytes);
-        case PlyType::UInt16: return fromBytes<uint16_t>(bytes);
-        case PlyType::Int32: return fromBytes<int32_t>(bytes);
-        case PlyType::UInt32: return fromBytes<uint32_t>(bytes);
-        case PlyType::Float32: return fromBytes<float>(bytes);
-        case PlyType::Float64: return fromBytes<double>(bytes);
+    case PlyType::Int8: return fromBytes<int8_t>(bytes);
+    case PlyType::UInt8: return fromBytes<uint8_t>(bytes);
+    case PlyType::Int16: return fromBytes<int16_t>(bytes);
+    case PlyType::UInt16: return fromBytes<uint16_t>(bytes);
+    case PlyType::Int32: return fromBytes<int32_t>(bytes);
+    case PlyType::UInt32: return fromBytes<uint32_t>(bytes);
+    case PlyType::Float32: return fromBytes<float>(bytes);
+    case PlyType::Float64: return fromBytes<double>(bytes);
     }
     return 0;
 }
@@ -113,7 +113,8 @@ class PlyReader {
         for (const PlyElement &e : elements_) readElement(e);
         for (uint32_t index : mesh_.indices)
             if (index >= mesh_.positions.size())
-                failFile(fmt::format("a face refers to vertex {}, beyond the {} vertices", index, mesh_.positions.size()));
+                failFile(
+                    fmt::format("a face refers to vertex {}, beyond the {} vertices", index, mesh_.positions.size()));
         if (mesh_.indices.empty()) failFile("mesh file holds no triangles");
         return std::move(mesh_);
     }
@@ -129,7 +130,8 @@ class PlyReader {
 
     std::string nextLine() {
         std::string line;
-        if (!std::getline(in_, line)) fail(inBody_ ? "the file ends before its last element" : "the header has no end_header");
+        if (!std::getline(in_, line))
+            fail(inBody_ ? "the file ends before its last element" : "the header has no end_header");
         ++line_;
         if (!line.empty() && line.back() == '\r') line.pop_back();
         return line;
@@ -193,9 +195,11 @@ class PlyReader {
     double binaryValueAt(PlyType type) {
         unsigned char bytes[8];
         size_t size = typeSize(type);
-        if (!in_.read(reinterpret_cast<char *>(bytes), std::streamsize(size))) fail("the file ends before its last element");
+        if (!in_.read(reinterpret_cast<char *>(bytes), std::streamsize(size)))
+            fail("the file ends before its last element");
         offset_ += size;
-        if ((format_ == PlyFormat::BigEndian) != (std::endian::native == std::endian::big)) std::reverse(bytes, bytes + size);
+        if ((format_ == PlyFormat::BigEndian) != (std::endian::native == std::endian::big))
+            std::reverse(bytes, bytes + size);
         return binaryValue(type, bytes);
     }
 
@@ -213,7 +217,8 @@ class PlyReader {
                     continue;
                 }
                 double count = value(*property.countType);
-                bool corners = e.name == "face" && (property.name == "vertex_indices" || property.name == "vertex_index");
+                bool corners =
+                    e.name == "face" && (property.name == "vertex_indices" || property.name == "vertex_index");
                 for (double k = 0; k < count; ++k) {
                     double index = value(property.type);
                     if (corners) {
@@ -232,8 +237,14 @@ class PlyReader {
         std::optional<size_t> x = e.property({"x"}), y = e.property({"y"}), z = e.property({"z"});
         if (!x || !y || !z)
             throw InputError({file_.string(), e.line, 0}, "the vertex element needs the properties x, y and z");
-        VertexLayout l{*x, *y, *z, e.property({"nx"}), e.property({"ny"}), e.property({"nz"}),
-                       e.property({"u", "s", "texture_u", "texture_s"}), e.property({"v", "t", "texture_v", "texture_t"})};
+        VertexLayout l{*x,
+                       *y,
+                       *z,
+                       e.property({"nx"}),
+                       e.property({"ny"}),
+                       e.property({"nz"}),
+                       e.property({"u", "s", "texture_u", "texture_s"}),
+                       e.property({"v", "t", "texture_v", "texture_t"})};
         allNormals_ = l.nx && l.ny && l.nz;
         allUvs_ = l.u && l.v;
         return l;

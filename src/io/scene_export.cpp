@@ -10,14 +10,14 @@
 #include <utility>
 #include <vector>
 
-#include <assimp/Exporter.hpp>
 #include <assimp/config.h>
 #include <assimp/material.h>
 #include <assimp/scene.h>
 #include <fmt/format.h>
+#include <assimp/Exporter.hpp>
 
-#include "core/axes.h"
 #include "core/atomic_file.h"
+#include "core/axes.h"
 
 namespace veduta {
 
@@ -241,15 +241,15 @@ std::unique_ptr<aiScene> gltfScene(const RenderScene &scene, ExportFormat format
         auto found = prototypeMeshes.find(key);
         if (found == prototypeMeshes.end()) {
             std::string name = instance.materialOverride == kNoMaterial
-                                   ? fmt::format("prototype_{}", instance.prototype)
-                                   : fmt::format("prototype_{}/{}", instance.prototype,
-                                                 scene.materials.at(instance.materialOverride).name);
+                ? fmt::format("prototype_{}", instance.prototype)
+                : fmt::format("prototype_{}/{}", instance.prototype,
+                              scene.materials.at(instance.materialOverride).name);
             Mesh mesh = placed(scene.prototypes.at(instance.prototype), kZUpToYUp, instance.materialOverride);
             found = prototypeMeshes.emplace(key, out.addMesh(mesh, name)).first;
         }
         // The prototype's vertices are already Y up: turn them back, place, turn again.
-        out.addNode(objectName(instance.objectId, instance.buildingId),
-                    kZUpToYUp * instance.objectToWorld * kYUpToZUp, found->second);
+        out.addNode(objectName(instance.objectId, instance.buildingId), kZUpToYUp * instance.objectToWorld * kYUpToZUp,
+                    found->second);
     }
     stats.meshes = scene.meshes.size() + prototypeMeshes.size();
     return std::move(out).build();
@@ -273,9 +273,9 @@ std::unique_ptr<aiScene> objScene(const RenderScene &scene, ExportStats &stats) 
 
 const char *assimpFormatId(ExportFormat format) {
     switch (format) {
-        case ExportFormat::Obj: return "obj";
-        case ExportFormat::Gltf: return "gltf2";
-        case ExportFormat::Glb: return "glb2";
+    case ExportFormat::Obj: return "obj";
+    case ExportFormat::Gltf: return "gltf2";
+    case ExportFormat::Glb: return "glb2";
     }
     throw std::invalid_argument("unknown export format");
 }

@@ -21,9 +21,10 @@ XmlDocument XmlDocument::fromString(std::string text, std::string name) {
     return XmlDocument(std::move(text), std::move(name));
 }
 
-XmlDocument::XmlDocument(std::string text, std::string name)
-    : name_(std::move(name)), text_(std::make_unique<std::string>(std::move(text))),
-      doc_(std::make_unique<pugi::xml_document>()) {
+XmlDocument::XmlDocument(std::string text, std::string name) :
+    name_(std::move(name)),
+    text_(std::make_unique<std::string>(std::move(text))),
+    doc_(std::make_unique<pugi::xml_document>()) {
     lineStarts_.push_back(0);
     for (size_t i = 0; i < text_->size(); ++i) {
         if ((*text_)[i] == '\n') lineStarts_.push_back(i + 1);

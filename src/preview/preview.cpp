@@ -101,7 +101,7 @@ struct TileFragments {
     std::vector<uint32_t> item;
     std::vector<uint32_t> triangle;  // with kBackFacing set when its back is towards the camera
     std::vector<float> b1, b2;       // barycentrics of the triangle's vertices 1 and 2
-    std::vector<float> edgePixels;  // distance to the nearest edge of that triangle, for wireframes
+    std::vector<float> edgePixels;   // distance to the nearest edge of that triangle, for wireframes
 
     void reset(size_t n) {
         invDepth.assign(n, 0.0f);
@@ -138,11 +138,15 @@ struct Tile {
 
 class Rasterizer {
   public:
-    Rasterizer(const RenderScene &scene, const PreviewOptions &options)
-        : scene_(scene), options_(options), projection_(scene.camera), width_(scene.camera.width),
-          height_(scene.camera.height), tilesX_((width_ + options.tileSize - 1) / options.tileSize),
-          tilesY_((height_ + options.tileSize - 1) / options.tileSize),
-          ambient_(scene.environment.averageRadiance()) {
+    Rasterizer(const RenderScene &scene, const PreviewOptions &options) :
+        scene_(scene),
+        options_(options),
+        projection_(scene.camera),
+        width_(scene.camera.width),
+        height_(scene.camera.height),
+        tilesX_((width_ + options.tileSize - 1) / options.tileSize),
+        tilesY_((height_ + options.tileSize - 1) / options.tileSize),
+        ambient_(scene.environment.averageRadiance()) {
         for (const Material &m : scene.materials) albedos_.push_back(previewAlbedo(m, scene.textures.get()));
         collectItems();
         binItems();
@@ -152,22 +156,26 @@ class Rasterizer {
     }
 
     void run(PreviewImage &image) {
-        tbb::parallel_for(tbb::blocked_range<size_t>(0, bins_.size(), 1), [&](const tbb::blocked_range<size_t> &r) {
-            TileScratch scratch;
-            for (size_t t = r.begin(); t != r.end(); ++t) {
-                Tile tile = tileRect(t);
-                scratch.fragments.reset(size_t(tile.x1 - tile.x0) * size_t(tile.y1 - tile.y0));
-                rasterizeTile(t, tile, scratch);
-                shadeTile(tile, scratch.fragments, image);
-            }
-        }, tbb::simple_partitioner());
+        tbb::parallel_for(
+            tbb::blocked_range<size_t>(0, bins_.size(), 1),
+            [&](const tbb::blocked_range<size_t> &r) {
+                TileScratch scratch;
+                for (size_t t = r.begin(); t != r.end(); ++t) {
+                    Tile tile = tileRect(t);
+                    scratch.fragments.reset(size_t(tile.x1 - tile.x0) * size_t(tile.y1 - tile.y0));
+                    rasterizeTile(t, tile, scratch);
+                    shadeTile(tile, scratch.fragments, image);
+                }
+            },
+            tbb::simple_partitioner());
     }
 
   private:
     void collectItems() {
         std::vector<Box3> prototypeBounds;
         for (const Mesh &p : scene_.prototypes) prototypeBounds.push_back(boundsOf(p));
-        for (const BakedMesh &m : scene_.meshes) addItem(m.mesh, Transform{}, boundsOf(m.mesh), kNoMaterial, m.objectId);
+        for (const BakedMesh &m : scene_.meshes)
+            addItem(m.mesh, Transform{}, boundsOf(m.mesh), kNoMaterial, m.objectId);
         for (const Instance &inst : scene_.instances) {
             addItem(scene_.prototypes[inst.prototype], inst.objectToWorld, prototypeBounds[inst.prototype],
                     inst.materialOverride, inst.objectId);
@@ -205,7 +213,12 @@ class Rasterizer {
         depthNear_ = std::min(depthNear_, std::max(nearest, kNear));
         depthFar_ = std::max(depthFar_, farthest);
         int ts = options_.tileSize;
-        DrawItem item{&mesh, objectToWorld, cameraFromObject, objectToWorld.normalTransform(), override, id,
+        DrawItem item{&mesh,
+                      objectToWorld,
+                      cameraFromObject,
+                      objectToWorld.normalTransform(),
+                      override,
+                      id,
                       std::clamp(int(std::floor(std::max(minX, 0.0f))) / ts, 0, tilesX_ - 1),
                       std::clamp(int(std::floor(std::max(minY, 0.0f))) / ts, 0, tilesY_ - 1),
                       std::clamp(int(std::min(maxX, float(width_))) / ts, 0, tilesX_ - 1),
@@ -219,7 +232,8 @@ class Rasterizer {
         for (uint32_t i = 0; i < items_.size(); ++i) {
             const DrawItem &item = items_[i];
             for (int ty = item.y0; ty <= item.y1; ++ty) {
-                for (int tx = item.x0; tx <= item.x1; ++tx) bins_[size_t(ty) * size_t(tilesX_) + size_t(tx)].push_back(i);
+                for (int tx = item.x0; tx <= item.x1; ++tx)
+                    bins_[size_t(ty) * size_t(tilesX_) + size_t(tx)].push_back(i);
             }
         }
     }
@@ -275,8 +289,8 @@ class Rasterizer {
                     std::max({a.y, b.y, c.y}) < top || std::min({a.y, b.y, c.y}) > bottom) {
                     continue;
                 }
-                RasterVertex r[3] = {{a.x, a.y, a.invZ, {1, 0, 0}}, {b.x, b.y, b.invZ, {0, 1, 0}},
-                                     {c.x, c.y, c.invZ, {0, 0, 1}}};
+                RasterVertex r[3] = {
+                    {a.x, a.y, a.invZ, {1, 0, 0}}, {b.x, b.y, b.invZ, {0, 1, 0}}, {c.x, c.y, c.invZ, {0, 0, 1}}};
                 rasterize(r, tile, scratch.fragments, i, tri);
             }
         }
@@ -313,9 +327,11 @@ class Rasterizer {
         // Pixels whose centres the triangle's box holds, clamped to the tile in float first:
         // a vertex just beyond the near plane can project far outside int's range.
         int px0 = int(std::ceil(std::clamp(std::min({x[0], x[1], x[2]}) - 0.5f, float(tile.x0), float(tile.x1))));
-        int px1 = int(std::floor(std::clamp(std::max({x[0], x[1], x[2]}) - 0.5f, float(tile.x0 - 1), float(tile.x1 - 1))));
+        int px1 =
+            int(std::floor(std::clamp(std::max({x[0], x[1], x[2]}) - 0.5f, float(tile.x0 - 1), float(tile.x1 - 1))));
         int py0 = int(std::ceil(std::clamp(std::min({y[0], y[1], y[2]}) - 0.5f, float(tile.y0), float(tile.y1))));
-        int py1 = int(std::floor(std::clamp(std::max({y[0], y[1], y[2]}) - 0.5f, float(tile.y0 - 1), float(tile.y1 - 1))));
+        int py1 =
+            int(std::floor(std::clamp(std::max({y[0], y[1], y[2]}) - 0.5f, float(tile.y0 - 1), float(tile.y1 - 1))));
         if (px0 > px1 || py0 > py1) return;
         float area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
         if (area == 0 || !std::isfinite(area)) return;
@@ -345,7 +361,8 @@ class Rasterizer {
         }
         for (int py = py0; py <= py1; ++py) {
             float cy = float(py) + 0.5f;
-            float row[3] = {dxEdge[0] * (cy - originY[0]), dxEdge[1] * (cy - originY[1]), dxEdge[2] * (cy - originY[2])};
+            float row[3] = {dxEdge[0] * (cy - originY[0]), dxEdge[1] * (cy - originY[1]),
+                            dxEdge[2] * (cy - originY[2])};
             for (int px = px0; px <= px1; ++px) {
                 float cx = float(px) + 0.5f;
                 float e[3] = {edgeSign[0] * (row[0] - dyEdge[0] * (cx - originX[0])),
@@ -386,7 +403,7 @@ class Rasterizer {
     // The depth mode's grey ramp spans the depths of the drawn objects' boxes.
     float depthNear_ = kInfinity, depthFar_ = kNear;
     std::optional<ShadowMap> shadowMap_;
-    Vec3f ambient_;  // the environment's mean radiance: the preview's sky light and background
+    Vec3f ambient_;               // the environment's mean radiance: the preview's sky light and background
     std::vector<Vec3f> albedos_;  // per material
 };
 
@@ -396,8 +413,8 @@ Vec3f Rasterizer::surfaceColor(const DrawItem &item, uint32_t triangleWord, floa
     const uint32_t *idx = &mesh.indices[3 * size_t(tri)];
     float b0 = 1 - b1 - b2;
     Vec3f n = mesh.normals.empty()
-                  ? cross(mesh.positions[idx[1]] - mesh.positions[idx[0]], mesh.positions[idx[2]] - mesh.positions[idx[0]])
-                  : mesh.normals[idx[0]] * b0 + mesh.normals[idx[1]] * b1 + mesh.normals[idx[2]] * b2;
+        ? cross(mesh.positions[idx[1]] - mesh.positions[idx[0]], mesh.positions[idx[2]] - mesh.positions[idx[0]])
+        : mesh.normals[idx[0]] * b0 + mesh.normals[idx[1]] * b1 + mesh.normals[idx[2]] * b2;
     n = normalize(item.normalToWorld.applyVector(n));
     // Surfaces are two-sided. As in the path tracer, the side seen is decided by the
     // triangle's winding, and a smooth normal follows it.
@@ -412,8 +429,8 @@ Vec3f Rasterizer::surfaceColor(const DrawItem &item, uint32_t triangleWord, floa
         if (cosine > 0 && shadowMap_) {
             Vec3f world = item.objectToWorld.applyPoint(mesh.positions[idx[0]] * b0 + mesh.positions[idx[1]] * b1 +
                                                         mesh.positions[idx[2]] * b2);
-            Vec3f ng = item.normalToWorld.applyVector(
-                cross(mesh.positions[idx[1]] - mesh.positions[idx[0]], mesh.positions[idx[2]] - mesh.positions[idx[0]]));
+            Vec3f ng = item.normalToWorld.applyVector(cross(mesh.positions[idx[1]] - mesh.positions[idx[0]],
+                                                            mesh.positions[idx[2]] - mesh.positions[idx[0]]));
             if (shadowMap_->shadowed(world, normalize(ng))) cosine = 0;
         }
         return albedo * kInvPi * sun.irradiance * cosine + albedo * ambient_;

@@ -25,12 +25,12 @@ struct PreviewOptions {
     bool backfaceCulling = false;  // skip triangles facing away (scenes are two-sided by default)
     bool shadows = false;          // sun shadows from a shadow map (shaded mode)
     int shadowMapSize = 2048;      // texels on a side
-    int tileSize = 64;  // pixels; changes speed only
+    int tileSize = 64;             // pixels; changes speed only
 };
 
 // What the preview computed per pixel, top row first.
 struct PreviewImage {
-    RgbaImage film;                       // the chosen mode's colours, linear (PNG output applies sRGB)
+    RgbaImage film;                  // the chosen mode's colours, linear (PNG output applies sRGB)
     std::vector<float> depth;        // view-axis distance; +infinity where no geometry
     std::vector<uint32_t> objectId;  // 0 where no geometry
 };

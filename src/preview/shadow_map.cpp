@@ -18,7 +18,8 @@ constexpr float kNothing = -std::numeric_limits<float>::infinity();
 size_t placedCount(const RenderScene &scene) { return scene.meshes.size() + scene.instances.size(); }
 
 const Mesh &placedMesh(const RenderScene &scene, size_t i) {
-    return i < scene.meshes.size() ? scene.meshes[i].mesh : scene.prototypes[scene.instances[i - scene.meshes.size()].prototype];
+    return i < scene.meshes.size() ? scene.meshes[i].mesh
+                                   : scene.prototypes[scene.instances[i - scene.meshes.size()].prototype];
 }
 
 Transform placedTransform(const RenderScene &scene, size_t i) {
@@ -27,14 +28,15 @@ Transform placedTransform(const RenderScene &scene, size_t i) {
 
 }  // namespace
 
-ShadowMap::ShadowMap(const RenderScene &scene, int size)
-    : frame_(Frame::fromNormal(scene.sun.direction)), size_(size), height_(size_t(size) * size_t(size), kNothing) {
+ShadowMap::ShadowMap(const RenderScene &scene, int size) :
+    frame_(Frame::fromNormal(scene.sun.direction)), size_(size), height_(size_t(size) * size_t(size), kNothing) {
     // The map's extent: the corners of every placed mesh's box, in the sun's frame.
     std::vector<std::pair<Vec3f, Vec3f>> prototypeBoxes;
     auto boxOf = [](const Mesh &m) {
         Vec3f lo(std::numeric_limits<float>::infinity()), hi(-std::numeric_limits<float>::infinity());
-        for (const Vec3f &p : m.positions) lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)},
-                                           hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+        for (const Vec3f &p : m.positions)
+            lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)},
+            hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
         return std::make_pair(lo, hi);
     };
     for (const Mesh &p : scene.prototypes) prototypeBoxes.push_back(boxOf(p));
@@ -42,7 +44,7 @@ ShadowMap::ShadowMap(const RenderScene &scene, int size)
     for (size_t i = 0; i < placedCount(scene); ++i) {
         if (placedMesh(scene, i).vertexCount() == 0) continue;
         auto [lo, hi] = i < scene.meshes.size() ? boxOf(scene.meshes[i].mesh)
-                                                 : prototypeBoxes[scene.instances[i - scene.meshes.size()].prototype];
+                                                : prototypeBoxes[scene.instances[i - scene.meshes.size()].prototype];
         Transform toWorld = placedTransform(scene, i);
         for (int c = 0; c < 8; ++c) {
             Vec3f p = toWorld.applyPoint({c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z});
@@ -57,7 +59,8 @@ ShadowMap::ShadowMap(const RenderScene &scene, int size)
 
     // Each thread draws its share of the meshes into a map of its own; the maps are merged by
     // taking the highest surface, which does not depend on the order, so neither does the result.
-    tbb::enumerable_thread_specific<std::vector<float>> maps([&] { return std::vector<float>(height_.size(), kNothing); });
+    tbb::enumerable_thread_specific<std::vector<float>> maps(
+        [&] { return std::vector<float>(height_.size(), kNothing); });
     tbb::parallel_for(tbb::blocked_range<size_t>(0, placedCount(scene)), [&](const tbb::blocked_range<size_t> &r) {
         std::vector<float> &map = maps.local();
         std::vector<Vec3f> light;

@@ -24,12 +24,12 @@ struct ThesisMaterial {
 // tangent, y the bitangent, z the normal) and need not be unit length: the shader normalises
 // them.
 struct PpsunsInputs {
-    Vec3f baseColor;       // texture2D(colorMap, texCoord)
-    Vec3f normalTexel;     // texture2D(normalMap, texCoord), each channel in [0, 1]
-    float specularTexel;   // texture2D(specularMap, …).x
-    Vec3f lightVec;        // towards the light
-    Vec3f eyeVec;          // towards the eye
-    Vec3f environment;     // textureCube(DiffuseEnvMap, world normal)
+    Vec3f baseColor;      // texture2D(colorMap, texCoord)
+    Vec3f normalTexel;    // texture2D(normalMap, texCoord), each channel in [0, 1]
+    float specularTexel;  // texture2D(specularMap, …).x
+    Vec3f lightVec;       // towards the light
+    Vec3f eyeVec;         // towards the eye
+    Vec3f environment;    // textureCube(DiffuseEnvMap, world normal)
 };
 
 // gl_FragColor = (vAmbient·1.5 + env·0.5 + vDiffuse·0.5)·base + vSpecular (L1127), with the

@@ -44,10 +44,14 @@ Vec3f thinGlassTransmittance(float cosTheta, float ior, const Vec3f &tint) {
     return tint * (1 - thinGlassReflectance(cosTheta, ior));
 }
 
-Bsdf::Bsdf(const BsdfInputs &inputs, const Vec3f &shadingNormal, const Vec3f &geometricNormal)
-    : frame_(Frame::fromNormal(shadingNormal)), geometricNormal_(geometricNormal), mirror_(clamp01(inputs.mirror)),
-      exponent_(std::clamp(inputs.exponent, kMinPhongExponent, kMaxPhongExponent)), thinGlass_(inputs.thinGlass),
-      ior_(inputs.ior), glassTint_(inputs.glassTint) {
+Bsdf::Bsdf(const BsdfInputs &inputs, const Vec3f &shadingNormal, const Vec3f &geometricNormal) :
+    frame_(Frame::fromNormal(shadingNormal)),
+    geometricNormal_(geometricNormal),
+    mirror_(clamp01(inputs.mirror)),
+    exponent_(std::clamp(inputs.exponent, kMinPhongExponent, kMaxPhongExponent)),
+    thinGlass_(inputs.thinGlass),
+    ior_(inputs.ior),
+    glassTint_(inputs.glassTint) {
     Vec3f kd = nonNegative(inputs.diffuse), ks = nonNegative(inputs.specular);
     float sum = maxComponent(kd + ks);
     if (sum > 1) {

@@ -24,7 +24,7 @@ struct BsdfInputs {
 
 struct BsdfSample {
     Vec3f wi;
-    Vec3f weight;  // f·|cos θi| / pdf; for a delta lobe its reflectance / the lobe's probability
+    Vec3f weight;   // f·|cos θi| / pdf; for a delta lobe its reflectance / the lobe's probability
     float pdf = 0;  // solid-angle density of all non-delta lobes; for a delta lobe its probability
     bool delta = false;
     // Straight through a thin pane (wi = −wo): the path goes on as if the pane were not there,

@@ -25,8 +25,7 @@ bool countMemory(void *user, ssize_t bytes, bool /*post*/) {
     auto *counter = static_cast<MemoryCounter *>(user);
     int64_t now = counter->current.fetch_add(bytes) + bytes;
     int64_t peak = counter->peak.load();
-    while (now > peak && !counter->peak.compare_exchange_weak(peak, now)) {
-    }
+    while (now > peak && !counter->peak.compare_exchange_weak(peak, now)) {}
     return true;
 }
 
@@ -40,7 +39,8 @@ struct ErrorRecord {
 void recordError(void *user, RTCError code, const char *message) {
     auto *record = static_cast<ErrorRecord *>(user);
     std::lock_guard lock(record->mutex);
-    if (record->message.empty()) record->message = fmt::format("Embree error {}: {}", int(code), message ? message : "");
+    if (record->message.empty())
+        record->message = fmt::format("Embree error {}: {}", int(code), message ? message : "");
 }
 
 void *newBuffer(RTCGeometry geometry, RTCBufferType type, RTCFormat format, size_t stride, size_t count) {

@@ -19,10 +19,13 @@ bool isBlack(const Cubemap &map) {
 
 }  // namespace
 
-SunLight::SunLight(const Sun &sun)
-    : sun_(sun), isDisc_(sun.angularDiameterDegrees > 0), oneMinusCosRadius_(sun.oneMinusCosRadius()),
-      frame_(Frame::fromNormal(sun.direction)), discRadiance_(isDisc_ ? sun.discRadiance() : Vec3f(0.0f)),
-      conePdf_(isDisc_ ? uniformConePdf(oneMinusCosRadius_) : 0.0f) {}
+SunLight::SunLight(const Sun &sun) :
+    sun_(sun),
+    isDisc_(sun.angularDiameterDegrees > 0),
+    oneMinusCosRadius_(sun.oneMinusCosRadius()),
+    frame_(Frame::fromNormal(sun.direction)),
+    discRadiance_(isDisc_ ? sun.discRadiance() : Vec3f(0.0f)),
+    conePdf_(isDisc_ ? uniformConePdf(oneMinusCosRadius_) : 0.0f) {}
 
 LightSample SunLight::sample(Vec2f u) const {
     if (!isDisc_) return {sun_.direction, sun_.irradiance, 0.0f};

@@ -41,8 +41,8 @@ Vec3f MaterialLookup::shadingNormal(const Material &m, const SurfaceInteraction 
         lookup(m.normalMap, m, si, footprint, texel, 3);
         // The map is relative to the side the mesh faces; a ray from behind sees it mirrored.
         Vec3f facing = si.backFacing ? -n : n;
-        Vec3f mapped = normalFromMap({texel[0], texel[1], texel[2]}, facing, si.tangent, si.bitangentSign,
-                                     m.normalStrength);
+        Vec3f mapped =
+            normalFromMap({texel[0], texel[1], texel[2]}, facing, si.tangent, si.bitangentSign, m.normalStrength);
         n = si.backFacing ? -mapped : mapped;
     }
     return ensureValidReflection(si.geometricNormal, wo, n);

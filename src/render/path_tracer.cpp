@@ -24,10 +24,15 @@ bool isBlack(const Vec3f &v) { return v.x == 0 && v.y == 0 && v.z == 0; }
 
 }  // namespace
 
-PathTracer::PathTracer(const RenderScene &scene, const Bvh &bvh)
-    : scene_(scene), bvh_(bvh), surfaces_(scene), materials_(scene), sun_(scene.sun), environment_(scene.environment),
-      pixelSpread_(radians(scene.camera.verticalFovDegrees) / float(scene.camera.height)),
-      cameraForward_(normalize(scene.camera.lookAt - scene.camera.position)) {}
+PathTracer::PathTracer(const RenderScene &scene, const Bvh &bvh) :
+    scene_(scene),
+    bvh_(bvh),
+    surfaces_(scene),
+    materials_(scene),
+    sun_(scene.sun),
+    environment_(scene.environment),
+    pixelSpread_(radians(scene.camera.verticalFovDegrees) / float(scene.camera.height)),
+    cameraForward_(normalize(scene.camera.lookAt - scene.camera.position)) {}
 
 Vec3f PathTracer::radiance(const Ray &cameraRay, PixelSampler &sampler, RayCounts &counts, FirstHit *first) const {
     if (first) *first = FirstHit{};
@@ -167,16 +172,14 @@ Vec3f PathTracer::escapedLight(const Vec3f &direction, float bsdfPdf) const {
     Vec3f sun = sun_.radiance(direction);
     if (bsdfPdf == 0) return environment + sun;
     switch (scene_.settings.lightSampling) {
-    case LightSampling::Bsdf:
-        return environment + sun;
+    case LightSampling::Bsdf: return environment + sun;
     case LightSampling::Light:
         // Only what next-event estimation cannot reach: an environment it does not sample.
         return environment_.sampled() ? Vec3f(0.0f) : environment;
-    case LightSampling::Mis:
-        break;
+    case LightSampling::Mis: break;
     }
     return environment * powerHeuristic(bsdfPdf, environment_.pdf(direction)) +
-           sun * powerHeuristic(bsdfPdf, sun_.pdf(direction));
+        sun * powerHeuristic(bsdfPdf, sun_.pdf(direction));
 }
 
 }  // namespace veduta

@@ -50,9 +50,12 @@ bool isFinite(const Vec3f &v) { return std::isfinite(v.x) && std::isfinite(v.y) 
 // Samples of one pixel, with what every sample needs worked out once per render.
 class PixelSampling {
   public:
-    PixelSampling(const RenderScene &scene, const Bvh &bvh, uint32_t sampleOffset)
-        : seed_(scene.settings.seed), sampleOffset_(sampleOffset), cameraRays_(scene.camera), tracer_(scene, bvh),
-          filter_(scene.settings.filter) {}
+    PixelSampling(const RenderScene &scene, const Bvh &bvh, uint32_t sampleOffset) :
+        seed_(scene.settings.seed),
+        sampleOffset_(sampleOffset),
+        cameraRays_(scene.camera),
+        tracer_(scene, bvh),
+        filter_(scene.settings.filter) {}
 
     // Takes the pixel's samples from the film's count up to `end` (numbers within the render).
     void run(Film &film, int x, int y, uint32_t end, RenderStats &local) const {
@@ -123,28 +126,31 @@ void renderFilm(const RenderScene &scene, const Bvh &bvh, const RenderOptions &o
         const Clock::time_point passStart = Clock::now();
         const uint32_t done = stats.samplesDone, end = passEnd(done, total, step, settings);
         std::mutex statsMutex;
-        tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles.size(), 1), [&](const tbb::blocked_range<size_t> &r) {
-            // Denormals only slow traversal down; Embree recommends flushing them. The thread's
-            // own mode comes back when the task ends.
-            FlushDenormals flushDenormals;
-            RenderStats local;
-            for (size_t t = r.begin(); t != r.end(); ++t) {
-                const PixelWindow &tile = tiles[t];
-                uint64_t taken = 0;
-                for (int y = tile.y0; y < tile.y1; ++y) {
-                    for (int x = tile.x0; x < tile.x1; ++x) {
-                        size_t pixel = film.pixelIndex(x, y);
-                        if (!pixelNeedsSamples(film, pixel, done, total, settings)) continue;
-                        taken += end - film.sampleCount(pixel);
-                        sampling.run(film, x, y, end, local);
+        tbb::parallel_for(
+            tbb::blocked_range<size_t>(0, tiles.size(), 1),
+            [&](const tbb::blocked_range<size_t> &r) {
+                // Denormals only slow traversal down; Embree recommends flushing them. The thread's
+                // own mode comes back when the task ends.
+                FlushDenormals flushDenormals;
+                RenderStats local;
+                for (size_t t = r.begin(); t != r.end(); ++t) {
+                    const PixelWindow &tile = tiles[t];
+                    uint64_t taken = 0;
+                    for (int y = tile.y0; y < tile.y1; ++y) {
+                        for (int x = tile.x0; x < tile.x1; ++x) {
+                            size_t pixel = film.pixelIndex(x, y);
+                            if (!pixelNeedsSamples(film, pixel, done, total, settings)) continue;
+                            taken += end - film.sampleCount(pixel);
+                            sampling.run(film, x, y, end, local);
+                        }
                     }
+                    progress.advance(taken);
                 }
-                progress.advance(taken);
-            }
-            std::lock_guard lock(statsMutex);
-            stats.rays += local.rays;
-            stats.nonFiniteSamples += local.nonFiniteSamples;
-        }, tbb::simple_partitioner());
+                std::lock_guard lock(statsMutex);
+                stats.rays += local.rays;
+                stats.nonFiniteSamples += local.nonFiniteSamples;
+            },
+            tbb::simple_partitioner());
         stats.samplesDone = end;
         stats.seconds = secondsBefore + secondsSince(start);
         if (options.afterPass) options.afterPass(film, stats);

@@ -16,8 +16,8 @@ namespace veduta {
 
 struct RenderOptions {
     bool showProgress = false;
-    PixelWindow region;         // empty: the whole image
-    uint32_t sampleOffset = 0;  // pixels take samples [sampleOffset, sampleOffset + spp) of their sequence
+    PixelWindow region;           // empty: the whole image
+    uint32_t sampleOffset = 0;    // pixels take samples [sampleOffset, sampleOffset + spp) of their sequence
     double timeLimitSeconds = 0;  // 0: none; otherwise no pass starts that would end after it
     // Samples per pass without adaptive sampling; 0: all in one pass, unless a time limit or
     // afterPass needs several. Changes speed only, never the image.
@@ -32,8 +32,7 @@ Film makeFilm(const RenderScene &scene, const RenderOptions &options);
 // Renders into `film` from where `stats` says it stands (nothing done for a fresh film, or
 // what a checkpoint recorded) until every pixel has its samples, has converged, or the time
 // limit is reached. The scene's settings give the samples per pixel and the tile size.
-void renderFilm(const RenderScene &scene, const Bvh &bvh, const RenderOptions &options, Film &film,
-                RenderStats &stats);
+void renderFilm(const RenderScene &scene, const Bvh &bvh, const RenderOptions &options, Film &film, RenderStats &stats);
 
 // A whole fresh render.
 Film render(const RenderScene &scene, const Bvh &bvh, const RenderOptions &options = {}, RenderStats *stats = nullptr);

@@ -38,7 +38,7 @@ constexpr ByteTables kDimensionOne = makeDimensionOneTables();
 uint32_t sobolSample(uint32_t index, int dimension) {
     if (dimension == 0) return reverseBits(index);  // van der Corput
     return kDimensionOne[0][index & 0xffu] ^ kDimensionOne[1][(index >> 8) & 0xffu] ^
-           kDimensionOne[2][(index >> 16) & 0xffu] ^ kDimensionOne[3][index >> 24];
+        kDimensionOne[2][(index >> 16) & 0xffu] ^ kDimensionOne[3][index >> 24];
 }
 
 }  // namespace veduta

@@ -34,9 +34,8 @@ inline uint32_t owenScramble(uint32_t x, uint32_t seed) {
 
 class PixelSampler {
   public:
-    PixelSampler(uint32_t seed, uint32_t pixelX, uint32_t pixelY, uint32_t sampleIndex)
-        : pixelSeed_(hashValues({seed * streamTag(RandomStream::Sampler), pixelX, pixelY})),
-          sampleIndex_(sampleIndex) {}
+    PixelSampler(uint32_t seed, uint32_t pixelX, uint32_t pixelY, uint32_t sampleIndex) :
+        pixelSeed_(hashValues({seed * streamTag(RandomStream::Sampler), pixelX, pixelY})), sampleIndex_(sampleIndex) {}
 
     // Each call consumes one dimension pair; the pair index is the "dimension" of the contract.
     // The two constants give each coordinate of the pair a scramble of its own.

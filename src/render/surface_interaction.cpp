@@ -13,8 +13,8 @@ SurfaceLookup::SurfaceLookup(const RenderScene &scene) : scene_(scene) {
 }
 
 SurfaceInteraction SurfaceLookup::at(const Hit &hit, const Vec3f &rayDirection) const {
-    const Mesh &mesh = hit.instanced ? scene_.prototypes[scene_.instances[hit.index].prototype]
-                                     : scene_.meshes[hit.index].mesh;
+    const Mesh &mesh =
+        hit.instanced ? scene_.prototypes[scene_.instances[hit.index].prototype] : scene_.meshes[hit.index].mesh;
     const uint32_t *idx = &mesh.indices[3 * size_t(hit.primitive)];
     const Vec3f &p0 = mesh.positions[idx[0]], &p1 = mesh.positions[idx[1]], &p2 = mesh.positions[idx[2]];
     float w = 1 - hit.u - hit.v;

@@ -13,11 +13,11 @@ struct SurfaceInteraction {
     Vec3f geometricNormal;  // unit, facing the side the ray came from
     Vec3f shadingNormal;    // unit, on the same side as geometricNormal
     MaterialId material = 0;
-    float distance = 0;     // along the ray that found it
+    float distance = 0;  // along the ray that found it
 
     // For textures; all zero when the mesh has no texture coordinates.
     Vec2f uv;
-    float uvPerMetre = 0;   // how fast (u, v) changes over the surface, for texture footprints
+    float uvPerMetre = 0;  // how fast (u, v) changes over the surface, for texture footprints
     // For normal maps: the tangent along +u (unit, world space) and the sign that makes the
     // bitangent sign · cross(n, tangent), n being the side the mesh faces, not the ray.
     Vec3f tangent;

@@ -17,7 +17,6 @@ struct Camera {
     float verticalFovDegrees = 45;
     int width = 640;
     int height = 360;
-
 };
 
 // Rays of a camera, with its frame worked out once rather than per sample.
@@ -27,9 +26,7 @@ class CameraRays {
 
     // Ray through raster position (x, y): (0, 0) is the top-left corner of the image,
     // (width, height) the bottom-right one.
-    Ray generate(float x, float y) const {
-        return {origin_, normalize(topLeft_ + pixelRight_ * x + pixelDown_ * y)};
-    }
+    Ray generate(float x, float y) const { return {origin_, normalize(topLeft_ + pixelRight_ * x + pixelDown_ * y)}; }
 
   private:
     Vec3f origin_, topLeft_, pixelRight_, pixelDown_;

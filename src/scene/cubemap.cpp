@@ -61,7 +61,7 @@ double cubeTexelSolidAngle(int size, int x, int y) {
     double a0 = 2.0 * x / size - 1, a1 = 2.0 * (x + 1) / size - 1;
     double b0 = 2.0 * y / size - 1, b1 = 2.0 * (y + 1) / size - 1;
     return solidAngleAntiderivative(a0, b0) - solidAngleAntiderivative(a0, b1) - solidAngleAntiderivative(a1, b0) +
-           solidAngleAntiderivative(a1, b1);
+        solidAngleAntiderivative(a1, b1);
 }
 
 Cubemap::Cubemap(int size) : size_(size) {
@@ -80,7 +80,8 @@ Vec3f Cubemap::texelAcrossEdges(int face, int x, int y) const {
     int insideX = std::clamp(x, 0, size_ - 1), insideY = std::clamp(y, 0, size_ - 1);
     if (outsideX && outsideY) {
         return (texel(face, insideX, insideY) + texelAcrossEdges(face, x, insideY) +
-                texelAcrossEdges(face, insideX, y)) / 3.0f;
+                texelAcrossEdges(face, insideX, y)) /
+            3.0f;
     }
     // The texel's centre lies on the face's plane one texel beyond the edge. Folded over the
     // edge onto the neighbouring face, the same distance from the edge, it lands on the

@@ -20,12 +20,20 @@ struct CrossTile {
 };
 
 constexpr std::array<CrossTile, kCubeFaceCount> kVerticalCross{{
-    {kUp, 1, 0, false}, {kWest, 0, 1, false}, {kNorth, 1, 1, false},
-    {kEast, 2, 1, false}, {kDown, 1, 2, false}, {kSouth, 1, 3, true},
+    {kUp, 1, 0, false},
+    {kWest, 0, 1, false},
+    {kNorth, 1, 1, false},
+    {kEast, 2, 1, false},
+    {kDown, 1, 2, false},
+    {kSouth, 1, 3, true},
 }};
 constexpr std::array<CrossTile, kCubeFaceCount> kHorizontalCross{{
-    {kUp, 1, 0, false}, {kWest, 0, 1, false}, {kNorth, 1, 1, false},
-    {kEast, 2, 1, false}, {kSouth, 3, 1, false}, {kDown, 1, 2, false},
+    {kUp, 1, 0, false},
+    {kWest, 0, 1, false},
+    {kNorth, 1, 1, false},
+    {kEast, 2, 1, false},
+    {kSouth, 3, 1, false},
+    {kDown, 1, 2, false},
 }};
 
 // Calls copy(face x, face y, cross x, cross y) for every texel of every face of a cross.
@@ -86,7 +94,7 @@ Vec3f bilinearLatLong(const Image &image, Vec2f uv) {
     int x0 = int(std::floor(px)), y0 = int(std::floor(py));
     float fx = px - float(x0), fy = py - float(y0);
     return (latLongPixel(image, x0, y0) * (1 - fx) + latLongPixel(image, x0 + 1, y0) * fx) * (1 - fy) +
-           (latLongPixel(image, x0, y0 + 1) * (1 - fx) + latLongPixel(image, x0 + 1, y0 + 1) * fx) * fy;
+        (latLongPixel(image, x0, y0 + 1) * (1 - fx) + latLongPixel(image, x0 + 1, y0 + 1) * fx) * fy;
 }
 
 // The mean of f at kSupersampling² stratum centres of the unit square around (x, y).
@@ -141,9 +149,10 @@ Cubemap cubemapFromCross(const Image &cross) {
     bool vertical = cross.width % 3 == 0 && cross.height == cross.width / 3 * 4;
     bool horizontal = cross.width % 4 == 0 && cross.height == cross.width / 4 * 3;
     if (!vertical && !horizontal) {
-        throw LayoutError(fmt::format("cross image is {}x{}; a cross is 3:4 (vertical) or 4:3 (horizontal) with "
-                                      "square faces of whole pixels",
-                                      cross.width, cross.height));
+        throw LayoutError(
+            fmt::format("cross image is {}x{}; a cross is 3:4 (vertical) or 4:3 (horizontal) with "
+                        "square faces of whole pixels",
+                        cross.width, cross.height));
     }
     Cubemap cube(vertical ? cross.width / 3 : cross.width / 4);
     forEachCrossPixel(vertical ? kVerticalCross : kHorizontalCross, cube.size(),
@@ -154,8 +163,8 @@ Cubemap cubemapFromCross(const Image &cross) {
 Cubemap cubemapFromLatLong(const Image &latLong, int faceSize) {
     checkImage(latLong, "lat-long image");
     if (latLong.width != 2 * latLong.height) {
-        throw LayoutError(fmt::format("lat-long image is {}x{}, it must be twice as wide as high", latLong.width,
-                                      latLong.height));
+        throw LayoutError(
+            fmt::format("lat-long image is {}x{}, it must be twice as wide as high", latLong.width, latLong.height));
     }
     if (faceSize <= 0) throw LayoutError(fmt::format("cube face size is {}, it must be positive", faceSize));
     Cubemap cube(faceSize);

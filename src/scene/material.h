@@ -24,7 +24,7 @@ struct Material {
     TextureId diffuseMap = kNoTexture;
     Vec3f specular{0.0f};  // k_s: specular colour × intensity; multiplied by the specular map
     TextureId specularMap = kNoTexture;
-    float shininess = 32;  // Phong exponent n
+    float shininess = 32;              // Phong exponent n
     TextureId normalMap = kNoTexture;  // tangent space, OpenGL convention (green = +v)
     float normalStrength = 1;
     Vec3f reflectivity{0.0f};  // a mirror lobe (PVSUR); multiplied by the reflection map
@@ -46,7 +46,6 @@ struct Material {
         m.diffuse = albedo;
         return m;
     }
-
 };
 
 }  // namespace veduta

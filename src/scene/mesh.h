@@ -19,7 +19,7 @@ struct Mesh {
     // bitangent is sign · cross(normal, tangent). Empty until computeTangents (tangents.h).
     std::vector<Vec3f> tangents;
     std::vector<float> bitangentSigns;
-    std::vector<uint32_t> indices;             // three per triangle
+    std::vector<uint32_t> indices;              // three per triangle
     std::vector<MaterialId> triangleMaterials;  // one per triangle
 
     size_t triangleCount() const { return indices.size() / 3; }

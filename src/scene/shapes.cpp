@@ -59,7 +59,9 @@ Mesh makeBox(Vec3f size) {
 // uvs in metres from the corner at (−x, −y), so that a material's texture scale is in metres.
 Mesh makePlane(Vec3f size) {
     Mesh m;
-    m.positions = {{-size.x / 2, -size.y / 2, 0}, {size.x / 2, -size.y / 2, 0}, {size.x / 2, size.y / 2, 0},
+    m.positions = {{-size.x / 2, -size.y / 2, 0},
+                   {size.x / 2, -size.y / 2, 0},
+                   {size.x / 2, size.y / 2, 0},
                    {-size.x / 2, size.y / 2, 0}};
     m.normals.assign(4, {0, 0, 1});
     m.uvs = {{0, 0}, {size.x, 0}, {size.x, size.y}, {0, size.y}};
@@ -107,8 +109,9 @@ Mesh makeFrustum(float bottomRadius, float topRadius, float height, int segments
     for (int s = 0; s < segments; ++s) {
         Vec3f d0 = ring(s), d1 = ring(s + 1);
         auto base = uint32_t(m.positions.size());
-        m.positions.insert(m.positions.end(), {d0 * bottomRadius, d1 * bottomRadius,
-                                               d1 * topRadius + Vec3f{0, 0, height}, d0 * topRadius + Vec3f{0, 0, height}});
+        m.positions.insert(m.positions.end(),
+                           {d0 * bottomRadius, d1 * bottomRadius, d1 * topRadius + Vec3f{0, 0, height},
+                            d0 * topRadius + Vec3f{0, 0, height}});
         if (smooth) {
             Vec3f n0 = normalize(d0 + Vec3f{0, 0, slope}), n1 = normalize(d1 + Vec3f{0, 0, slope});
             m.normals.insert(m.normals.end(), {n0, n1, n1, n0});

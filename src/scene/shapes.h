@@ -11,12 +11,12 @@ enum class ShapeKind { Box, Sphere, Cylinder, Cone, Plane };
 
 struct ShapeSpec {
     ShapeKind kind = ShapeKind::Box;
-    Vec3f size{1.0f};      // box: x y z extent; plane: x y extent
-    float radius = 0.5f;   // sphere, cylinder, cone
-    float height = 1.0f;   // cylinder, cone
-    int segments = 32;     // around the z axis
-    int rings = 16;        // sphere, from pole to pole
-    bool smooth = true;    // vertex normals on curved sides; false gives facets (roofs, prisms)
+    Vec3f size{1.0f};     // box: x y z extent; plane: x y extent
+    float radius = 0.5f;  // sphere, cylinder, cone
+    float height = 1.0f;  // cylinder, cone
+    int segments = 32;    // around the z axis
+    int rings = 16;       // sphere, from pole to pole
+    bool smooth = true;   // vertex normals on curved sides; false gives facets (roofs, prisms)
 };
 
 Mesh makeShape(const ShapeSpec &spec);

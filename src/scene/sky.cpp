@@ -26,8 +26,7 @@ struct Perez {
 
 // Preetham et al. 1999, appendix A.2: the coefficients as linear functions of turbidity.
 Perez luminanceDistribution(double T) {
-    return {0.1787 * T - 1.4630, -0.3554 * T + 0.4275, -0.0227 * T + 5.3251, 0.1206 * T - 2.5771,
-            -0.0670 * T + 0.3703};
+    return {0.1787 * T - 1.4630, -0.3554 * T + 0.4275, -0.0227 * T + 5.3251, 0.1206 * T - 2.5771, -0.0670 * T + 0.3703};
 }
 Perez xDistribution(double T) {
     return {-0.0193 * T - 0.2592, -0.0665 * T + 0.0008, -0.0004 * T + 0.2125, -0.0641 * T - 0.8989,
@@ -40,12 +39,10 @@ Perez yDistribution(double T) {
 
 // Preetham et al. 1999, appendix A.2: zenith chromaticity as [T² T 1] · M · [θ³ θ² θ 1]ᵀ.
 using ChromaticityMatrix = double[3][4];
-constexpr ChromaticityMatrix kZenithX = {{0.00166, -0.00375, 0.00209, 0},
-                                         {-0.02903, 0.06377, -0.03202, 0.00394},
-                                         {0.11693, -0.21196, 0.06052, 0.25886}};
-constexpr ChromaticityMatrix kZenithY = {{0.00275, -0.00610, 0.00317, 0},
-                                         {-0.04214, 0.08970, -0.04153, 0.00516},
-                                         {0.15346, -0.26756, 0.06670, 0.26688}};
+constexpr ChromaticityMatrix kZenithX = {
+    {0.00166, -0.00375, 0.00209, 0}, {-0.02903, 0.06377, -0.03202, 0.00394}, {0.11693, -0.21196, 0.06052, 0.25886}};
+constexpr ChromaticityMatrix kZenithY = {
+    {0.00275, -0.00610, 0.00317, 0}, {-0.04214, 0.08970, -0.04153, 0.00516}, {0.15346, -0.26756, 0.06670, 0.26688}};
 
 double zenithChromaticity(const ChromaticityMatrix &m, double thetaS, double T) {
     double theta[4] = {thetaS * thetaS * thetaS, thetaS * thetaS, thetaS, 1};
@@ -64,8 +61,8 @@ double relativeAirMass(double elevationDegrees) {
 // The model for one sun position: radiance in kcd/m², as linear Rec.709 RGB.
 class PreethamModel {
   public:
-    PreethamModel(const Vec3f &sun, double turbidity)
-        : sun_(sun), Y_(luminanceDistribution(turbidity)), x_(xDistribution(turbidity)), y_(yDistribution(turbidity)) {
+    PreethamModel(const Vec3f &sun, double turbidity) :
+        sun_(sun), Y_(luminanceDistribution(turbidity)), x_(xDistribution(turbidity)), y_(yDistribution(turbidity)) {
         double thetaS = std::acos(std::clamp(double(sun.z), -1.0, 1.0));
         // Dividing by F(0, θ_s) makes each distribution equal its zenith value at the zenith.
         zenithLuminance_ = preethamZenithLuminance(thetaS, turbidity) / Y_(1, thetaS);
@@ -121,7 +118,7 @@ Cubemap bakePreethamSky(const Vec3f &sunDirection, const Vec3f &sunIrradiance, c
     double modelElevation = std::max(elevation, kMinSunElevationDegrees);
     double fade = std::clamp(1 - elevation / kNightSunElevationDegrees, 0.0, 1.0);
     double scale = fade * rec709Luminance(sunIrradiance.x, sunIrradiance.y, sunIrradiance.z) /
-                   sunDirectNormalIlluminance(modelElevation, settings.turbidity);
+        sunDirectNormalIlluminance(modelElevation, settings.turbidity);
     PreethamModel model(raisedSun(sunDirection, modelElevation), settings.turbidity);
 
     Cubemap sky(settings.faceSize);
@@ -141,7 +138,7 @@ Cubemap bakePreethamSky(const Vec3f &sunDirection, const Vec3f &sunIrradiance, c
     });
 
     Vec3f groundIrradiance = sunIrradiance * std::max(sunDirection.z, 0.0f) +
-                             Vec3f{float(skyIrradiance[0]), float(skyIrradiance[1]), float(skyIrradiance[2])};
+        Vec3f{float(skyIrradiance[0]), float(skyIrradiance[1]), float(skyIrradiance[2])};
     Vec3f ground = groundIrradiance * (settings.groundAlbedo * kInvPi);
     forEachTexel([&](int face, int x, int y, const Vec3f &d) {
         if (d.z <= 0) sky.texel(face, x, y) = ground;

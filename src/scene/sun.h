@@ -10,8 +10,8 @@ namespace veduta {
 
 struct Sun {
     Vec3f direction = directionFromAzimuthElevation(135, 45);  // unit vector towards the sun
-    Vec3f irradiance{3.0f};       // W/m² on a surface facing the sun, per RGB channel
-    float angularDiameterDegrees = 0.53f;  // 0 makes it a directional light
+    Vec3f irradiance{3.0f};                                    // W/m² on a surface facing the sun, per RGB channel
+    float angularDiameterDegrees = 0.53f;                      // 0 makes it a directional light
 
     bool enabled() const { return maxComponent(irradiance) > 0; }
 

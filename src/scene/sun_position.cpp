@@ -82,8 +82,10 @@ double decimalHours(const CivilTime &t) { return t.hour + t.minute / 60.0 + t.se
 SolarAngles anglesFromZenith(double zenith, double hourAngle, double declination, double latitude) {
     // NOAA writes the azimuth with acos and a sign test on the hour angle; atan2 is the
     // same angle and stays defined with the sun at the zenith.
-    double azimuth = std::atan2(sinDeg(hourAngle), cosDeg(hourAngle) * sinDeg(latitude) -
-                                                       tanDeg(declination) * cosDeg(latitude)) * kDegrees + 180;
+    double azimuth =
+        std::atan2(sinDeg(hourAngle), cosDeg(hourAngle) * sinDeg(latitude) - tanDeg(declination) * cosDeg(latitude)) *
+            kDegrees +
+        180;
     double elevation = 90 - zenith;
     return {positiveModulo(azimuth, 360), elevation};
 }
@@ -133,7 +135,7 @@ SolarAngles solarPositionNoaa(const CivilTime &time, double latitude, double lon
     double meanAnomaly = 357.52911 + T * (35999.05029 - 0.0001537 * T);
     double eccentricity = 0.016708634 - T * (0.000042037 + 0.0000001267 * T);
     double centre = sinDeg(meanAnomaly) * (1.914602 - T * (0.004817 + 0.000014 * T)) +
-                    sinDeg(2 * meanAnomaly) * (0.019993 - 0.000101 * T) + sinDeg(3 * meanAnomaly) * 0.000289;
+        sinDeg(2 * meanAnomaly) * (0.019993 - 0.000101 * T) + sinDeg(3 * meanAnomaly) * 0.000289;
     double trueLongitude = meanLongitude + centre;
     double omega = 125.04 - 1934.136 * T;
     double apparentLongitude = trueLongitude - 0.00569 - 0.00478 * sinDeg(omega);
@@ -143,8 +145,7 @@ SolarAngles solarPositionNoaa(const CivilTime &time, double latitude, double lon
 
     double y = tanDeg(obliquity / 2) * tanDeg(obliquity / 2);
     double L = meanLongitude * kRadians, M = meanAnomaly * kRadians, e = eccentricity;
-    double equationOfTimeMinutes =
-        4 * kDegrees *
+    double equationOfTimeMinutes = 4 * kDegrees *
         (y * std::sin(2 * L) - 2 * e * std::sin(M) + 4 * e * y * std::sin(M) * std::cos(2 * L) -
          0.5 * y * y * std::sin(4 * L) - 1.25 * e * e * std::sin(2 * M));
 
@@ -167,7 +168,7 @@ SolarAngles solarPositionPsa(const CivilTime &time, double latitude, double long
     double meanLongitude = 4.8950630 + 0.017202791698 * n;
     double meanAnomaly = 6.2400600 + 0.0172019699 * n;
     double eclipticLongitude = meanLongitude + 0.03341607 * std::sin(meanAnomaly) +
-                               0.00034894 * std::sin(2 * meanAnomaly) - 0.0001134 - 0.0000203 * std::sin(omega);
+        0.00034894 * std::sin(2 * meanAnomaly) - 0.0001134 - 0.0000203 * std::sin(omega);
     double obliquity = 0.4090928 - 6.2140e-9 * n + 0.0000396 * std::cos(omega);
 
     double sinLongitude = std::sin(eclipticLongitude);

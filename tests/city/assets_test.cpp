@@ -102,8 +102,8 @@ TEST(Assets, EveryModelIsFoundWithAndWithoutItsExtension) {
 
 TEST(Assets, UnknownNamesAreNotModels) {
     const AssetLibrary &library = AssetLibrary::builtIn();
-    for (const char *name : {"Window2.wrl", "Window1.obj", "window1", "Window1.wrl.wrl", ".wrl", "", "Window1 ",
-                             "FloorTileChoice"}) {
+    for (const char *name :
+         {"Window2.wrl", "Window1.obj", "window1", "Window1.wrl.wrl", ".wrl", "", "Window1 ", "FloorTileChoice"}) {
         EXPECT_FALSE(library.find(name).has_value()) << '"' << name << '"';
         EXPECT_FALSE(library.isModelName(name)) << '"' << name << '"';
     }

@@ -168,7 +168,8 @@ TEST(BuildingGenerator, WallsAndRoofStandOnTheBase) {
     // The roof covering is the one part whose material is none of the three walls' (ids 1-3).
     for (size_t t = 0; t < mesh.triangleCount(); ++t) {
         if (mesh.triangleMaterials[t] >= 1 && mesh.triangleMaterials[t] <= 3) continue;
-        for (int k = 0; k < 3; ++k) lowestRoof = std::min(lowestRoof, mesh.positions[mesh.indices[3 * t + size_t(k)]].z);
+        for (int k = 0; k < 3; ++k)
+            lowestRoof = std::min(lowestRoof, mesh.positions[mesh.indices[3 * t + size_t(k)]].z);
     }
     EXPECT_NEAR(lowest, 2.5f, 1e-4f);
     EXPECT_NEAR(lowestRoof, 2.5f + 15, 1e-4f);  // the eaves, on the walls, not above them
@@ -186,7 +187,9 @@ TEST(BuildingGenerator, HeightsAreChecked) {
         generator.generate(spec, warnings);
         return std::move(builder).build();
     };
-    for (auto [name, value] : {std::pair{"BuildingHeight", 0.0f}, {"FloorHeight", -3.0f}, {"RoofHeight", -1.0f},
+    for (auto [name, value] : {std::pair{"BuildingHeight", 0.0f},
+                               {"FloorHeight", -3.0f},
+                               {"RoofHeight", -1.0f},
                                {"BuildingHeightVar", -1.0f}}) {
         try {
             withSetting(name, value);

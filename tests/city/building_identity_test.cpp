@@ -12,8 +12,8 @@
 
 #include <fmt/format.h>
 
-#include "city/building_pieces.h"
 #include "assembly/build_scene.h"
+#include "city/building_pieces.h"
 
 namespace veduta {
 namespace {
@@ -45,7 +45,7 @@ std::string lot(int a, int b, int c, int d) {
 
 std::string ownLotsBlock(const std::string &lots) {
     return R"(<Block><Points><Point id="4"/><Point id="5"/><Point id="6"/><Point id="7"/></Points><Lots>)" + lots +
-           "</Lots></Block>";
+        "</Lots></Block>";
 }
 
 // A block north of the others, off the streets, with one lot of its own.

@@ -3,8 +3,6 @@
 // geo/map_projection.h, so the same streets given either way land on the same render points.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <cmath>
 #include <fstream>
 
@@ -23,8 +21,8 @@ struct Node {
     int id;
     double latitude, longitude;
 };
-const Node kStreetNodes[] = {{1, 51.31, 9.488}, {2, 51.31, 9.49}, {3, 51.31, 9.492}, {4, 51.309, 9.49},
-                             {5, 51.311, 9.49}};
+const Node kStreetNodes[] = {
+    {1, 51.31, 9.488}, {2, 51.31, 9.49}, {3, 51.31, 9.492}, {4, 51.309, 9.49}, {5, 51.311, 9.49}};
 const Node kHouseNodes[] = {{6, 51.3102, 9.4903}, {7, 51.3102, 9.4906}, {8, 51.3104, 9.4906}, {9, 51.3104, 9.4903}};
 const std::pair<int, int> kStreets[] = {{1, 2}, {2, 3}, {4, 2}, {2, 5}};
 
@@ -48,15 +46,18 @@ std::string osmXml() {
     std::string nodes, ways;
     for (const Node &n : allNodes())
         nodes += fmt::format("<node id=\"{}\" version=\"1\" lat=\"{:.7f}\" lon=\"{:.7f}\"/>\n", n.id, n.latitude,
-                                 n.longitude);
-    ways += "<way id=\"100\" version=\"1\"><nd ref=\"1\"/><nd ref=\"2\"/><nd ref=\"3\"/>"
-            "<tag k=\"highway\" v=\"residential\"/></way>\n";
-    ways += "<way id=\"101\" version=\"1\"><nd ref=\"4\"/><nd ref=\"2\"/><nd ref=\"5\"/>"
-            "<tag k=\"highway\" v=\"residential\"/></way>\n";
-    ways += "<way id=\"102\" version=\"1\"><nd ref=\"6\"/><nd ref=\"7\"/><nd ref=\"8\"/><nd ref=\"9\"/><nd ref=\"6\"/>"
-            "<tag k=\"building\" v=\"yes\"/></way>\n";
+                             n.longitude);
+    ways +=
+        "<way id=\"100\" version=\"1\"><nd ref=\"1\"/><nd ref=\"2\"/><nd ref=\"3\"/>"
+        "<tag k=\"highway\" v=\"residential\"/></way>\n";
+    ways +=
+        "<way id=\"101\" version=\"1\"><nd ref=\"4\"/><nd ref=\"2\"/><nd ref=\"5\"/>"
+        "<tag k=\"highway\" v=\"residential\"/></way>\n";
+    ways +=
+        "<way id=\"102\" version=\"1\"><nd ref=\"6\"/><nd ref=\"7\"/><nd ref=\"8\"/><nd ref=\"9\"/><nd ref=\"6\"/>"
+        "<tag k=\"building\" v=\"yes\"/></way>\n";
     return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<osm version=\"0.6\" generator=\"test\">\n" + nodes + ways +
-           "</osm>\n";
+        "</osm>\n";
 }
 
 // The same streets and house as CityData with coordinates in `epsg`.
@@ -70,35 +71,21 @@ std::string cityDataXml(int epsg) {
     for (auto [from, to] : kStreets)
         streets += fmt::format("<Street id=\"{}\" startPoint=\"{}\" endPoint=\"{}\"/>", id++, from, to);
     std::string outline = "<Points><Point id=\"6\"/><Point id=\"7\"/><Point id=\"8\"/><Point id=\"9\"/></Points>";
-    return fmt::format("<CityData><Points>{}</Points><StreetNetwork><Streets>{}</Streets></StreetNetwork>"
-                       "<Blocks><Block>{}<Lots><Lot>{}</Lot></Lots></Block></Blocks></CityData>",
-                       points, streets, outline, outline);
+    return fmt::format(
+        "<CityData><Points>{}</Points><StreetNetwork><Streets>{}</Streets></StreetNetwork>"
+        "<Blocks><Block>{}<Lots><Lot>{}</Lot></Lots></Block></Blocks></CityData>",
+        points, streets, outline, outline);
 }
 
 class CityMapFrame : public testing::Test {
   protected:
-    void SetUp() override {
-        dir_ = std::filesystem::path(testing::TempDir()) / fmt::format("veduta_city_map_frame_{}", getpid());
-        std::filesystem::create_directories(dir_);
-    }
-    void TearDown() override { std::filesystem::remove_all(dir_); }
-
     std::filesystem::path write(const std::string &name, const std::string &text) const {
-        std::filesystem::path file = dir_ / name;
-        std::ofstream(file) << text;
-        return file;
+        return folder_.write(name, text);
     }
+    static std::string errorOf(const std::string &xml) { return test::sceneErrorOf(xml); }
 
-    static std::string errorOf(const std::string &xml) {
-        try {
-            test::sceneFromXml(xml);
-        } catch (const InputError &e) {
-            return e.what();
-        }
-        return "no error";
-    }
-
-    std::filesystem::path dir_;
+    test::ScratchFolder folder_{"city_map_frame"};
+    const std::filesystem::path &dir_ = folder_.path();
 };
 
 // Every point of `a` has one of `b` within `tolerance` metres.
@@ -153,16 +140,18 @@ TEST_F(CityMapFrame, OsmWithAGeoreferenceIsOnTheScenesGrid) {
     // the UTM grid turned by the convergence east of 9° E.
     CityData tangent = importOsm(write("crossing.osm", osmXml()), {});
     double gridTurn = std::atan2(osm.points[4].e - osm.points[3].e, osm.points[4].n - osm.points[3].n);
-    double tangentTurn = std::atan2(tangent.points[4].e - tangent.points[3].e, tangent.points[4].n - tangent.points[3].n);
+    double tangentTurn =
+        std::atan2(tangent.points[4].e - tangent.points[3].e, tangent.points[4].n - tangent.points[3].n);
     EXPECT_NEAR(tangentTurn, 0, 1e-6);
     EXPECT_GT(std::abs(gridTurn), 0.005);
 }
 
 TEST_F(CityMapFrame, CityDataTakesTheScenesCrsByDefault) {
     Georeference scene = utmScene();
-    std::string xml = fmt::format("<CityData><Points><Point id=\"1\" e=\"{:.3f}\" n=\"{:.3f}\" u=\"5\"/></Points>"
-                                  "</CityData>",
-                                  scene.originEasting + 12.25, scene.originNorthing - 3.5);
+    std::string xml = fmt::format(
+        "<CityData><Points><Point id=\"1\" e=\"{:.3f}\" n=\"{:.3f}\" u=\"5\"/></Points>"
+        "</CityData>",
+        scene.originEasting + 12.25, scene.originNorthing - 3.5);
     MapProjection own(crsByEpsg(scene.epsg), scene);
     CityData city = parseCityData(xml, "city.xml", dir_, &own);
     ASSERT_EQ(city.points.size(), 1u);
@@ -177,8 +166,8 @@ TEST_F(CityMapFrame, Errors) {
     std::filesystem::path city = write("crossing.xml", cityDataXml(31467));
     std::filesystem::path osm = write("crossing.osm", osmXml());
     Georeference g = utmScene();
-    std::string georeference = fmt::format("<georeference crs=\"EPSG:25832\" origin=\"{} {}\"/>", g.originEasting,
-                                           g.originNorthing);
+    std::string georeference =
+        fmt::format("<georeference crs=\"EPSG:25832\" origin=\"{} {}\"/>", g.originEasting, g.originNorthing);
     auto cityScene = [&](const std::filesystem::path &file, const std::string &attributes, bool georeferenced) {
         return fmt::format("<scene version=\"1\">{}<city file=\"{}\" {}/></scene>", georeferenced ? georeference : "",
                            file.string(), attributes);

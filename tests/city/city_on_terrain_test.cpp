@@ -9,12 +9,13 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
-#include "city/generate_city.h"
-#include "city/terrain_checks.h"
-#include "city/streets_on_terrain.h"
-#include "geo/generate_landscape.h"
 #include "assembly/build_scene.h"
+#include "city/generate_buildings.h"
+#include "city/generate_city.h"
+#include "city/streets_on_terrain.h"
+#include "city/terrain_checks.h"
 #include "description/scene_description.h"
+#include "geo/generate_landscape.h"
 
 namespace veduta {
 namespace {
@@ -35,7 +36,8 @@ double height(int c, int r) { return 400 + 0.9 * c + 1.2 * r + ((c * 7 + r * 3) 
 // main street's north side.
 CityData town() {
     CityData data;
-    for (auto [e, n] : std::initializer_list<std::pair<double, double>>{{-95, 0}, {20, 0}, {95, 0}, {20, 95}, {20, -95}})
+    for (auto [e, n] :
+         std::initializer_list<std::pair<double, double>>{{-95, 0}, {20, 0}, {95, 0}, {20, 95}, {20, -95}})
         data.points.push_back({uint32_t(data.points.size()), e, n, 0, {}});
     data.streets = {{0, 0, 1, 8.0f, {}}, {1, 1, 2, 8.0f, {}}, {2, 1, 3, 6.0f, {}}, {3, 1, 4, 6.0f, {}}};
     CityBlock block;
@@ -44,6 +46,7 @@ CityData town() {
         CityLot lot;
         lot.points = {{x, 6.5f}, {x + 20, 6.5f}, {x + 20, 26.5f}, {x, 26.5f}};
         lot.streetEdges = {true, false, false, false};
+        lot.sourceId = uint32_t(block.lots.size() + 1);  // as a file's lots have, from their points
         block.lots.push_back(lot);
     }
     data.blocks.push_back(block);
@@ -67,11 +70,12 @@ class CityOnTerrain : public ::testing::Test {
   protected:
     void SetUp() override {
         dir_ = fs::temp_directory_path() /
-               fmt::format("veduta_city_terrain_{}_{}", ::testing::UnitTest::GetInstance()->current_test_info()->name(),
-                           getpid());
+            fmt::format("veduta_city_terrain_{}_{}", ::testing::UnitTest::GetInstance()->current_test_info()->name(),
+                        getpid());
         fs::create_directories(dir_);
-        std::string asc = fmt::format("ncols {}\nnrows {}\nxllcorner {}\nyllcorner {}\ncellsize {}\nNODATA_value -9999\n",
-                                      kNodes, kNodes, kWest - kSpacing / 2, kSouth - kSpacing / 2, kSpacing);
+        std::string asc =
+            fmt::format("ncols {}\nnrows {}\nxllcorner {}\nyllcorner {}\ncellsize {}\nNODATA_value -9999\n", kNodes,
+                        kNodes, kWest - kSpacing / 2, kSouth - kSpacing / 2, kSpacing);
         for (int r = kNodes - 1; r >= 0; --r) {
             for (int c = 0; c < kNodes; ++c) asc += fmt::format("{}{:.3f}", c ? " " : "", height(c, r));
             asc += "\n";
@@ -86,10 +90,11 @@ class CityOnTerrain : public ::testing::Test {
   {"type": "Feature", "properties": {"OBJART": 4102, "OBJID": "M1"},
    "geometry": {"type": "Polygon", "coordinates": [[[530000, 5326000], [530200, 5326000], [530200, 5326095], [530000, 5326095], [530000, 5326000]]]}}
  ]})";
-        description_ = readSceneText("<scene version=\"1\">\n<georeference crs=\"EPSG:25832\" origin=\"530100 5326100\"/>\n"
-                                     "<landscape seed=\"4\"><dgm file=\"dgm.asc\"/><atkis file=\"areas.geojson\"/></landscape>\n"
-                                     "</scene>\n",
-                                     "test.xml", dir_);
+        description_ = readSceneText(
+            "<scene version=\"1\">\n<georeference crs=\"EPSG:25832\" origin=\"530100 5326100\"/>\n"
+            "<landscape seed=\"4\"><dgm file=\"dgm.asc\"/><atkis file=\"areas.geojson\"/></landscape>\n"
+            "</scene>\n",
+            "test.xml", dir_);
     }
     void TearDown() override { fs::remove_all(dir_); }
 
@@ -119,7 +124,8 @@ Intrusions intoStreets(const RenderScene &s, const std::vector<LocalPolygon> &st
         }
         if (!inStreets(streets, centre)) continue;
         MaterialId m = terrain.triangleMaterials[t];
-        found.forestTriangles += m == forest, found.meadowTriangles += m == meadow, found.streetTriangles += m == street;
+        found.forestTriangles += m == forest, found.meadowTriangles += m == meadow,
+            found.streetTriangles += m == street;
     }
     for (const Instance &tree : s.instances)
         found.trees += inStreets(streets, {tree.objectToWorld.m[3], tree.objectToWorld.m[7]});
@@ -156,8 +162,10 @@ TEST_F(CityOnTerrain, BuildingsStandOnTheLowestTerrainUnderThemWithAPlinth) {
     RenderScene s = std::move(builder).build();
     std::map<uint32_t, Seat> built = seats(s);
     ASSERT_EQ(built.size(), 2u);
-    for (uint32_t id : {1u, 2u}) {
-        double lowest = *ground.surface->minOver(data.blocks[0].lots[id - 1].points);
+    for (const CityLot &lot : data.blocks[0].lots) {
+        uint32_t id = cityBuildingId(1, lot.sourceId);
+        ASSERT_TRUE(built.count(id)) << id;
+        double lowest = *ground.surface->minOver(lot.points);
         EXPECT_LE(built[id].walls - lowest, kPlinthDepth) << id;
         EXPECT_GE(built[id].walls - lowest, -1e-3) << id;  // not sunk either: the base is that lowest point
         EXPECT_LE(built[id].plinth, lowest) << id;
@@ -178,7 +186,9 @@ TEST_F(CityOnTerrain, BuildingsStandOnTheLowestTerrainUnderThemWithAPlinth) {
     RenderSceneBuilder floating;
     generateCity(flat, 3, 1, floating, warnings);
     std::map<uint32_t, Seat> up = seats(std::move(floating).build());
-    EXPECT_GT(up[1].walls - *ground.surface->minOver(flat.blocks[0].lots[0].points), kPlinthDepth);
+    uint32_t first = cityBuildingId(1, flat.blocks[0].lots[0].sourceId);
+    ASSERT_TRUE(up.count(first));
+    EXPECT_GT(up[first].walls - *ground.surface->minOver(flat.blocks[0].lots[0].points), kPlinthDepth);
 }
 
 TEST_F(CityOnTerrain, TheTerrainDecidesAndSaysSoWhenThePointsHaveHeights) {

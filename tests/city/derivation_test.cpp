@@ -112,7 +112,7 @@ TEST(Derivation, FloatingRepeatTakesTheCountWhoseTileIsClosest) {
     EXPECT_FLOAT_EQ(out[0].size.x, 2);
     EXPECT_EQ(f.derive("Row", {11, 3}).size(), 5u);     // 2.2 is closer to 2.1 than 1.83
     EXPECT_EQ(f.derive("Row", {11.9f, 3}).size(), 6u);  // 1.98 is closer than 2.38
-    EXPECT_EQ(f.derive("Row", {1, 3}).size(), 1u);       // shorter than a tile: one
+    EXPECT_EQ(f.derive("Row", {1, 3}).size(), 1u);      // shorter than a tile: one
 }
 
 const char *kTiles = R"(<Rulefile name="t">
@@ -182,7 +182,7 @@ TEST(Derivation, T4ScalePropagatesToDescendants) {
     EXPECT_EQ(f.name(wall), "Wall0.wrl");
     EXPECT_NEAR(arc.shapeToFacade.m[0], 1.1, 1e-6);
     EXPECT_NEAR(wall.shapeToFacade.m[0], 1.1 * 0.9091, 1e-5);  // ≈ 1.0
-    EXPECT_FLOAT_EQ(wall.size.x, 1.2f);                           // scopes are not scaled
+    EXPECT_FLOAT_EQ(wall.size.x, 1.2f);                        // scopes are not scaled
     // Scaling happens about the scope's centre, so the roof stays centred over the window.
     EXPECT_NEAR(centre(arc).x, 0.6, 1e-6);
     EXPECT_NEAR(centre(arc).y, 2.4, 1e-5);
@@ -290,7 +290,8 @@ TEST(Derivation, T6SettingsPrecedenceLotBlockCityDefaults) {
 }
 
 TEST(Derivation, PropertiesReadTheRandomisedHeights) {
-    Fixture f(R"(<Rulefile name="t"><BuildingSettings><FloorHeight>3.5</FloorHeight><FloorHeightVar>0.5</FloorHeightVar></BuildingSettings>
+    Fixture f(
+        R"(<Rulefile name="t"><BuildingSettings><FloorHeight>3.5</FloorHeight><FloorHeightVar>0.5</FloorHeightVar></BuildingSettings>
       <Rule><Predecessor>Floors</Predecessor><Rules>
       <Probability value="1"><Repeat axis="u" size="1"/><Symbol property="FloorHeight">Floor.wrl</Symbol></Probability>
       </Rules></Rule></Rulefile>)");

@@ -7,8 +7,8 @@
 
 #include <unistd.h>
 
-#include "city/generate_buildings.h"
 #include "assembly/build_scene.h"
+#include "city/generate_buildings.h"
 
 namespace veduta {
 namespace {
@@ -54,10 +54,10 @@ TEST(GenerateBuildings, BuildingsAndFacadesBecomeGeometryWithTheirIds) {
 TEST(GenerateBuildings, SettingsOfTheGroupComeBetweenTheBuildingsAndTheDefaults) {
     // The defaults say 15 m walls and a 4 m roof; the group 12 m; the second building 18 m.
     std::string xml = "<scene version=\"1\">\n<buildings rules=\"" + rules() +
-                      "\">\n<BuildingSettings><BuildingHeight>12</BuildingHeight></BuildingSettings>\n"
-                      "<building footprint=\"0 0 14 0 14 12 0 12\" street=\"0\"/>\n"
-                      "<building footprint=\"20 0 34 0 34 12 20 12\" street=\"0\"><BuildingSettings>"
-                      "<BuildingHeight>18</BuildingHeight></BuildingSettings></building>\n</buildings>\n</scene>\n";
+        "\">\n<BuildingSettings><BuildingHeight>12</BuildingHeight></BuildingSettings>\n"
+        "<building footprint=\"0 0 14 0 14 12 0 12\" street=\"0\"/>\n"
+        "<building footprint=\"20 0 34 0 34 12 20 12\" street=\"0\"><BuildingSettings>"
+        "<BuildingHeight>18</BuildingHeight></BuildingSettings></building>\n</buildings>\n</scene>\n";
     RenderScene s = build(xml);
     auto top = [&](size_t mesh) {
         float z = 0;
@@ -76,8 +76,9 @@ TEST(GenerateBuildings, AClockwiseFootprintIsTurnedRoundWithAWarning) {
 }
 
 TEST(GenerateBuildings, ErrorsAreAtTheirPlace) {
-    EXPECT_NE(errorOf(scene("<building footprint=\"0 0 14 0 14\"/>\n")).find("test.xml:3:22: a footprint is at least "
-                                                                               "three x y pairs"),
+    EXPECT_NE(errorOf(scene("<building footprint=\"0 0 14 0 14\"/>\n"))
+                  .find("test.xml:3:22: a footprint is at least "
+                        "three x y pairs"),
               std::string::npos);
     EXPECT_NE(errorOf(scene("<building footprint=\"0 0 14 0 14 12 0 12\" street=\"4\"/>\n"))
                   .find("test.xml:3:51: street edges are numbers of footprint edges, 0 to 3"),
@@ -108,7 +109,7 @@ TEST(GenerateBuildings, ABadRuleFileIsAnErrorInThatFile) {
                            "<Probability value=\"1\"><Symbol>Nothing</Symbol></Probability>\n</Rules></Rule>\n"
                            "</Rulefile>\n";
     std::string xml = "<scene version=\"1\"><buildings rules=\"" + file.string() +
-                      "\"><building footprint=\"0 0 9 0 9 9 0 9\"/></buildings></scene>";
+        "\"><building footprint=\"0 0 9 0 9 9 0 9\"/></buildings></scene>";
     std::string error = errorOf(xml);
     EXPECT_NE(error.find(file.string() + ":3:"), std::string::npos) << error;
     EXPECT_NE(error.find("unknown symbol 'Nothing'"), std::string::npos) << error;
@@ -124,9 +125,10 @@ namespace {
 // A ground that slopes along x, with the footprint's corner (0, 0) lowest: the building stands
 // on the height the ground function gives, and a plinth reaches below it.
 TEST(GenerateBuildings, ABuildingWithoutBaseStandsOnTheGroundOverAPlinth) {
-    SceneDescription d = readSceneText(scene("<building footprint=\"0 0 14 0 14 12 0 12\" street=\"0\"/>\n"
-                                             "<building base=\"3\" footprint=\"20 0 34 0 34 12 20 12\" street=\"0\"/>\n"),
-                                       "test.xml", VEDUTA_TEST_DATA);
+    SceneDescription d =
+        readSceneText(scene("<building footprint=\"0 0 14 0 14 12 0 12\" street=\"0\"/>\n"
+                            "<building base=\"3\" footprint=\"20 0 34 0 34 12 20 12\" street=\"0\"/>\n"),
+                      "test.xml", VEDUTA_TEST_DATA);
     std::vector<Vec2f> asked;
     GroundHeight ground = [&](const std::vector<Vec2f> &footprint) {
         asked = footprint;

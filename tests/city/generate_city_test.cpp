@@ -7,8 +7,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "city/generate_city.h"
 #include "assembly/build_scene.h"
+#include "city/generate_city.h"
 
 namespace veduta {
 namespace {
@@ -19,10 +19,11 @@ RenderScene build(const std::string &xml, std::vector<std::string> *warnings = n
 
 TEST(GenerateCity, ListingTwoOneBecomesLotsBuildingsAndStreets) {
     std::vector<std::string> warnings;
-    RenderScene scene = build("<scene version=\"1\"><city file=\"../cities/bilke-listing-2-1.xml\" seed=\"1909\"/>"
-                              "<buildings rules=\"../rules/gruenderzeit/FacadeStructure.xml\"><building id=\"5\" "
-                              "footprint=\"-60 -60 -45 -60 -45 -48 -60 -48\" street=\"0\"/></buildings></scene>",
-                              &warnings);
+    RenderScene scene = build(
+        "<scene version=\"1\"><city file=\"../cities/bilke-listing-2-1.xml\" seed=\"1909\"/>"
+        "<buildings rules=\"../rules/gruenderzeit/FacadeStructure.xml\"><building id=\"5\" "
+        "footprint=\"-60 -60 -45 -60 -45 -48 -60 -48\" street=\"0\"/></buildings></scene>",
+        &warnings);
     std::set<uint32_t> buildings;
     for (const BakedMesh &m : scene.meshes) buildings.insert(m.buildingId);
     // The scene's own building keeps 5; the city's, the given lot and the lots cut from the first
@@ -33,15 +34,17 @@ TEST(GenerateCity, ListingTwoOneBecomesLotsBuildingsAndStreets) {
     EXPECT_GE(buildings.size(), 4u);
     EXPECT_LT(*buildings.rbegin(), 1u << 24);
     bool clockwise = false;
-    for (const std::string &w : warnings) clockwise |= w.find("bilke-listing-2-1.xml:63:7: the block runs clockwise") != std::string::npos;
+    for (const std::string &w : warnings)
+        clockwise |= w.find("bilke-listing-2-1.xml:63:7: the block runs clockwise") != std::string::npos;
     EXPECT_TRUE(clockwise);
 }
 
 TEST(GenerateCity, AnOpenStreetMapFileIsACityWithTheRulesOfItsElement) {
     std::vector<std::string> warnings;
-    RenderScene scene = build("<scene version=\"1\"><city file=\"../tests/data/osm/small-district.osm\" "
-                              "rules=\"../rules/gruenderzeit/FacadeStructure.xml\" seed=\"3\"/></scene>",
-                              &warnings);
+    RenderScene scene = build(
+        "<scene version=\"1\"><city file=\"../tests/data/osm/small-district.osm\" "
+        "rules=\"../rules/gruenderzeit/FacadeStructure.xml\" seed=\"3\"/></scene>",
+        &warnings);
     std::set<uint32_t> buildings;
     for (const BakedMesh &m : scene.meshes) buildings.insert(m.buildingId);
     EXPECT_TRUE(buildings.count(0));  // the streets
@@ -50,7 +53,8 @@ TEST(GenerateCity, AnOpenStreetMapFileIsACityWithTheRulesOfItsElement) {
         build("<scene version=\"1\"><city file=\"../tests/data/osm/small-district.osm\"/></scene>");
         ADD_FAILURE() << "a city without rules was built";
     } catch (const InputError &e) {
-        EXPECT_NE(std::string(e.what()).find("test.xml:1:32: the city names no <Rulefile>"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("test.xml:1:32: the city names no <Rulefile>"), std::string::npos)
+            << e.what();
     }
 }
 
@@ -76,9 +80,10 @@ TEST(GenerateCity, TwoLotsOfOneIdAreWarnedAbout) {
     RenderSceneBuilder builder;
     std::vector<std::string> warnings;
     EXPECT_EQ(generateCity(data, 0, 1, builder, warnings), 2u);
-    std::string expected = fmt::format("ids.xml:7:9: this lot's building has the id {} of the one at ids.xml:6:9 (a "
-                                       "hash collision)",
-                                       cityBuildingId(1, first));
+    std::string expected = fmt::format(
+        "ids.xml:7:9: this lot's building has the id {} of the one at ids.xml:6:9 (a "
+        "hash collision)",
+        cityBuildingId(1, first));
     bool warned = false;
     for (const std::string &w : warnings) warned |= w.find(expected) != std::string::npos;
     EXPECT_TRUE(warned) << fmt::format("{}", fmt::join(warnings, "\n"));
@@ -86,10 +91,11 @@ TEST(GenerateCity, TwoLotsOfOneIdAreWarnedAbout) {
 
 TEST(GenerateCity, StreetsJoinThePointsTheyName) {
     // Ids out of file order and with gaps: streets must not take them for positions.
-    CityData data = parseCityData("<CityData><Points><Point id=\"30\" e=\"0\" n=\"0\"/><Point id=\"7\" e=\"50\" n=\"0\"/>"
-                                  "<Point id=\"12\" e=\"50\" n=\"40\"/></Points><StreetNetwork><Streets>"
-                                  "<Street id=\"0\" startPoint=\"7\" endPoint=\"12\"/></Streets></StreetNetwork></CityData>",
-                                  "ids.xml", ".");
+    CityData data = parseCityData(
+        "<CityData><Points><Point id=\"30\" e=\"0\" n=\"0\"/><Point id=\"7\" e=\"50\" n=\"0\"/>"
+        "<Point id=\"12\" e=\"50\" n=\"40\"/></Points><StreetNetwork><Streets>"
+        "<Street id=\"0\" startPoint=\"7\" endPoint=\"12\"/></Streets></StreetNetwork></CityData>",
+        "ids.xml", ".");
     StreetNetwork network = streetNetworkOf(data);
     ASSERT_EQ(network.streets.size(), 1u);
     Vec2f from = network.nodes[network.streets[0].from], to = network.nodes[network.streets[0].to];
@@ -108,7 +114,8 @@ TEST(GenerateCity, ErrorsAreAtTheirPlace) {
         }
         return std::string("no error");
     };
-    EXPECT_NE(errorOf("<scene version=\"1\"><city file=\"nowhere.xml\"/></scene>").find("test.xml:1:32: cannot read the city file"),
+    EXPECT_NE(errorOf("<scene version=\"1\"><city file=\"nowhere.xml\"/></scene>")
+                  .find("test.xml:1:32: cannot read the city file"),
               std::string::npos);
     EXPECT_NE(errorOf("<scene version=\"1\"><city file=\"../cities/bilke-listing-2-1.xml\" colour=\"red\"/></scene>")
                   .find("test.xml:1:"),

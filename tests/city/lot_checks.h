@@ -37,8 +37,8 @@ void expectValidLots(const Block &block, const std::vector<Footprint> &lots);
 
 // An algorithm over 300 random blocks (lot_test_blocks.h): valid lots, or a LotError with a
 // message; more than 200 of the blocks get lots.
-using Subdivision = std::function<std::vector<Footprint>(const Block &, const LotSettings &, uint32_t seed,
-                                                         uint32_t blockId)>;
+using Subdivision =
+    std::function<std::vector<Footprint>(const Block &, const LotSettings &, uint32_t seed, uint32_t blockId)>;
 void expectRandomBlocksGiveValidLots(const Subdivision &subdivide);
 
 // Whether the two are the same lots, point for point.

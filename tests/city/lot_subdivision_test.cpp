@@ -212,9 +212,9 @@ TEST(Lots, SettingsAreReadFromTheStack) {
 TEST(Lots, SubdivisionIsReadFromTheSettings) {
     EXPECT_EQ(lotSettingsFrom(SettingsStack()).algorithm, LotSubdivision::Perimeter);
     const std::pair<const char *, LotSubdivision> names[] = {{"perimeter", LotSubdivision::Perimeter},
-                                                            {"recursive", LotSubdivision::Recursive},
-                                                            {"obb", LotSubdivision::Obb},
-                                                            {"skeleton", LotSubdivision::Skeleton}};
+                                                             {"recursive", LotSubdivision::Recursive},
+                                                             {"obb", LotSubdivision::Obb},
+                                                             {"skeleton", LotSubdivision::Skeleton}};
     for (const auto &[name, algorithm] : names) {
         SettingsMap block{{"LotSubdivision", {name, std::nullopt, {"city.xml", 2, 3}}}};
         EXPECT_EQ(lotSettingsFrom(SettingsStack({&block})).algorithm, algorithm) << name;

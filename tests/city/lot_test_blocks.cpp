@@ -59,8 +59,10 @@ const std::vector<NamedBlock> &shapeBlocks() {
         {"U", allStreets({{0, 0}, {120, 0}, {120, 90}, {80, 90}, {80, 40}, {40, 40}, {40, 90}, {0, 90}})},
         {"pentagon", allStreets({{0, 0}, {100, 0}, {120, 60}, {50, 100}, {-20, 60}})},
         {"hexagon", allStreets({{0, 0}, {60, -10}, {100, 30}, {90, 80}, {30, 90}, {-10, 50}})},
-        {"heptagon", {{{0, 0}, {70, -5}, {110, 30}, {100, 70}, {60, 95}, {10, 85}, {-15, 40}},
-                      {true, true, false, true, true, false, true}, 0}},
+        {"heptagon",
+         {{{0, 0}, {70, -5}, {110, 30}, {100, 70}, {60, 95}, {10, 85}, {-15, 40}},
+          {true, true, false, true, true, false, true},
+          0}},
         {"octagon", allStreets({{6, 0}, {94, 0}, {100, 6}, {100, 74}, {94, 80}, {6, 80}, {0, 74}, {0, 6}})},
     };
     return blocks;

@@ -16,7 +16,8 @@ const uint32_t kSeeds[] = {1, 1871, 90210};
 float extent(const Footprint &lot, float Vec2f::*axis, bool highest) {
     auto compare = [&](Vec2f a, Vec2f b) { return a.*axis < b.*axis; };
     return (highest ? *std::max_element(lot.points.begin(), lot.points.end(), compare)
-                    : *std::min_element(lot.points.begin(), lot.points.end(), compare)).*axis;
+                    : *std::min_element(lot.points.begin(), lot.points.end(), compare)).*
+        axis;
 }
 
 TEST(LotsObb, LotsLieInsideApartFacingAStreetWithinTheAreas) {

@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include <GeographicLib/Geodesic.hpp>
 #include <fmt/format.h>
+#include <GeographicLib/Geodesic.hpp>
 
 #include "city/footprint.h"
 #include "city/osm_import.h"
@@ -134,8 +134,8 @@ TEST(OsmImport, TheResidentialAreaIsACounterClockwiseBlock) {
     ASSERT_EQ(city.blocks.size(), 2u);
     const CityBlock &block = city.blocks[0];
     EXPECT_TRUE(fromWay(block.loc, 2010));
-    ASSERT_EQ(block.points.size(), 4u);  // the closing node is not repeated
-    EXPECT_TRUE(isCounterClockwise(block.points));  // the file draws it clockwise
+    ASSERT_EQ(block.points.size(), 4u);                           // the closing node is not repeated
+    EXPECT_TRUE(isCounterClockwise(block.points));                // the file draws it clockwise
     EXPECT_TRUE(city.warnings.empty()) << city.warnings.front();  // OSM has no orientation rule
 }
 
@@ -182,7 +182,7 @@ TEST(OsmImport, EdgesNearAStreetAreStreetEdges) {
 
 TEST(OsmImport, BuildingTagsBecomeSettings) {
     CityData city = smallDistrict();
-    const CityLot &corner = lotOf(city, 2020);  // height 18, roof:height 5, gabled
+    const CityLot &corner = lotOf(city, 2020);                      // height 18, roof:height 5, gabled
     EXPECT_EQ(corner.settings.at("BuildingHeight").number, 13.0f);  // the walls: height less the roof
     EXPECT_EQ(corner.settings.at("RoofHeight").number, 5.0f);
     EXPECT_EQ(setting(corner, "RoofType"), "Gable");
@@ -193,7 +193,7 @@ TEST(OsmImport, BuildingTagsBecomeSettings) {
     EXPECT_NE(corner.settings.at("BuildingHeight").loc.toString().find("small-district.osm: way 2020"),
               std::string::npos);
 
-    const CityLot &levels = lotOf(city, 2021);  // building:levels 4, hipped
+    const CityLot &levels = lotOf(city, 2021);                      // building:levels 4, hipped
     EXPECT_EQ(levels.settings.at("BuildingHeight").number, 12.0f);  // 4 floors of 3 m
     EXPECT_EQ(setting(levels, "RoofType"), "Hip");
     EXPECT_EQ(setting(levels, "RoofHeight"), "(unset)");
@@ -205,7 +205,8 @@ TEST(OsmImport, BuildingTagsBecomeSettings) {
     EXPECT_EQ(setting(both, "RoofType"), "Mansard");
 
     EXPECT_EQ(setting(lotOf(city, 2023), "RoofType"), "Flat");
-    EXPECT_EQ(setting(lotOf(city, 2023), "osm:name"), "Garagen \"Am Hof\", 2\\3");  // GDAL escapes quotes and backslashes
+    EXPECT_EQ(setting(lotOf(city, 2023), "osm:name"),
+              "Garagen \"Am Hof\", 2\\3");  // GDAL escapes quotes and backslashes
     EXPECT_EQ(setting(lotOf(city, 2024), "RoofType"), "Shed");
     EXPECT_EQ(setting(lotOf(city, 2024), "BuildingHeight"), "(unset)");  // no height: the defaults'
 }

@@ -76,9 +76,11 @@ TEST(RoofChoice, BadSettingsAreErrorsAtTheSetting) {
               std::string::npos);
     EXPECT_NE(errorWith({{"RoofPitch", settingValue("90", kAt)}}).find("city.xml:12:5: RoofPitch must be between"),
               std::string::npos);
-    EXPECT_NE(errorWith({{"RoofOverhang", settingValue("-1", kAt)}}).find("city.xml:12:5: RoofOverhang must be zero or more"),
-              std::string::npos);
-    EXPECT_NE(errorWith({{"ParapetHeight", settingValue("high", kAt)}}).find("city.xml:12:5: setting ParapetHeight must be a number"),
+    EXPECT_NE(
+        errorWith({{"RoofOverhang", settingValue("-1", kAt)}}).find("city.xml:12:5: RoofOverhang must be zero or more"),
+        std::string::npos);
+    EXPECT_NE(errorWith({{"ParapetHeight", settingValue("high", kAt)}})
+                  .find("city.xml:12:5: setting ParapetHeight must be a number"),
               std::string::npos);
 }
 

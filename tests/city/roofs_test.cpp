@@ -39,12 +39,6 @@ float uvArea(const Mesh &m, size_t t) {
 
 Vec3f centroid(const Mesh &m, size_t t) { return (corner(m, t, 0) + corner(m, t, 1) + corner(m, t, 2)) / 3; }
 
-size_t distinctPositions(const Mesh &m) {
-    std::set<std::tuple<float, float, float>> distinct;
-    for (const Vec3f &p : m.positions) distinct.insert({p.x, p.y, p.z});
-    return distinct.size();
-}
-
 size_t countSurface(const Mesh &m, RoofSurface surface) {
     return size_t(std::count(m.triangleMaterials.begin(), m.triangleMaterials.end(), MaterialId(surface)));
 }
@@ -57,7 +51,8 @@ void expectWellFormed(const Mesh &m) {
     for (size_t t = 0; t < m.triangleCount(); ++t) {
         EXPECT_GT(area(m, t), 1e-3f) << "triangle " << t;
         Vec3f n = geometricNormal(m, t);
-        for (int k = 0; k < 3; ++k) EXPECT_GT(dot(m.normals[m.indices[3 * t + size_t(k)]], n), 0.9999f) << "triangle " << t;
+        for (int k = 0; k < 3; ++k)
+            EXPECT_GT(dot(m.normals[m.indices[3 * t + size_t(k)]], n), 0.9999f) << "triangle " << t;
     }
 }
 
@@ -150,8 +145,8 @@ TEST(Roofs, MansardHalvesAnInsetTheFootprintCannotTake) {
 TEST(Roofs, MansardInsetStaysInsideASharpNotch) {
     // A V cut 9 m deep and 1 m wide into a 20 × 10 block: its tip's corner moves inset / sin(3.18°),
     // about 18 × the inset, so it stays above the bottom's inset line only for insets below 1/19 m.
-    Footprint notched{{{0, 0}, {20, 0}, {20, 10}, {10.5f, 10}, {10, 1}, {9.5f, 10}, {0, 10}},
-                      std::vector<bool>(7, false), 0};
+    Footprint notched{
+        {{0, 0}, {20, 0}, {20, 10}, {10.5f, 10}, {10, 1}, {9.5f, 10}, {0, 10}}, std::vector<bool>(7, false), 0};
     MansardRoof roof = mansardRoof(notched, 15, 3, 1);
     EXPECT_EQ(roof.inset, 1.0f / 32);
     EXPECT_TRUE(liesInside(roof.top, notched.points));

@@ -5,8 +5,8 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "city/rule_file.h"
 #include "city/listing_2_2.h"
+#include "city/rule_file.h"
 #include "core/error.h"
 
 namespace veduta {
@@ -21,9 +21,10 @@ bool listingModels(std::string_view name) {
 
 // A rule file of one rule, 'A', whose <Rules> hold `branches` from line 3, column 1.
 std::string ruleA(const std::string &branches) {
-    return fmt::format("<Rulefile name=\"t\">\n<Rule><Predecessor>A</Predecessor><Rules>\n{}\n</Rules></Rule>\n"
-                       "</Rulefile>",
-                       branches);
+    return fmt::format(
+        "<Rulefile name=\"t\">\n<Rule><Predecessor>A</Predecessor><Rules>\n{}\n</Rules></Rule>\n"
+        "</Rulefile>",
+        branches);
 }
 
 RuleSet parse(const std::string &xml) { return parseRuleFile(xml, "t.xml", isWrl); }
@@ -87,7 +88,8 @@ TEST(RuleFile, ListingTwoTwoParses) {
 }
 
 TEST(RuleFile, ListingTwoTwoNamesItsUndefinedLeaves) {
-    EXPECT_EQ(errorOf(kListing22), "t.xml:33:9: unknown symbol 'WeitereEtagen': no rule derives it and it is not a model");
+    EXPECT_EQ(errorOf(kListing22),
+              "t.xml:33:9: unknown symbol 'WeitereEtagen': no rule derives it and it is not a model");
 }
 
 TEST(RuleFile, ListingTwoTwoAsTruncatedIsAnXmlError) {
@@ -188,10 +190,12 @@ TEST(RuleFile, MalformedNumbersAndVectors) {
         return errorOf(ruleA(fmt::format("{}{}>a.wrl</Symbol></Probability>", symbol, attributes)));
     };
     // The symbol's attributes start at column 49, so a value starts at 49 + its name's length + 2.
-    EXPECT_EQ(error(R"(size="4x")"), "t.xml:3:55: '4x' is not a size: give metres ('4'), a share ('1r') or a "
-                                     "floating repeat size ('~2.1')");
-    EXPECT_EQ(error(R"(size="r")"), "t.xml:3:55: 'r' is not a size: give metres ('4'), a share ('1r') or a "
-                                    "floating repeat size ('~2.1')");
+    EXPECT_EQ(error(R"(size="4x")"),
+              "t.xml:3:55: '4x' is not a size: give metres ('4'), a share ('1r') or a "
+              "floating repeat size ('~2.1')");
+    EXPECT_EQ(error(R"(size="r")"),
+              "t.xml:3:55: 'r' is not a size: give metres ('4'), a share ('1r') or a "
+              "floating repeat size ('~2.1')");
     EXPECT_EQ(error(R"(scale="1 1")"), "t.xml:3:56: attribute 'scale' takes three numbers");
     EXPECT_EQ(error(R"(translate="0 0 x")"), "t.xml:3:60: 'x' is not a number (attribute 'translate')");
     EXPECT_EQ(error(R"(uv="1 1 1")"), "t.xml:3:53: attribute 'uv' takes two numbers");
@@ -200,12 +204,15 @@ TEST(RuleFile, MalformedNumbersAndVectors) {
 }
 
 TEST(RuleFile, SizesMustBePositive) {
-    EXPECT_EQ(errorOf(ruleA(R"(<Probability value="1"><Split axis="u"/><Symbol size="-1">a.wrl</Symbol></Probability>)")),
-              "t.xml:3:55: size '-1' is not positive");
-    EXPECT_EQ(errorOf(ruleA(R"(<Probability value="1"><Split axis="u"/><Symbol size="0r">a.wrl</Symbol></Probability>)")),
-              "t.xml:3:55: size '0r' is not positive");
-    EXPECT_EQ(errorOf(ruleA(R"(<Probability value="1"><Repeat axis="u" size="0"/><Symbol>a.wrl</Symbol></Probability>)")),
-              "t.xml:3:47: size '0' is not positive");
+    EXPECT_EQ(
+        errorOf(ruleA(R"(<Probability value="1"><Split axis="u"/><Symbol size="-1">a.wrl</Symbol></Probability>)")),
+        "t.xml:3:55: size '-1' is not positive");
+    EXPECT_EQ(
+        errorOf(ruleA(R"(<Probability value="1"><Split axis="u"/><Symbol size="0r">a.wrl</Symbol></Probability>)")),
+        "t.xml:3:55: size '0r' is not positive");
+    EXPECT_EQ(
+        errorOf(ruleA(R"(<Probability value="1"><Repeat axis="u" size="0"/><Symbol>a.wrl</Symbol></Probability>)")),
+        "t.xml:3:47: size '0' is not positive");
 }
 
 TEST(RuleFile, ProbabilitiesMustBeFiniteAndNotNegative) {
@@ -224,10 +231,12 @@ TEST(RuleFile, ProbabilitiesMustBeFiniteAndNotNegative) {
 TEST(RuleFile, RepeatNeedsAnAbsoluteSize) {
     EXPECT_EQ(errorOf(ruleA(R"(<Probability value="1"><Repeat axis="r"/><Symbol>a.wrl</Symbol></Probability>)")),
               "t.xml:3:24: <Repeat> needs the attribute 'size'");
-    EXPECT_EQ(errorOf(ruleA(R"(<Probability value="1"><Repeat axis="r" size="1r"/><Symbol>a.wrl</Symbol></Probability>)")),
-              "t.xml:3:47: a repeat's size is absolute ('2') or floating ('~2'), not relative");
-    EXPECT_EQ(errorOf(ruleA(R"(<Probability value="1"><Split axis="r"/><Symbol size="~2">a.wrl</Symbol></Probability>)")),
-              "t.xml:3:55: a floating size ('~') is for <Repeat>, not <Symbol>");
+    EXPECT_EQ(
+        errorOf(ruleA(R"(<Probability value="1"><Repeat axis="r" size="1r"/><Symbol>a.wrl</Symbol></Probability>)")),
+        "t.xml:3:47: a repeat's size is absolute ('2') or floating ('~2'), not relative");
+    EXPECT_EQ(
+        errorOf(ruleA(R"(<Probability value="1"><Split axis="r"/><Symbol size="~2">a.wrl</Symbol></Probability>)")),
+        "t.xml:3:55: a floating size ('~') is for <Repeat>, not <Symbol>");
 }
 
 TEST(RuleFile, UnknownAxisAndZScale) {
@@ -282,7 +291,8 @@ TEST(RuleFile, RuleThatDerivesItselfForever) {
 }
 
 TEST(RuleFile, RecursionWithAWayOutIsFine) {
-    RuleSet set = parse(ruleA(R"(<Probability value="0.5"><Split axis="u"/><Symbol>a.wrl</Symbol><Symbol>A</Symbol></Probability>
+    RuleSet set =
+        parse(ruleA(R"(<Probability value="0.5"><Split axis="u"/><Symbol>a.wrl</Symbol><Symbol>A</Symbol></Probability>
 <Probability value="0.5"><Symbol>a.wrl</Symbol></Probability>)"));
     EXPECT_EQ(set.rules.size(), 1u);
 }
@@ -323,8 +333,9 @@ TEST(RuleFile, ProbabilitiesNotSummingToOneAreWarnedAndRenormalised) {
 </Rules></Rule>
 </Rulefile>)");
     ASSERT_EQ(set.warnings.size(), 1u);
-    EXPECT_EQ(set.warnings[0], "t.xml:2:1: the probabilities of rule 'GroundfloorWindowTileChoice' sum to 0.5, not 1; "
-                               "they are scaled to sum to 1");
+    EXPECT_EQ(set.warnings[0],
+              "t.xml:2:1: the probabilities of rule 'GroundfloorWindowTileChoice' sum to 0.5, not 1; "
+              "they are scaled to sum to 1");
     EXPECT_FLOAT_EQ(set.find("GroundfloorWindowTileChoice")->branches[0].probability, 1.0f);
     // Thirds written to six places are within the tolerance, and are scaled all the same.
     float sum = 0;
@@ -356,8 +367,9 @@ TEST(RuleFile, FloatingRepeatAndScopeConditions) {
 }
 
 TEST(RuleFile, ScopeConditionBoundsMustBeOrdered) {
-    EXPECT_EQ(errorOf(ruleA(R"(<Probability value="1" min_width="3" max_width="2"><Symbol>a.wrl</Symbol></Probability>)")),
-              "t.xml:3:49: max_width 2 is less than min_width 3");
+    EXPECT_EQ(
+        errorOf(ruleA(R"(<Probability value="1" min_width="3" max_width="2"><Symbol>a.wrl</Symbol></Probability>)")),
+        "t.xml:3:49: max_width 2 is less than min_width 3");
     EXPECT_EQ(errorOf(ruleA(R"(<Probability value="1" min_height="-1"><Symbol>a.wrl</Symbol></Probability>)")),
               "t.xml:3:36: attribute 'min_height' is -1, which is negative");
 }
@@ -440,8 +452,9 @@ TEST_F(RuleFileIncludes, IncludeCycle) {
 </Rulefile>)");
     write("parts/b.xml", "<Rulefile name=\"b\">\n  <Include file=\"../a.xml\"/>\n</Rulefile>");
     std::filesystem::path b = dir_ / "parts/b.xml", again = dir_ / "parts/../a.xml";
-    EXPECT_EQ(errorOfFile(a), fmt::format("{}:2:18: the includes form a cycle: {} → {} → {}", b.string(), a.string(),
-                                          b.string(), again.string()));
+    EXPECT_EQ(errorOfFile(a),
+              fmt::format("{}:2:18: the includes form a cycle: {} → {} → {}", b.string(), a.string(), b.string(),
+                          again.string()));
 }
 
 TEST_F(RuleFileIncludes, IncludesNestedTooDeep) {
@@ -451,15 +464,16 @@ TEST_F(RuleFileIncludes, IncludesNestedTooDeep) {
   <Rule><Predecessor>C</Predecessor><Rules><Probability value="1"><Symbol>c.wrl</Symbol></Probability></Rules></Rule>
 </Rulefile>)");
     EXPECT_EQ(readRuleFile(a, isWrl, {2}).rules.size(), 1u);
-    EXPECT_EQ(errorOfFile(a, {1}), fmt::format("{}:2:1: includes are nested more than 1 deep", (dir_ / "b.xml").string()));
+    EXPECT_EQ(errorOfFile(a, {1}),
+              fmt::format("{}:2:1: includes are nested more than 1 deep", (dir_ / "b.xml").string()));
 }
 
 TEST_F(RuleFileIncludes, MissingFilesAreNamed) {
     std::filesystem::path missing = dir_ / "missing.xml";
     EXPECT_EQ(errorOfFile(missing), fmt::format("{}: cannot open file", missing.string()));
-    std::filesystem::path main = write("main.xml", "<Rulefile name=\"main\">\n  <Include file=\"missing.xml\"/>\n</Rulefile>");
-    EXPECT_EQ(errorOfFile(main),
-              fmt::format("{}:2:18: {}: cannot open file", main.string(), missing.string()));
+    std::filesystem::path main =
+        write("main.xml", "<Rulefile name=\"main\">\n  <Include file=\"missing.xml\"/>\n</Rulefile>");
+    EXPECT_EQ(errorOfFile(main), fmt::format("{}:2:18: {}: cannot open file", main.string(), missing.string()));
 }
 
 }  // namespace

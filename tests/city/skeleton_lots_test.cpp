@@ -21,7 +21,9 @@ LotSettings unfiltered() {
     return settings;
 }
 
-size_t flaggedEdges(const Footprint &lot) { return size_t(std::count(lot.streetEdges.begin(), lot.streetEdges.end(), true)); }
+size_t flaggedEdges(const Footprint &lot) {
+    return size_t(std::count(lot.streetEdges.begin(), lot.streetEdges.end(), true));
+}
 
 TEST(LotsSkeleton, LotsLieInsideApartFacingAStreet) {
     LotSettings settings;
@@ -73,7 +75,8 @@ TEST(LotsSkeleton, CornersOfTwoStreetsAreCornerLotsOfTheLongerStreet) {
     for (Vec2f corner : rectangle.points) {
         SCOPED_TRACE(testing::Message() << corner.x << " " << corner.y);
         auto holds = [&](const Footprint &lot) {
-            return std::any_of(lot.points.begin(), lot.points.end(), [&](Vec2f p) { return p.x == corner.x && p.y == corner.y; });
+            return std::any_of(lot.points.begin(), lot.points.end(),
+                               [&](Vec2f p) { return p.x == corner.x && p.y == corner.y; });
         };
         auto lot = std::find_if(lots.begin(), lots.end(), holds);
         ASSERT_NE(lot, lots.end());
@@ -90,8 +93,8 @@ TEST(LotsSkeleton, EdgesWithoutStreetJoinAStreetStrip) {
     std::vector<Footprint> lots = skeletonLots(oneStreet, unfiltered(), 5, 3);
     ASSERT_GE(lots.size(), 3u);
     for (const Footprint &lot : lots) {
-        auto [low, high] = std::minmax_element(lot.points.begin(), lot.points.end(),
-                                               [](Vec2f a, Vec2f b) { return a.y < b.y; });
+        auto [low, high] =
+            std::minmax_element(lot.points.begin(), lot.points.end(), [](Vec2f a, Vec2f b) { return a.y < b.y; });
         EXPECT_EQ(low->y, 0);
         EXPECT_EQ(high->y, 50);
     }

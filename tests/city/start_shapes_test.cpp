@@ -26,8 +26,7 @@ void expectNear(Vec3f actual, Vec3f expected, const std::string &what) {
 
 TEST(StartShapes, RectangleOnALongStreetEdge) {
     std::vector<StartShape> shapes = makeStartShapes(rectangle({true, false, false, false}), 15);
-    EXPECT_EQ(symbols(shapes),
-              (std::vector<std::string>{"FrontFacade", "SideFacade", "BackFacade", "SideFacade"}));
+    EXPECT_EQ(symbols(shapes), (std::vector<std::string>{"FrontFacade", "SideFacade", "BackFacade", "SideFacade"}));
     const float widths[] = {20, 12, 20, 12};
     for (uint32_t e = 0; e < 4; ++e) {
         EXPECT_EQ(shapes[e].edge, e);

@@ -50,7 +50,8 @@ TEST(StreetGeometry, OneStreetIsARibbonWithRoundEndsAndSidewalks) {
 
 TEST(StreetGeometry, StreetsMeetInOneSurfaceWithoutOverlaps) {
     // A crossroads: four streets from one node.
-    StreetNetwork network{{{0, 0}, {50, 0}, {-50, 0}, {0, 50}, {0, -50}}, {{0, 1, 8}, {0, 2, 8}, {0, 3, 8}, {0, 4, 8}}, 0};
+    StreetNetwork network{
+        {{0, 0}, {50, 0}, {-50, 0}, {0, 50}, {0, -50}}, {{0, 1, 8}, {0, 2, 8}, {0, 3, 8}, {0, 4, 8}}, 0};
     Mesh m = streetGeometry(network);
     // Four 50 m arms of 8 m overlap in the middle: the union counts the middle once.
     float carriageway = road(m);
@@ -70,7 +71,8 @@ TEST(StreetGeometry, JunctionsAreWhereThreeOrMoreStreetsMeet) {
     // A crossroads of 8 m streets: every point within 4√2 m of the node lies on one of them, so
     // the junction holds that circle, within the 16-gon round it (circumscribed, as the joints
     // are; its corners at 45° just miss the streets).
-    StreetNetwork cross{{{0, 0}, {50, 0}, {-50, 0}, {0, 50}, {0, -50}}, {{0, 1, 8}, {0, 2, 8}, {0, 3, 8}, {0, 4, 8}}, 0};
+    StreetNetwork cross{
+        {{0, 0}, {50, 0}, {-50, 0}, {0, 50}, {0, -50}}, {{0, 1, 8}, {0, 2, 8}, {0, 3, 8}, {0, 4, 8}}, 0};
     Mesh m = streetGeometry(cross);
     float reach = kJunctionReach * 4;
     EXPECT_GT(area(m, StreetJunction), kPi * reach * reach);

@@ -22,8 +22,8 @@ struct Terrain {
     Mesh mesh;
     TerrainSurface surface;
 
-    explicit Terrain(HeightGrid g)
-        : grid(std::move(g)), mesh(drapeAreas(grid, kFrame, {}, {}).mesh), surface(mesh, gridLines(grid, kFrame)) {}
+    explicit Terrain(HeightGrid g) :
+        grid(std::move(g)), mesh(drapeAreas(grid, kFrame, {}, {}).mesh), surface(mesh, gridLines(grid, kFrame)) {}
 };
 
 // A hillside rising 12 % to the north and 5 % to the east, with ±0.4 m of noise at every node.
@@ -43,7 +43,7 @@ StreetNetwork town() {
                {-20, 30},  {40, 30},   {40, -80},             // 4–6 up from the T and through the crossing
                {-20, 70},  {10, 85},                          // 7–8 a bend, then on
                {60, 38},   {-75, 0},   {46, -40}};            // 9 a fork, 10 a dead end, 11 a stub
-    n.streets = {{0, 1, 8}, {1, 2, 8}, {2, 3, 8}, {1, 4, 6}, {2, 5, 6}, {2, 6, 6},
+    n.streets = {{0, 1, 8}, {1, 2, 8}, {2, 3, 8}, {1, 4, 6}, {2, 5, 6},  {2, 6, 6},
                  {4, 7, 6}, {7, 8, 6}, {5, 9, 5}, {4, 5, 6}, {0, 10, 5}, {11, 3, 4}};
     n.height = 12;  // ignored on terrain
     return n;
@@ -116,7 +116,8 @@ TEST(StreetsOnTerrain, AStreetIsLevelAcrossAndFollowsTheGroundAlong) {
     EXPECT_NEAR(along, 0.05 * east, 1.0);
     // Draped on the ground vertex by vertex instead, a street tilts with the cross slope.
     Mesh draped = streets;
-    for (Vec3f &p : draped.positions) p.z += float(*hill.surface.heightAt({p.x, p.y}) - *hill.surface.heightAt({-60, 0}));
+    for (Vec3f &p : draped.positions)
+        p.z += float(*hill.surface.heightAt({p.x, p.y}) - *hill.surface.heightAt({-60, 0}));
     EXPECT_GT(profiles(draped).unlevel, 100u);
 }
 

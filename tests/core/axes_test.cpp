@@ -44,7 +44,8 @@ TEST(Axes, BothAreRotations) {
         EXPECT_FLOAT_EQ(t.determinant(), 1.0f);
         // Orthonormal: the normal transform (inverse transpose) is the matrix itself.
         EXPECT_EQ(t.normalTransform(), t);
-        for (Vec3f v : {Vec3f(1, 0, 0), Vec3f(0, 1, 0), Vec3f(0, 0, 1)}) EXPECT_FLOAT_EQ(length(t.applyVector(v)), 1.0f);
+        for (Vec3f v : {Vec3f(1, 0, 0), Vec3f(0, 1, 0), Vec3f(0, 0, 1)})
+            EXPECT_FLOAT_EQ(length(t.applyVector(v)), 1.0f);
     }
 }
 

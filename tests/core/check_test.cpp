@@ -17,8 +17,9 @@ TEST(Check, FailingCheckNamesItsLineConditionAndMessage) {
         FAIL() << "no exception";
     } catch (const InternalError &e) {
         std::string what = e.what();
-        EXPECT_NE(what.find("check_test.cpp:" + std::to_string(line) + ": internal error: two is not below one (2 < 1)"),
-                  std::string::npos)
+        EXPECT_NE(
+            what.find("check_test.cpp:" + std::to_string(line) + ": internal error: two is not below one (2 < 1)"),
+            std::string::npos)
             << what;
     }
 }

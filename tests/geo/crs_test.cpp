@@ -62,15 +62,16 @@ TEST(Crs, GaussKrueger3ToUtm32AgreesWithBeta2007Within3m) {
         CrsCoordinate gk = convertEpsg(25832, 31467, r.beta);
         forward.push_back(distance(utm, r.beta));
         backward.push_back(distance(gk, r.from));
-        std::printf("%-10s GK3 -> UTM32 %.3f %.3f, BeTA2007 off by %.3f m; UTM32 -> GK3 off by %.3f m\n", r.place, utm.x,
-                    utm.y, forward.back(), backward.back());
+        std::printf("%-10s GK3 -> UTM32 %.3f %.3f, BeTA2007 off by %.3f m; UTM32 -> GK3 off by %.3f m\n", r.place,
+                    utm.x, utm.y, forward.back(), backward.back());
         EXPECT_LT(forward.back(), 3) << r.place;
         EXPECT_LT(backward.back(), 3) << r.place;
     }
-    std::printf("Helmert EPSG:1777 against BeTA2007 at %zu points: GK3 -> UTM32 max %.3f m, median %.3f m; "
-                "UTM32 -> GK3 max %.3f m, median %.3f m\n",
-                forward.size(), *std::max_element(forward.begin(), forward.end()), median(forward),
-                *std::max_element(backward.begin(), backward.end()), median(backward));
+    std::printf(
+        "Helmert EPSG:1777 against BeTA2007 at %zu points: GK3 -> UTM32 max %.3f m, median %.3f m; "
+        "UTM32 -> GK3 max %.3f m, median %.3f m\n",
+        forward.size(), *std::max_element(forward.begin(), forward.end()), median(forward),
+        *std::max_element(backward.begin(), backward.end()), median(backward));
 }
 
 TEST(Crs, HelmertIsProjsTowgs84) {
@@ -103,7 +104,8 @@ TEST(Crs, DatumChangeRoundTripsAndKeepsHeights) {
             EXPECT_EQ(etrs.x, there.x);
             EXPECT_EQ(etrs.y, there.y);
         }
-    }    for (const ReferencePoint &r : kGk3ToUtm32) {
+    }
+    for (const ReferencePoint &r : kGk3ToUtm32) {
         CrsCoordinate back = convertEpsg(25832, 31467, convertEpsg(31467, 25832, r.from));
         EXPECT_LT(distance(back, r.from), 1e-6) << r.place;
     }
@@ -229,7 +231,8 @@ TEST(Crs, GaussKruegerZoneOfRechtswert) {
     EXPECT_EQ(gaussKruegerCrs(2605210.959).epsg, 31466);
     EXPECT_EQ(gaussKruegerZone(3150000).offsetFromMeridian, -350000);  // the limit itself fits
     // A UTM easting, a point too far from the meridian, a zone veduta has no CRS for.
-    for (double bad : {397597.0, 3100000.0, 3850001.0, 12345678.0, -3397597.0, std::numeric_limits<double>::quiet_NaN()}) {
+    for (double bad :
+         {397597.0, 3100000.0, 3850001.0, 12345678.0, -3397597.0, std::numeric_limits<double>::quiet_NaN()}) {
         EXPECT_THROW(gaussKruegerZone(bad), std::out_of_range) << bad;
     }
     EXPECT_THROW(gaussKruegerCrs(6500000), std::out_of_range);

@@ -36,14 +36,16 @@ struct SmallDgm {
         heights[size_t(2 * columns + 1)] = "";
     }
     const std::string &text(int c, int r) const { return heights[size_t(r * columns + c)]; }
-    float value(int c, int r) const { return text(c, r).empty() ? NAN : float(std::strtod(text(c, r).c_str(), nullptr)); }
+    float value(int c, int r) const {
+        return text(c, r).empty() ? NAN : float(std::strtod(text(c, r).c_str(), nullptr));
+    }
 };
 
 class DgmFileTest : public ::testing::Test {
   protected:
     void SetUp() override {
         dir_ = fs::temp_directory_path() /
-               fmt::format("veduta_dgm_{}_{}", ::testing::UnitTest::GetInstance()->current_test_info()->name(), getpid());
+            fmt::format("veduta_dgm_{}_{}", ::testing::UnitTest::GetInstance()->current_test_info()->name(), getpid());
         fs::create_directories(dir_);
     }
     void TearDown() override { fs::remove_all(dir_); }
@@ -60,15 +62,18 @@ class DgmFileTest : public ::testing::Test {
         for (int r = d.rows - 1; r >= 0; --r)
             for (int c = 0; c < d.columns; ++c)
                 if (!d.text(c, r).empty())
-                    text += fmt::format("{:.3f} {:.3f} {}\n", d.west + c * d.spacing, d.south + r * d.spacing, d.text(c, r));
+                    text += fmt::format("{:.3f} {:.3f} {}\n", d.west + c * d.spacing, d.south + r * d.spacing,
+                                        d.text(c, r));
         return write(name, text);
     }
 
     fs::path writeAsc(const std::string &name, const SmallDgm &d) const {
-        std::string text = fmt::format("ncols {}\nnrows {}\nxllcorner {}\nyllcorner {}\ncellsize {}\nNODATA_value -9999\n",
-                                       d.columns, d.rows, d.west - d.spacing / 2, d.south - d.spacing / 2, d.spacing);
+        std::string text =
+            fmt::format("ncols {}\nnrows {}\nxllcorner {}\nyllcorner {}\ncellsize {}\nNODATA_value -9999\n", d.columns,
+                        d.rows, d.west - d.spacing / 2, d.south - d.spacing / 2, d.spacing);
         for (int r = d.rows - 1; r >= 0; --r) {
-            for (int c = 0; c < d.columns; ++c) text += (c ? " " : "") + (d.text(c, r).empty() ? "-9999" : d.text(c, r));
+            for (int c = 0; c < d.columns; ++c)
+                text += (c ? " " : "") + (d.text(c, r).empty() ? "-9999" : d.text(c, r));
             text += "\n";
         }
         return write(name, text);
@@ -171,7 +176,8 @@ TEST_F(DgmFileTest, XyzRowOrderDoesNotMatter) {
     for (int c = d.columns - 1; c >= 0; --c)
         for (int r = 0; r < d.rows; ++r)
             if (!d.text(c, r).empty())
-                columnsFirst += fmt::format("\t{} {}\t{}\r\n", d.west + c * d.spacing, d.south + r * d.spacing, d.text(c, r));
+                columnsFirst +=
+                    fmt::format("\t{} {}\t{}\r\n", d.west + c * d.spacing, d.south + r * d.spacing, d.text(c, r));
     expectSameGrid(northFirst, readDgm(write("b.xyz", "# a comment\n\n" + southFirst)).grid, 1e-9);
     expectSameGrid(northFirst, readDgm(write("c.txt", columnsFirst)).grid, 1e-9);
 }
@@ -210,7 +216,8 @@ TEST_F(DgmFileTest, XyzMixedSpacingsAreAnError) {
 
 TEST_F(DgmFileTest, XyzDuplicatesMustAgree) {
     fs::path file = write("twice.xyz", "0 0 1\n10 0 1\n0 10 1\n 0 0 2\n");
-    expectError([&] { readDgm(file); }, file.string() + ":4:2: the point (0.000, 0.000) has the height 2 here but 1 on line 1");
+    expectError([&] { readDgm(file); },
+                file.string() + ":4:2: the point (0.000, 0.000) has the height 2 here but 1 on line 1");
     Dgm same = readDgm(write("same.xyz", "0 0 1\n10 0 1\n0 0 1\n"));
     EXPECT_EQ(same.grid.columns, 2);
     EXPECT_EQ(same.grid.node(0, 0), 1);
@@ -240,15 +247,18 @@ TEST_F(DgmFileTest, TilesMosaic) {
     whole.columns = 9;
     whole.heights.clear();
     for (int r = 0; r < whole.rows; ++r)
-        for (int c = 0; c < whole.columns; ++c) whole.heights.push_back(fmt::format("{:.3f}", 100 + 0.5 * c + 0.25 * r));
+        for (int c = 0; c < whole.columns; ++c)
+            whole.heights.push_back(fmt::format("{:.3f}", 100 + 0.5 * c + 0.25 * r));
     SmallDgm west = whole, east = whole;
     west.columns = east.columns = 5;
     west.heights.clear(), east.heights.clear();
     east.west = whole.west + 4 * whole.spacing;
     for (int r = 0; r < whole.rows; ++r)
-        for (int c = 0; c < 5; ++c) west.heights.push_back(whole.text(c, r)), east.heights.push_back(whole.text(c + 4, r));
+        for (int c = 0; c < 5; ++c)
+            west.heights.push_back(whole.text(c, r)), east.heights.push_back(whole.text(c + 4, r));
     std::vector<std::string> warnings;
-    Dgm mosaic = readDgmTiles({writeXyz("east.xyz", east), writeGeoTiff("west.tif", west)}, NoDataPolicy::Cut, warnings);
+    Dgm mosaic =
+        readDgmTiles({writeXyz("east.xyz", east), writeGeoTiff("west.tif", west)}, NoDataPolicy::Cut, warnings);
     EXPECT_TRUE(warnings.empty());
     HeightGrid expected = readDgm(writeXyz("whole.xyz", whole)).grid;
     expectSameGrid(mosaic.grid, expected, 1e-6);
@@ -261,10 +271,16 @@ TEST_F(DgmFileTest, TilesMustLineUp) {
     c.spacing = 1;
     fs::path fa = writeXyz("a.xyz", a), fb = writeXyz("b.xyz", b), fc = writeAsc("c.asc", c);
     std::vector<std::string> warnings;
-    expectError([&] { readDgmTiles({fa, fb}, NoDataPolicy::Cut, warnings); },
-                fb.string() + ": the nodes are off the nodes of " + fa.string() + " by 0.5000 m east");
-    expectError([&] { readDgmTiles({fa, fc}, NoDataPolicy::Cut, warnings); },
-                fc.string() + ": the grid spacing 1 m differs from the 2 m of " + fa.string());
+    expectError(
+        [&] {
+            readDgmTiles({fa, fb}, NoDataPolicy::Cut, warnings);
+        },
+        fb.string() + ": the nodes are off the nodes of " + fa.string() + " by 0.5000 m east");
+    expectError(
+        [&] {
+            readDgmTiles({fa, fc}, NoDataPolicy::Cut, warnings);
+        },
+        fc.string() + ": the grid spacing 1 m differs from the 2 m of " + fa.string());
 }
 
 TEST_F(DgmFileTest, OverlapsKeepTheFirstTile) {

@@ -67,16 +67,25 @@ std::vector<DrapeArea> testAreas(const HeightGrid &grid) {
     }
     double s = grid.spacing;
     MapPoint n = grid.nodePoint(10, 10);
-    areas.push_back({{n, {n.easting + 6 * s, n.northing}, {n.easting + 6 * s, n.northing + 4 * s}, {n.easting, n.northing + 4 * s}},
-                     LandClass::Park, 100, {}});
+    areas.push_back(
+        {{n, {n.easting + 6 * s, n.northing}, {n.easting + 6 * s, n.northing + 4 * s}, {n.easting, n.northing + 4 * s}},
+         LandClass::Park,
+         100,
+         {}});
     MapPoint m = grid.nodePoint(60, 20);  // touches row line 20 at one point from above
-    areas.push_back({{{m.easting + 0.3 * s, m.northing}, {m.easting + 2.7 * s, m.northing + 1.5 * s},
+    areas.push_back({{{m.easting + 0.3 * s, m.northing},
+                      {m.easting + 2.7 * s, m.northing + 1.5 * s},
                       {m.easting - 1.2 * s, m.northing + 2.2 * s}},
-                     LandClass::Shrubs, 101, {}});
+                     LandClass::Shrubs,
+                     101,
+                     {}});
     areas.push_back({star({grid.west, grid.south + 60}, 30, 17, 55), LandClass::Road, 102, {}});  // half outside
-    areas.push_back({{{grid.west + 31.1, grid.south + 101.05}, {grid.west + 75.3, grid.south + 101.0501},
+    areas.push_back({{{grid.west + 31.1, grid.south + 101.05},
+                      {grid.west + 75.3, grid.south + 101.0501},
                       {grid.west + 53.2, grid.south + 101.07}},
-                     LandClass::Other, 103, {}});  // a sliver
+                     LandClass::Other,
+                     103,
+                     {}});  // a sliver
     return areas;
 }
 
@@ -181,7 +190,8 @@ TEST(DrapeAreas, OverlapsGoToTheHigherPriority) {
     HeightGrid grid = test::roughTerrain(41, 41, 5.0, kSouthWest, 4);
     auto square = [&](double x0, double y0, double size) {
         MapPoint p{grid.west + x0, grid.south + y0};
-        return MapRing{p, {p.easting + size, p.northing}, {p.easting + size, p.northing + size}, {p.easting, p.northing + size}};
+        return MapRing{
+            p, {p.easting + size, p.northing}, {p.easting + size, p.northing + size}, {p.easting, p.northing + size}};
     };
     std::vector<DrapeArea> areas{{square(10.3, 10.7, 100), LandClass::Farmland, 0, {}},
                                  {square(60.1, 50.9, 100), LandClass::Forest, 1, {}},
@@ -216,8 +226,10 @@ TEST(DrapeAreas, WaterIsFlatAtTheLowestPointOfItsOutline) {
         const MapPoint &a = ring[i], &b = ring[(i + 1) % ring.size()];
         for (int k = 0; k <= 2000; ++k) {
             double t = k / 2000.0;
-            lowest = std::min(lowest, test::gridSurface(grid, {a.easting + t * (b.easting - a.easting),
-                                                               a.northing + t * (b.northing - a.northing)}));
+            lowest = std::min(
+                lowest,
+                test::gridSurface(
+                    grid, {a.easting + t * (b.easting - a.easting), a.northing + t * (b.northing - a.northing)}));
         }
     }
     EXPECT_GE(lowest, level - 1e-3);
@@ -267,7 +279,8 @@ TEST(DrapeAreas, LandscapeUvsAreLocalMetresOverTheTile) {
 TEST(DrapeAreas, RejectsBrokenOutlines) {
     HeightGrid grid = test::flatTerrain(5, 5, 1.0, kSouthWest, 0);
     MapPoint p = grid.nodePoint(1, 1);
-    EXPECT_THROW(drapeAreas(grid, kFrame, {{{p, p, {p.easting + 1, p.northing}}, LandClass::Forest, 0, {}}}, {}), InputError);
+    EXPECT_THROW(drapeAreas(grid, kFrame, {{{p, p, {p.easting + 1, p.northing}}, LandClass::Forest, 0, {}}}, {}),
+                 InputError);
     EXPECT_THROW(drapeAreas(grid, kFrame, {{{p, {NAN, 1}, {p.easting + 1, p.northing}}, LandClass::Forest, 0, {}}}, {}),
                  InputError);
 }

@@ -38,8 +38,9 @@ struct Side {
 // ULOBNN content of one vector element from a to b (through `between`), bounding objects.
 std::string element(MapPoint a, MapPoint b, const Side &right, const Side &left, std::string_view type = "4107",
                     const std::vector<MapPoint> &between = {}) {
-    std::string content = fmt::format("00010001{}000010001{}1100010001001{}{:<7}{:<7}{:<3}{:<3}  0000", atkisPoint(a.easting, a.northing),
-                                      atkisPoint(b.easting, b.northing), type, right.id, left.id, right.part, left.part);
+    std::string content =
+        fmt::format("00010001{}000010001{}1100010001001{}{:<7}{:<7}{:<3}{:<3}  0000", atkisPoint(a.easting, a.northing),
+                    atkisPoint(b.easting, b.northing), type, right.id, left.id, right.part, left.part);
     content += fmt::format("{:04d}", between.size());
     for (const MapPoint &p : between) content += atkisPoint(p.easting, p.northing);
     return content + "0000";
@@ -47,12 +48,13 @@ std::string element(MapPoint a, MapPoint b, const Side &right, const Side &left,
 
 // ULOBNN content of an object's function with its reference point.
 std::string object(std::string_view id, std::string_view type, char geometry, MapPoint reference) {
-    return fmt::format("00010001{}0000000010001001{}01{}{:<7}  060502 0000", atkisPoint(reference.easting, reference.northing),
-                       type, geometry, id);
+    return fmt::format("00010001{}0000000010001001{}01{}{:<7}  060502 0000",
+                       atkisPoint(reference.easting, reference.northing), type, geometry, id);
 }
 
 // ULTANN content: one Attributkennzeichen with its attributes.
-std::string attributes(std::string_view id, std::string_view part, const std::vector<std::pair<std::string, std::string>> &values) {
+std::string attributes(std::string_view id, std::string_view part,
+                       const std::vector<std::pair<std::string, std::string>> &values) {
     std::string content = fmt::format("00010001{:<7}{:<3}001{:04d}", id, part, values.size());
     for (const auto &[name, value] : values) content += fmt::format("{:<4}{:<7}", name, value);
     return content;
@@ -143,8 +145,8 @@ TEST(Edbs, JoinsContinuationRecords) {
     std::string content = element(kA, kB, {}, {"W000001", ""}, "4107", {kMid, kMid, kMid});
     std::string whole = record("BSPE", 7, ' ', "ULOBNN", content) + "\n";
     std::string split = record("BSPE", 7, 'A', "ULOBNN", content.substr(0, 30)) + "\n" +
-                        record("BSPE", 8, 'F', "ULOBNN", content.substr(30, 40)) + "\n" +
-                        record("BSPE", 9, 'E', "ULOBNN", content.substr(70)) + "\n";
+        record("BSPE", 8, 'F', "ULOBNN", content.substr(30, 40)) + "\n" +
+        record("BSPE", 9, 'E', "ULOBNN", content.substr(70)) + "\n";
     EdbsFile one = parseEdbs(whole, "a"), three = parseEdbs(split, "b");
     ASSERT_EQ(three.lines.size(), 1u);
     EXPECT_EQ(three.records, 3);
@@ -171,8 +173,10 @@ TEST(Edbs, ContinuationErrors) {
     std::string e = record("BSPE", 3, 'E', "ULOBNN", "");
     EXPECT_NE(errorOf(e + "\n").find("without a start record"), std::string::npos);
     EXPECT_NE(errorOf(a + "\n" + f + "\n").find("record 1: continued record has no end record"), std::string::npos);
-    EXPECT_NE(errorOf(a + "\n" + record("BSPE", 2, ' ', "ULOBNN", "0000") + "\n").find("no end record"), std::string::npos);
-    EXPECT_NE(errorOf(a + "\n" + record("BSPE", 2, 'E', "ULTANN", "") + "\n").find("record 2: continuation record is BSPE ULTANN"),
+    EXPECT_NE(errorOf(a + "\n" + record("BSPE", 2, ' ', "ULOBNN", "0000") + "\n").find("no end record"),
+              std::string::npos);
+    EXPECT_NE(errorOf(a + "\n" + record("BSPE", 2, 'E', "ULTANN", "") + "\n")
+                  .find("record 2: continuation record is BSPE ULTANN"),
               std::string::npos);
     EXPECT_EQ(errorOf(a + "\n" + f + "\n" + e + "\n"), "");
 }
@@ -195,13 +199,17 @@ TEST(Edbs, WrongLengthFieldNamesTheRecord) {
 }
 
 TEST(Edbs, HeaderErrors) {
-    EXPECT_NE(errorOf("EDBX00240000AEND000000  0000        \n").find("t.edbs:1:1: record 0: not an EDBS record"), std::string::npos);
+    EXPECT_NE(errorOf("EDBX00240000AEND000000  0000        \n").find("t.edbs:1:1: record 0: not an EDBS record"),
+              std::string::npos);
     EXPECT_NE(errorOf("EDBS0024\n").find("t.edbs:1:9: record header: the record header needs 36"), std::string::npos);
     EXPECT_NE(errorOf(record("FLOE", 4, ' ', "ULOBNN", "0000") + "\n").find("record 4: operation FLOE is an update"),
               std::string::npos);
-    EXPECT_NE(errorOf(record("XXXX", 4, ' ', "ULOBNN", "0000") + "\n").find("record 4: unknown operation"), std::string::npos);
-    EXPECT_NE(errorOf(record("BSPE", 4, 'Q', "ULOBNN", "0000") + "\n").find("record 4: continuation flag"), std::string::npos);
-    EXPECT_NE(errorOf(record("BSPE", 4, ' ', "ULO8ALK", "0000") + "\n").find("record 4: information 'ULO8ALK'"), std::string::npos);
+    EXPECT_NE(errorOf(record("XXXX", 4, ' ', "ULOBNN", "0000") + "\n").find("record 4: unknown operation"),
+              std::string::npos);
+    EXPECT_NE(errorOf(record("BSPE", 4, 'Q', "ULOBNN", "0000") + "\n").find("record 4: continuation flag"),
+              std::string::npos);
+    EXPECT_NE(errorOf(record("BSPE", 4, ' ', "ULO8ALK", "0000") + "\n").find("record 4: information 'ULO8ALK'"),
+              std::string::npos);
     std::string longRecord = record("BINF", 4, ' ', "ULOTEX", "0001" + std::string(1970, 'x'));
     EXPECT_EQ(longRecord.size(), 2010u);
     EXPECT_NE(errorOf(longRecord + "\n").find("record 4: the record is 2010 characters long"), std::string::npos);
@@ -214,15 +222,17 @@ TEST(Edbs, ContentErrorsNameRecordAndColumn) {
     EXPECT_NE(errorOf(huge + "\n").find("t.edbs:1:37: record 12: 9999 × ULOBNN does not fit"), std::string::npos);
     std::string broken = element(kA, kB, {}, {"W000001", ""});
     broken[8] = 'x';  // the start point
-    EXPECT_NE(errorOf(record("BSPE", 12, ' ', "ULOBNN", broken) + "\n").find("t.edbs:1:45: record 12: Grundrisskennzeichen"),
-              std::string::npos);
+    EXPECT_NE(
+        errorOf(record("BSPE", 12, ' ', "ULOBNN", broken) + "\n").find("t.edbs:1:45: record 12: Grundrisskennzeichen"),
+        std::string::npos);
     std::string twice = element(kA, kB, {}, {"W000001", ""}).substr(0, 4) + "0002";
     EXPECT_NE(errorOf(record("BSPE", 12, ' ', "ULOBNN", twice) + "\n").find("record 12: "), std::string::npos);
     std::string leftOver = element(kA, kB, {}, {"W000001", ""}) + "junk";
     EXPECT_NE(errorOf(record("BSPE", 12, ' ', "ULOBNN", leftOver) + "\n").find("record 12: 4 characters left over"),
               std::string::npos);
     std::string badType = object("W000001", "4107", 'X', kA);
-    EXPECT_NE(errorOf(record("BSPE", 12, ' ', "ULOBNN", badType) + "\n").find("record 12: Objekttyp 'X'"), std::string::npos);
+    EXPECT_NE(errorOf(record("BSPE", 12, ' ', "ULOBNN", badType) + "\n").find("record 12: Objekttyp 'X'"),
+              std::string::npos);
 }
 
 TEST(Edbs, OpenOutlineIsAnErrorNamingTheObject) {
@@ -301,7 +311,8 @@ TEST(ElementChaining, ShuffledAndReversedElementsMakeOneRing) {
     }
     for (uint32_t seed = 0; seed < 20; ++seed) {
         std::vector<MapLine> shuffled = elements;
-        for (size_t i = shuffled.size(); i > 1; --i) std::swap(shuffled[i - 1], shuffled[hashValues({seed, uint32_t(i)}) % i]);
+        for (size_t i = shuffled.size(); i > 1; --i)
+            std::swap(shuffled[i - 1], shuffled[hashValues({seed, uint32_t(i)}) % i]);
         RingChaining r = chainRings(shuffled);
         ASSERT_TRUE(r.closed);
         ASSERT_EQ(r.rings.size(), 1u);
@@ -390,10 +401,12 @@ std::string corrupt(const std::string &text, uint32_t seed) {
     auto random = [&, n = 0u]() mutable { return hashValues({seed, n++}); };
     switch (random() % 5) {
     case 0:
-        for (uint32_t i = 0, n = 1 + random() % 8; i < n && !out.empty(); ++i) out[random() % out.size()] = char(random() % 256);
+        for (uint32_t i = 0, n = 1 + random() % 8; i < n && !out.empty(); ++i)
+            out[random() % out.size()] = char(random() % 256);
         break;
     case 1:
-        for (uint32_t i = 0, n = 1 + random() % 4; i < n && !out.empty(); ++i) out[random() % out.size()] = "0123456789 AFEx\n"[random() % 16];
+        for (uint32_t i = 0, n = 1 + random() % 4; i < n && !out.empty(); ++i)
+            out[random() % out.size()] = "0123456789 AFEx\n"[random() % 16];
         break;
     case 2: out.resize(random() % (out.size() + 1)); break;
     default: {
@@ -412,12 +425,13 @@ std::string corrupt(const std::string &text, uint32_t seed) {
 }
 
 TEST(EdbsRobustness, CorruptedFilesParseOrFailWithARecordNumber) {
-    std::vector<std::string> bases{forestFile(), file({
-        {"ULOBNN", object("S000001", "3101", 'L', kA)},
-        {"ULOBNN", element(kB, kMid, {}, {"S000001", "001"}, "3101")},
-        {"ULOBNN", element(kA, kMid, {}, {"S000001", "001"}, "3101", {kMid, kA})},
-        {"ULTANN", attributes("S000001", "001", {{"BRF", "0065"}})},
-    })};
+    std::vector<std::string> bases{forestFile(),
+                                   file({
+                                       {"ULOBNN", object("S000001", "3101", 'L', kA)},
+                                       {"ULOBNN", element(kB, kMid, {}, {"S000001", "001"}, "3101")},
+                                       {"ULOBNN", element(kA, kMid, {}, {"S000001", "001"}, "3101", {kMid, kA})},
+                                       {"ULTANN", attributes("S000001", "001", {{"BRF", "0065"}})},
+                                   })};
     if (auto path = test::sharedDataFile("edbs/alk_muster_part1.edbs")) {
         std::string sample = readText(*path);
         size_t cut = 0;
@@ -436,7 +450,8 @@ TEST(EdbsRobustness, CorruptedFilesParseOrFailWithARecordNumber) {
             ++parsed;
         } catch (const InputError &e) {
             std::string message = e.what();
-            bool named = message.find(": record ") != std::string::npos || message.find("no EDBS records") != std::string::npos;
+            bool named =
+                message.find(": record ") != std::string::npos || message.find("no EDBS records") != std::string::npos;
             EXPECT_TRUE(named) << "seed " << seed << ": " << message;
             ++failed;
         }

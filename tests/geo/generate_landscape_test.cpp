@@ -12,8 +12,9 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include "geo/terrain_surface.h"
 #include "assembly/build_scene.h"
+#include "city/generate_buildings.h"
+#include "geo/terrain_surface.h"
 
 namespace veduta {
 namespace {
@@ -31,10 +32,11 @@ class Landscape : public ::testing::Test {
   protected:
     void SetUp() override {
         dir_ = fs::temp_directory_path() /
-               fmt::format("veduta_land_{}_{}", ::testing::UnitTest::GetInstance()->current_test_info()->name(), getpid());
+            fmt::format("veduta_land_{}_{}", ::testing::UnitTest::GetInstance()->current_test_info()->name(), getpid());
         fs::create_directories(dir_);
-        std::string asc = fmt::format("ncols {}\nnrows {}\nxllcorner {}\nyllcorner {}\ncellsize {}\nNODATA_value -9999\n",
-                                      kColumns, kRows, kWest - kSpacing / 2, kSouth - kSpacing / 2, kSpacing);
+        std::string asc =
+            fmt::format("ncols {}\nnrows {}\nxllcorner {}\nyllcorner {}\ncellsize {}\nNODATA_value -9999\n", kColumns,
+                        kRows, kWest - kSpacing / 2, kSouth - kSpacing / 2, kSpacing);
         for (int r = kRows - 1; r >= 0; --r) {
             for (int c = 0; c < kColumns; ++c) asc += fmt::format("{}{:.3f}", c ? " " : "", height(c, r));
             asc += "\n";
@@ -48,7 +50,7 @@ class Landscape : public ::testing::Test {
     // A scene with the georeference at the grid's centre node (10, 10).
     SceneDescription scene(const std::string &landscape, const std::string &rest = "") const {
         std::string xml = "<scene version=\"1\">\n<georeference crs=\"EPSG:25832\" origin=\"530100 5326100\"/>\n" +
-                          landscape + rest + "</scene>\n";
+            landscape + rest + "</scene>\n";
         return readSceneText(xml, "test.xml", dir_);
     }
 
@@ -81,7 +83,8 @@ TEST_F(Landscape, TheTerrainIsTheDgmInTheLocalFrame) {
     EXPECT_EQ(m.triangleCount(), size_t(2 * (kColumns - 1) * (kRows - 1)));
     // Node (c, r) lies at (c − 10, r − 10) · 10 m from the origin, at its height.
     std::map<std::pair<int, int>, float> heights;
-    for (const Vec3f &p : m.positions) heights[{int(std::lround(p.x / kSpacing)) + 10, int(std::lround(p.y / kSpacing)) + 10}] = p.z;
+    for (const Vec3f &p : m.positions)
+        heights[{int(std::lround(p.x / kSpacing)) + 10, int(std::lround(p.y / kSpacing)) + 10}] = p.z;
     ASSERT_EQ(heights.size(), size_t(kColumns * kRows));
     for (auto &[node, z] : heights) EXPECT_FLOAT_EQ(z, float(height(node.first, node.second)));
     EXPECT_NE(materialNamed(s, "land/bare"), kNoMaterial);
@@ -90,19 +93,22 @@ TEST_F(Landscape, TheTerrainIsTheDgmInTheLocalFrame) {
 TEST_F(Landscape, NeedsAGeoreference) {
     std::string xml = "<scene version=\"1\">\n<landscape><dgm file=\"dgm.asc\"/></landscape>\n</scene>\n";
     SceneDescription d = readSceneText(xml, "test.xml", dir_);
-    EXPECT_EQ(errorOf([&] { build(d); }), "test.xml:2:1: a <landscape> needs the scene's <georeference crs=\"EPSG:…\" origin=\"E N\">");
+    EXPECT_EQ(errorOf([&] { build(d); }),
+              "test.xml:2:1: a <landscape> needs the scene's <georeference crs=\"EPSG:…\" origin=\"E N\">");
 }
 
 TEST_F(Landscape, ADgmInAnotherCrsIsAnError) {
     SceneDescription d = scene("<landscape><dgm file=\"dgm.asc\" crs=\"EPSG:31467\"/></landscape>\n");
     std::string error = errorOf([&] { build(d); });
-    EXPECT_NE(error.find("test.xml:3:23: the DGM is in EPSG:31467 and the scene in EPSG:25832"), std::string::npos) << error;
+    EXPECT_NE(error.find("test.xml:3:23: the DGM is in EPSG:31467 and the scene in EPSG:25832"), std::string::npos)
+        << error;
 }
 
 TEST_F(Landscape, BadElementsAndAttributesAreErrorsAtTheirPlace) {
     EXPECT_EQ(errorOf([&] { scene("<landscape nodata=\"drop\"><dgm file=\"dgm.asc\"/></landscape>\n"); }),
               "test.xml:3:20: nodata is 'fill' or 'cut', not 'drop'");
-    EXPECT_EQ(errorOf([&] { scene("<landscape/>\n"); }), "test.xml:3:1: a <landscape> needs at least one <dgm file=\"...\"/>");
+    EXPECT_EQ(errorOf([&] { scene("<landscape/>\n"); }),
+              "test.xml:3:1: a <landscape> needs at least one <dgm file=\"...\"/>");
     EXPECT_EQ(errorOf([&] { scene("<landscape><osm file=\"x\"/></landscape>\n"); }),
               "test.xml:3:12: <osm> cannot stand inside <landscape>; expected <dgm> or <atkis>");
 }
@@ -110,7 +116,8 @@ TEST_F(Landscape, BadElementsAndAttributesAreErrorsAtTheirPlace) {
 // The issue's rule: the base is the lowest terrain point under the footprint, interior
 // included (the pit is no corner), the plinth reaches below it, and a given base stays.
 TEST_F(Landscape, BuildingsStandOnTheLowestTerrainUnderTheirFootprint) {
-    std::string buildings = "<buildings rules=\"" VEDUTA_SOURCE_DIR "/rules/gruenderzeit/FacadeStructure.xml\">\n"
+    std::string buildings = "<buildings rules=\"" VEDUTA_SOURCE_DIR
+                            "/rules/gruenderzeit/FacadeStructure.xml\">\n"
                             "<building footprint=\"-25 -25 5 -25 5 5 -25 5\" street=\"0\"/>\n"
                             "<building base=\"600\" footprint=\"30 30 45 30 45 45 30 45\" street=\"0\"/>\n"
                             "</buildings>\n";
@@ -147,7 +154,8 @@ TEST_F(Landscape, AtkisLayersBecomeSurfacesRibbonsAndTrees) {
   {"type": "Feature", "properties": {"OBJART": 3101, "BRF": "0065", "OBJID": "R1"},
    "geometry": {"type": "LineString", "coordinates": [[530005, 5326100], [530100, 5326103], [530195, 5326140]]}}
  ]})");
-    SceneDescription d = scene("<landscape seed=\"7\"><dgm file=\"dgm.asc\"/><atkis file=\"layer.geojson\"/></landscape>\n");
+    SceneDescription d =
+        scene("<landscape seed=\"7\"><dgm file=\"dgm.asc\"/><atkis file=\"layer.geojson\"/></landscape>\n");
     RenderScene s = build(d);
     for (const char *name : {"land/forest", "land/water", "land/road", "land/bark", "land/needles"})
         EXPECT_NE(materialNamed(s, name), kNoMaterial) << name;
@@ -165,7 +173,8 @@ TEST_F(Landscape, AtkisLayersBecomeSurfacesRibbonsAndTrees) {
     }
     RenderScene again = build(d);
     ASSERT_EQ(again.instances.size(), s.instances.size());
-    for (size_t i = 0; i < s.instances.size(); ++i) EXPECT_EQ(again.instances[i].objectToWorld, s.instances[i].objectToWorld);
+    for (size_t i = 0; i < s.instances.size(); ++i)
+        EXPECT_EQ(again.instances[i].objectToWorld, s.instances[i].objectToWorld);
 }
 
 // A forest with a road through it and a pond in it: no tree on the road or in the pond.
@@ -183,8 +192,8 @@ TEST_F(Landscape, TreesKeepOffRoadsAndWater) {
     RenderScene s = build(scene("<landscape><dgm file=\"dgm.asc\"/><atkis file=\"forest.geojson\"/></landscape>\n"));
     ASSERT_GT(s.instances.size(), 500u);
     for (const Instance &tree : s.instances) {
-        float x = tree.objectToWorld.m[3], y = tree.objectToWorld.m[7];  // local: the origin is (530100, 5326100)
-        EXPECT_GE(std::abs(y - -20.0f), 3.0f + 1.5f) << x << ", " << y;  // the road: 6 m wide, 1.5 m clearance
+        float x = tree.objectToWorld.m[3], y = tree.objectToWorld.m[7];        // local: the origin is (530100, 5326100)
+        EXPECT_GE(std::abs(y - -20.0f), 3.0f + 1.5f) << x << ", " << y;        // the road: 6 m wide, 1.5 m clearance
         EXPECT_FALSE(x > 20 && x < 70 && y > 20 && y < 70) << x << ", " << y;  // the pond
     }
 }
@@ -200,7 +209,8 @@ constexpr const char *kGrove = R"(
 std::string layer(const std::string &features) {
     return R"({"type": "FeatureCollection",
  "crs": {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::25832"}},
- "features": [)" + features + "]}";
+ "features": [)" +
+        features + "]}";
 }
 
 std::vector<Transform> treesOf(const RenderScene &s) {
@@ -252,9 +262,11 @@ TEST_F(Landscape, TooManyTreesIsAnError) {
  "crs": {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::25832"}}, "features": [
   {"type": "Feature", "properties": {"OBJART": 4107},
    "geometry": {"type": "Polygon", "coordinates": [[[530010, 5326010], [530190, 5326010], [530190, 5326190], [530010, 5326190], [530010, 5326010]]]}}]})");
-    SceneDescription d = scene("<landscape tree_budget=\"50\"><dgm file=\"dgm.asc\"/><atkis file=\"forest.geojson\"/></landscape>\n");
+    SceneDescription d =
+        scene("<landscape tree_budget=\"50\"><dgm file=\"dgm.asc\"/><atkis file=\"forest.geojson\"/></landscape>\n");
     EXPECT_EQ(errorOf([&] { build(d); }),
-              "test.xml:3:1: the landscape would have more than 50 trees (tree_budget); raise tree_budget or set trees=\"false\"");
+              "test.xml:3:1: the landscape would have more than 50 trees (tree_budget); raise tree_budget or set "
+              "trees=\"false\"");
 }
 
 // GeoJSON without a crs member is WGS 84 (RFC 7946): UTM coordinates in it are no longitudes.

@@ -10,9 +10,7 @@
 
 namespace veduta::test {
 
-double unitRandom(uint32_t seed, uint32_t index) {
-    return double(hashValues({seed, index})) * 0x1p-32;
-}
+double unitRandom(uint32_t seed, uint32_t index) { return double(hashValues({seed, index})) * 0x1p-32; }
 
 HeightGrid flatTerrain(int columns, int rows, double spacing, MapPoint southWest, float height) {
     HeightGrid grid;
@@ -43,8 +41,8 @@ HeightGrid roughTerrain(int columns, int rows, double spacing, MapPoint southWes
         for (int c = 0; c < columns; ++c) {
             double x = c * spacing, y = r * spacing;
             double h = 200 + 40 * smoothNoise(x / 50, y / 50, seed) + 0.8 * x +
-                       30 * std::max(0.0, 1 - std::abs(y - ridge) / 20) +
-                       3 * (unitRandom(seed + 1, uint32_t(r * columns + c)) - 0.5);
+                30 * std::max(0.0, 1 - std::abs(y - ridge) / 20) +
+                3 * (unitRandom(seed + 1, uint32_t(r * columns + c)) - 0.5);
             grid.node(c, r) = float(h);
         }
     }
@@ -83,7 +81,7 @@ std::vector<std::string> meshDefects(const Mesh &mesh, double x0, double y0, dou
     }
     auto onBoundary = [&](const Vec3f &a, const Vec3f &b) {
         return (a.x == float(x0) && b.x == float(x0)) || (a.x == float(x1) && b.x == float(x1)) ||
-               (a.y == float(y0) && b.y == float(y0)) || (a.y == float(y1) && b.y == float(y1));
+            (a.y == float(y0) && b.y == float(y0)) || (a.y == float(y1) && b.y == float(y1));
     };
     for (auto [edge, count] : directed) {
         auto reverse = directed.find({edge.second, edge.first});
@@ -91,8 +89,8 @@ std::vector<std::string> meshDefects(const Mesh &mesh, double x0, double y0, dou
         if (count == 1 && back == 1) continue;
         const Vec3f &a = mesh.positions[edge.first], &b = mesh.positions[edge.second];
         if (count == 1 && back == 0 && onBoundary(a, b)) continue;
-        defects.push_back(fmt::format("edge ({} {})–({} {}) used {} times forwards, {} backwards", a.x, a.y, b.x, b.y,
-                                      count, back));
+        defects.push_back(
+            fmt::format("edge ({} {})–({} {}) used {} times forwards, {} backwards", a.x, a.y, b.x, b.y, count, back));
         if (defects.size() > 20) break;
     }
     return defects;

@@ -28,9 +28,9 @@ double gridSurface(const HeightGrid &grid, MapPoint p);
 // boundary, local); a triangle facing down or of zero plan area.
 std::vector<std::string> meshDefects(const Mesh &mesh, double x0, double y0, double x1, double y1);
 
-double planArea(const Mesh &mesh, size_t triangle);   // signed, counter-clockwise positive
+double planArea(const Mesh &mesh, size_t triangle);  // signed, counter-clockwise positive
 Vec2d planCentroid(const Mesh &mesh, size_t triangle);
-double ringArea(const std::vector<Vec2d> &ring);       // absolute
+double ringArea(const std::vector<Vec2d> &ring);           // absolute
 bool insideRing(const std::vector<Vec2d> &ring, Vec2d p);  // even–odd
 
 }  // namespace veduta::test

@@ -13,9 +13,9 @@ HeightGrid grid3x3() {
     grid.south = 5600000.5;
     grid.spacing = 2;
     grid.columns = grid.rows = 3;
-    grid.heights = {10.1f, 11.7f, 9.3f,  //
-                    12.9f, 8.4f, 13.3f,  //
-                    7.7f, 14.2f, 10.6f};
+    grid.heights = {10.1f, 11.7f, 9.3f,   //
+                    12.9f, 8.4f,  13.3f,  //
+                    7.7f,  14.2f, 10.6f};
     return grid;
 }
 

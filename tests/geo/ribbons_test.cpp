@@ -21,8 +21,8 @@ struct Terrain {
     Mesh mesh;
     TerrainSurface surface;
 
-    Terrain(HeightGrid g, const std::vector<DrapeArea> &areas)
-        : grid(std::move(g)), mesh(drapeAreas(grid, kFrame, areas, {}).mesh), surface(mesh, gridLines(grid, kFrame)) {}
+    Terrain(HeightGrid g, const std::vector<DrapeArea> &areas) :
+        grid(std::move(g)), mesh(drapeAreas(grid, kFrame, areas, {}).mesh), surface(mesh, gridLines(grid, kFrame)) {}
 };
 
 MapPoint at(const HeightGrid &grid, double x, double y) { return {grid.west + x, grid.south + y}; }
@@ -56,7 +56,8 @@ TEST(Ribbons, FollowAnEvenSlopeAtTheLift) {
     }
     Terrain slope(grid, {});
     RibbonOptions options;
-    Mesh ribbon = drapeRibbon({at(grid, 3.3, 20), at(grid, 40, 21), at(grid, 75.1, 18.5)}, 5, slope.surface, kFrame, options);
+    Mesh ribbon =
+        drapeRibbon({at(grid, 3.3, 20), at(grid, 40, 21), at(grid, 75.1, 18.5)}, 5, slope.surface, kFrame, options);
     for (size_t v = 0; v + 1 < ribbon.vertexCount(); v += 2) {
         // Level across a road that climbs a little sideways: at the higher side's ground.
         double high = std::max(*slope.surface.heightAt({ribbon.positions[v].x, ribbon.positions[v].y}),
@@ -73,7 +74,8 @@ TEST(Ribbons, CornersKeepTheWidthUpToTheMiterLimit) {
     Vec2f corner = kFrame.toLocal(at(flat.grid, 50, 20));
     bool found = false;
     for (size_t v = 0; v + 1 < square.vertexCount(); v += 2) {
-        if (std::abs(square.positions[v].x - (corner.x - 2)) < 1e-4 && std::abs(square.positions[v].y - (corner.y + 2)) < 1e-4) {
+        if (std::abs(square.positions[v].x - (corner.x - 2)) < 1e-4 &&
+            std::abs(square.positions[v].y - (corner.y + 2)) < 1e-4) {
             found = true;  // left corner at the miter: 2·√2 from the centre
             EXPECT_NEAR(square.positions[v + 1].x, corner.x + 2, 1e-4);
             EXPECT_NEAR(square.positions[v + 1].y, corner.y - 2, 1e-4);
@@ -123,8 +125,8 @@ TEST(Ribbons, NeverBelowTheTerrain) {
         arc.push_back(at(grid, 80 + 65 * std::cos(angle), 30 + 60 * std::sin(angle)));
     }
     lines.push_back({arc, 3.5, LandClass::Rail});
-    lines.push_back({{at(grid, 3, 80), at(grid, 157, 80)}, 6, LandClass::Road});            // on a grid line
-    lines.push_back({{at(grid, 2, 2), at(grid, 158, 158)}, 5, LandClass::Path});            // along the diagonals
+    lines.push_back({{at(grid, 3, 80), at(grid, 157, 80)}, 6, LandClass::Road});  // on a grid line
+    lines.push_back({{at(grid, 2, 2), at(grid, 158, 158)}, 5, LandClass::Path});  // along the diagonals
     lines.push_back({{at(grid, 10, 150), at(grid, 60, 70), at(grid, 65, 140), at(grid, 150, 10)}, 7, LandClass::Road});
 
     std::vector<Mesh> ribbons;
@@ -168,8 +170,10 @@ TEST(Ribbons, NeverBelowTheTerrain) {
             const Vec3f &r = ribbon.positions[ribbon.indices[3 * t + 2]];
             double d = (double(q.x) - p.x) * (double(r.y) - p.y) - (double(q.y) - p.y) * (double(r.x) - p.x);
             if (d == 0) continue;
-            int c0 = int(std::ceil(std::min({p.x, q.x, r.x}) - gl.xs[0])), c1 = int(std::floor(std::max({p.x, q.x, r.x}) - gl.xs[0]));
-            int r0 = int(std::ceil(std::min({p.y, q.y, r.y}) - gl.ys[0])), r1 = int(std::floor(std::max({p.y, q.y, r.y}) - gl.ys[0]));
+            int c0 = int(std::ceil(std::min({p.x, q.x, r.x}) - gl.xs[0])),
+                c1 = int(std::floor(std::max({p.x, q.x, r.x}) - gl.xs[0]));
+            int r0 = int(std::ceil(std::min({p.y, q.y, r.y}) - gl.ys[0])),
+                r1 = int(std::floor(std::max({p.y, q.y, r.y}) - gl.ys[0]));
             for (int row = std::max(r0, 0); row <= std::min(r1, grid.rows - 1); ++row) {
                 for (int col = std::max(c0, 0); col <= std::min(c1, grid.columns - 1); ++col) {
                     double x = gl.xs[size_t(col)], y = gl.ys[size_t(row)];

@@ -62,7 +62,7 @@ TEST(TerrainMesh, CellsSplitSouthWestToNorthEast) {
         ASSERT_EQ(high, low + 30 + 1) << t;
         Vec3f centre = (mesh.positions[mesh.indices[3 * t]] + mesh.positions[mesh.indices[3 * t + 1]] +
                         mesh.positions[mesh.indices[3 * t + 2]]) /
-                       3;
+            3;
         auto h = surfaceHeight(grid, frame.toMap({centre.x, centre.y}));
         ASSERT_TRUE(h);
         EXPECT_NEAR(*h, centre.z, 1e-3) << t;
@@ -90,7 +90,8 @@ NodeMesh nodesOf(const Mesh &mesh, const HeightGrid &grid, const LocalFrame &fra
     NodeMesh nodes;
     for (const Vec3f &p : mesh.positions) {
         MapPoint m = frame.toMap({p.x, p.y});
-        int c = int(std::lround((m.easting - grid.west) / grid.spacing)), r = int(std::lround((m.northing - grid.south) / grid.spacing));
+        int c = int(std::lround((m.easting - grid.west) / grid.spacing)),
+            r = int(std::lround((m.northing - grid.south) / grid.spacing));
         nodes.column.push_back(c);
         nodes.row.push_back(r);
         nodes.vertices.insert({c, r});
@@ -141,7 +142,7 @@ void checkSimplified(const HeightGrid &grid, double maxError, size_t &triangles)
     for (int r = 0; r + 1 < grid.rows; ++r) {
         for (int c = 0; c + 1 < grid.columns; ++c) {
             bool full = !std::isnan(grid.node(c, r)) && !std::isnan(grid.node(c + 1, r)) &&
-                        !std::isnan(grid.node(c, r + 1)) && !std::isnan(grid.node(c + 1, r + 1));
+                !std::isnan(grid.node(c, r + 1)) && !std::isnan(grid.node(c + 1, r + 1));
             if (full) {
                 ASSERT_GT(covered[size_t(r) * size_t(grid.columns) + size_t(c)], 0) << c << ", " << r;
             }

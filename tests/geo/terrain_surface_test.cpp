@@ -68,7 +68,8 @@ TEST(TerrainSurface, HeightIsTheGridSurface) {
         EXPECT_NEAR(*h, test::gridSurface(f.grid, kFrame.toMap({float(p.x), float(p.y)})), 2e-3) << i;
     }
     for (int c = 0; c < f.grid.columns; c += 7) {  // at nodes, exactly
-        for (int r = 0; r < f.grid.rows; r += 5) EXPECT_EQ(*f.surface.heightAt({f.lines.xs[size_t(c)], f.lines.ys[size_t(r)]}), f.grid.node(c, r));
+        for (int r = 0; r < f.grid.rows; r += 5)
+            EXPECT_EQ(*f.surface.heightAt({f.lines.xs[size_t(c)], f.lines.ys[size_t(r)]}), f.grid.node(c, r));
     }
     EXPECT_FALSE(f.surface.heightAt({f.lines.xs.front() - 1, f.lines.ys.front()}));
 }
@@ -101,8 +102,8 @@ TEST(TerrainSurface, ExtremesOverConvexPolygonsMatchBruteForce) {
 TEST(TerrainSurface, ExtremesOverAConcavePolygonBoundDenseSamples) {
     Fixture f;
     Vec2d o = f.randomPoint(9, 0);
-    std::vector<Vec2d> polygon{{o.x - 20, o.y - 15}, {o.x + 20, o.y - 15}, {o.x + 20, o.y + 15},
-                               {o.x + 3.3, o.y - 2.1}, {o.x - 20, o.y + 15}};
+    std::vector<Vec2d> polygon{
+        {o.x - 20, o.y - 15}, {o.x + 20, o.y - 15}, {o.x + 20, o.y + 15}, {o.x + 3.3, o.y - 2.1}, {o.x - 20, o.y + 15}};
     for (Vec2d &p : polygon) {  // keep it on the terrain
         p.x = std::clamp(p.x, f.lines.xs.front(), f.lines.xs.back());
         p.y = std::clamp(p.y, f.lines.ys.front(), f.lines.ys.back());

@@ -15,9 +15,9 @@ constexpr TreeMaterials kMaterials{.bark = 3, .foliage = 7};
 
 bool sameBits(const Mesh &a, const Mesh &b) {
     return a.positions.size() == b.positions.size() && a.indices == b.indices &&
-           a.triangleMaterials == b.triangleMaterials &&
-           std::memcmp(a.positions.data(), b.positions.data(), a.positions.size() * sizeof(Vec3f)) == 0 &&
-           std::memcmp(a.normals.data(), b.normals.data(), a.normals.size() * sizeof(Vec3f)) == 0;
+        a.triangleMaterials == b.triangleMaterials &&
+        std::memcmp(a.positions.data(), b.positions.data(), a.positions.size() * sizeof(Vec3f)) == 0 &&
+        std::memcmp(a.normals.data(), b.normals.data(), a.normals.size() * sizeof(Vec3f)) == 0;
 }
 
 Vec3f faceNormal(const Mesh &m, size_t t) {
@@ -25,9 +25,7 @@ Vec3f faceNormal(const Mesh &m, size_t t) {
     return cross(m.positions[i[1]] - m.positions[i[0]], m.positions[i[2]] - m.positions[i[0]]);
 }
 
-float angleBetween(const Vec3f &a, const Vec3f &b) {
-    return degrees(std::atan2(length(cross(a, b)), dot(a, b)));
-}
+float angleBetween(const Vec3f &a, const Vec3f &b) { return degrees(std::atan2(length(cross(a, b)), dot(a, b))); }
 
 TEST(TreeModels, TropismAngleIsTheThesisFormula) {
     EXPECT_FLOAT_EQ(tropismAngle({1, 0, 0}, {0, 0, 1}), 45.0f);
@@ -64,12 +62,11 @@ TEST(TreeModels, AreDeterministicAndVaryWithSeedAndVariant) {
         EXPECT_FALSE(sameBits(a, treeModel(kind, 2, 42, kMaterials)));
         EXPECT_TRUE(sameBits(a, treeModel(kind, 1 + kTreeVariants, 42, kMaterials)));
     }
-    EXPECT_FALSE(sameBits(treeModel(TreeKind::Broadleaf, 0, 1, kMaterials), treeModel(TreeKind::Conifer, 0, 1, kMaterials)));
+    EXPECT_FALSE(
+        sameBits(treeModel(TreeKind::Broadleaf, 0, 1, kMaterials), treeModel(TreeKind::Conifer, 0, 1, kMaterials)));
 }
 
-TEST(TreeModels, MixedIsNoTree) {
-    EXPECT_THROW(treeModel(TreeKind::Mixed, 0, 1, kMaterials), std::invalid_argument);
-}
+TEST(TreeModels, MixedIsNoTree) { EXPECT_THROW(treeModel(TreeKind::Mixed, 0, 1, kMaterials), std::invalid_argument); }
 
 // Every kind, variant and a few seeds: finite, unit normals, faces outward (their normals agree
 // with the vertex normals), the two materials, the triangle budget, height 1 standing on the
@@ -78,7 +75,8 @@ TEST(TreeModels, MeshesAreValid) {
     for (TreeKind kind : {TreeKind::Broadleaf, TreeKind::Conifer}) {
         for (uint32_t variant = 0; variant < kTreeVariants; ++variant) {
             for (uint32_t seed = 0; seed < 6; ++seed) {
-                SCOPED_TRACE(::testing::Message() << "kind " << int(kind) << " variant " << variant << " seed " << seed);
+                SCOPED_TRACE(::testing::Message()
+                             << "kind " << int(kind) << " variant " << variant << " seed " << seed);
                 Mesh m = treeModel(kind, variant, seed, kMaterials);
                 ASSERT_GT(m.triangleCount(), 300u);
                 EXPECT_LE(m.triangleCount(), kTreeTriangleBudget);

@@ -102,7 +102,8 @@ TEST(TreePlacement, AreaIsFilledEvenly) {
     const float bucket = 10;
     std::vector<std::vector<Vec2f>> buckets(40 * 40);
     for (const PlacedTree &t : trees) {
-        int bx = std::clamp(int((t.position.x + 130) / bucket), 0, 39), by = std::clamp(int((t.position.y - 40) / bucket), 0, 39);
+        int bx = std::clamp(int((t.position.x + 130) / bucket), 0, 39),
+            by = std::clamp(int((t.position.y - 40) / bucket), 0, 39);
         buckets[size_t(by * 40 + bx)].push_back(t.position);
     }
     float worst = 0;
@@ -194,7 +195,8 @@ TEST(TreePlacement, RowsFollowTheLineAtTheirSpacing) {
     plantLine(set, line, stand, 4, 12);
     ASSERT_EQ(set.trees.size(), 12u);
     for (const PlacedTree &t : set.trees) {
-        float d = std::min(distanceToSegment(t.position, line[0], line[1]), distanceToSegment(t.position, line[1], line[2]));
+        float d =
+            std::min(distanceToSegment(t.position, line[0], line[1]), distanceToSegment(t.position, line[1], line[2]));
         EXPECT_LT(d, 1e-3f);
         EXPECT_EQ(t.kind, TreeKind::Broadleaf);
     }
@@ -223,7 +225,11 @@ TEST(TreePlacement, PointsGetOneTreeEach) {
 }
 
 TEST(TreePlacement, TransformScalesTurnsAndStandsTheTree) {
-    PlacedTree tree{.position = {10, -4}, .kind = TreeKind::Conifer, .variant = 0, .height = 20, .rotation = kPi / 2,
+    PlacedTree tree{.position = {10, -4},
+                    .kind = TreeKind::Conifer,
+                    .variant = 0,
+                    .height = 20,
+                    .rotation = kPi / 2,
                     .widthScale = 0.9f};
     Transform m = treeTransform(tree, 150);
     Vec3f top = m.applyPoint({0, 0, 1});

@@ -22,7 +22,8 @@ namespace fs = std::filesystem;
 struct TempFolder {
     fs::path path;
     TempFolder() {
-        path = fs::temp_directory_path() / fmt::format("veduta-vector-{}", ::testing::UnitTest::GetInstance()->random_seed());
+        path = fs::temp_directory_path() /
+            fmt::format("veduta-vector-{}", ::testing::UnitTest::GetInstance()->random_seed());
         path += fmt::format("-{}", ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::remove_all(path);
         fs::create_directories(path);
@@ -204,7 +205,8 @@ TEST(VectorFile, LayersInTwoCrssAreAnError) {
         readVectorFile(file, warnings);
         FAIL() << "no error";
     } catch (const InputError &e) {
-        EXPECT_NE(std::string(e.what()).find("layer utm is in EPSG:25832, an earlier layer in EPSG:31467"), std::string::npos)
+        EXPECT_NE(std::string(e.what()).find("layer utm is in EPSG:25832, an earlier layer in EPSG:31467"),
+                  std::string::npos)
             << e.what();
     }
 }

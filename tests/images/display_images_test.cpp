@@ -120,8 +120,7 @@ TEST_F(DisplayImageTest, PngJpegAndTiffRecordTheView) {
         EXPECT_EQ(spec.width, 2) << name;
         EXPECT_NE(spec.get_string_attribute("ImageDescription").find("view 'Filmic'"), std::string::npos)
             << name << ": " << spec.get_string_attribute("ImageDescription");
-        EXPECT_NE(spec.get_string_attribute("ImageDescription").find("exposure +0.5 stops"), std::string::npos)
-            << name;
+        EXPECT_NE(spec.get_string_attribute("ImageDescription").find("exposure +0.5 stops"), std::string::npos) << name;
     }
     EXPECT_EQ(OIIO::ImageInput::open((dir_ / "out.tif").string())->spec().format, OIIO::TypeUInt16);
     EXPECT_EQ(OIIO::ImageInput::open((dir_ / "out.jpg").string())->spec().nchannels, 3);
@@ -197,8 +196,7 @@ TEST_F(DisplayImageTest, UnknownNamesListTheValidOnes) {
               fmt::format("{}: unknown look 'Punchy'; looks: none", other.string()));
     EXPECT_FALSE(std::filesystem::exists(dir_ / "bad.png"));
     EXPECT_NE(inputErrorOf([&] { library_->checkDisplaySettings(named("", "", "", dir_ / "missing.ocio")); }), "");
-    EXPECT_EQ(inputErrorOf([&] { library_->checkDisplaySettings(named("", "Filmic", "+Blue Light Fix")); }),
-              "");
+    EXPECT_EQ(inputErrorOf([&] { library_->checkDisplaySettings(named("", "Filmic", "+Blue Light Fix")); }), "");
 }
 
 TEST_F(DisplayImageTest, LooksChangeTheImage) {

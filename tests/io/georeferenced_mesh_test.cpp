@@ -2,8 +2,6 @@
 // coordinates stay double until the scene origin is subtracted.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -48,12 +46,6 @@ Extent extentOf(const Mesh &mesh) {
 
 class GeoreferencedMesh : public testing::Test {
   protected:
-    void SetUp() override {
-        dir_ = std::filesystem::path(testing::TempDir()) / fmt::format("veduta_georeferenced_mesh_{}", getpid());
-        std::filesystem::create_directories(dir_);
-    }
-    void TearDown() override { std::filesystem::remove_all(dir_); }
-
     // The box as an OBJ of six quads, its corners given in `crs` (converted from UTM 32).
     std::filesystem::path writeBox(const std::string &name, int epsg) const {
         std::filesystem::path file = dir_ / name;
@@ -68,16 +60,14 @@ class GeoreferencedMesh : public testing::Test {
     }
 
     std::filesystem::path write(const std::string &name, const std::string &text) const {
-        std::filesystem::path file = dir_ / name;
-        std::ofstream(file) << text;
-        return file;
+        return folder_.write(name, text);
     }
 
     static std::string scene(const std::filesystem::path &mesh, const std::string &crsAttribute,
                              bool georeferenced = true) {
-        std::string georeference =
-            georeferenced ? fmt::format("<georeference crs=\"EPSG:25832\" origin=\"{} {}\"/>", kOriginEast, kOriginNorth)
-                          : "";
+        std::string georeference = georeferenced
+            ? fmt::format("<georeference crs=\"EPSG:25832\" origin=\"{} {}\"/>", kOriginEast, kOriginNorth)
+            : "";
         return fmt::format("<scene version=\"1\">{}<mesh file=\"{}\" {}/></scene>", georeference, mesh.string(),
                            crsAttribute);
     }
@@ -88,16 +78,10 @@ class GeoreferencedMesh : public testing::Test {
         return built.meshes.at(0).mesh;
     }
 
-    static std::string errorOf(const std::string &xml) {
-        try {
-            test::sceneFromXml(xml);
-        } catch (const InputError &e) {
-            return e.what();
-        }
-        return "no error";
-    }
+    static std::string errorOf(const std::string &xml) { return test::sceneErrorOf(xml); }
 
-    std::filesystem::path dir_;
+    test::ScratchFolder folder_{"georeferenced_mesh"};
+    const std::filesystem::path &dir_ = folder_.path();
 };
 
 TEST_F(GeoreferencedMesh, UtmBoxKeepsItsSizeWithinAMillimetre) {
@@ -134,9 +118,10 @@ TEST_F(GeoreferencedMesh, GaussKruegerBoxLandsWhereTheUtmBoxDoes) {
 // The element's own transform applies in the local frame, after the origin is subtracted.
 TEST_F(GeoreferencedMesh, TransformAppliesInTheLocalFrame) {
     std::filesystem::path box = writeBox("box.obj", 25832);
-    std::string xml = fmt::format("<scene version=\"1\"><georeference crs=\"EPSG:25832\" origin=\"{} {}\"/>"
-                                  "<mesh file=\"{}\" crs=\"EPSG:25832\" translate=\"10 0 0\"/></scene>",
-                                  kOriginEast, kOriginNorth, box.string());
+    std::string xml = fmt::format(
+        "<scene version=\"1\"><georeference crs=\"EPSG:25832\" origin=\"{} {}\"/>"
+        "<mesh file=\"{}\" crs=\"EPSG:25832\" translate=\"10 0 0\"/></scene>",
+        kOriginEast, kOriginNorth, box.string());
     Extent e = extentOf(onlyMesh(xml));
     EXPECT_NEAR(e.lo.x, kEast - kOriginEast + 10, 1e-3);
     EXPECT_NEAR(e.size().x, 0.33, 1e-3);
@@ -148,9 +133,10 @@ TEST_F(GeoreferencedMesh, NormalsTurnOntoTheScenesGrid) {
     const Crs &utm = crsByEpsg(25832), &gk = crsByEpsg(31466);
     CrsCoordinate corner = convert(utm, gk, {kEast + 300, kNorth, kHeight});
     std::filesystem::path file =
-        write("wall.obj", fmt::format("v {0:.3f} {1:.3f} 0\nv {0:.3f} {2:.3f} 0\nv {0:.3f} {1:.3f} 3\nvn 1 0 0\n"
-                                      "f 1//1 2//1 3//1\n",
-                                      corner.x, corner.y, corner.y + 10));
+        write("wall.obj",
+              fmt::format("v {0:.3f} {1:.3f} 0\nv {0:.3f} {2:.3f} 0\nv {0:.3f} {1:.3f} 3\nvn 1 0 0\n"
+                          "f 1//1 2//1 3//1\n",
+                          corner.x, corner.y, corner.y + 10));
     Mesh mesh = onlyMesh(scene(file, "crs=\"EPSG:31466\""));
     ASSERT_EQ(mesh.normals.size(), 3u);
     Vec3f a = mesh.positions[0], b = mesh.positions[1];
@@ -161,10 +147,11 @@ TEST_F(GeoreferencedMesh, NormalsTurnOntoTheScenesGrid) {
 
 // The box as a PLY whose vertices are doubles: ASCII, or binary in either byte order.
 std::string plyBox(const std::string &format) {
-    std::string header = fmt::format("ply\nformat {} 1.0\ncomment UTM 32\nelement vertex 8\nproperty double x\n"
-                                     "property double y\nproperty double z\nelement face 6\n"
-                                     "property list uchar int vertex_indices\nend_header\n",
-                                     format);
+    std::string header = fmt::format(
+        "ply\nformat {} 1.0\ncomment UTM 32\nelement vertex 8\nproperty double x\n"
+        "property double y\nproperty double z\nelement face 6\n"
+        "property list uchar int vertex_indices\nend_header\n",
+        format);
     const int faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
     std::string body;
     bool big = format == "binary_big_endian";
@@ -175,8 +162,7 @@ std::string plyBox(const std::string &format) {
         body.append(b, sizeof value);
     };
     for (const CrsCoordinate &c : boxCorners()) {
-        if (format == "ascii")
-            body += fmt::format("{:.6f} {:.6f} {:.6f}\n", c.x, c.y, c.z);
+        if (format == "ascii") body += fmt::format("{:.6f} {:.6f} {:.6f}\n", c.x, c.y, c.z);
         else
             for (double v : {c.x, c.y, c.z}) bytes(v);
     }
@@ -211,8 +197,9 @@ TEST_F(GeoreferencedMesh, PlyErrorsNameTheLine) {
     EXPECT_NE(errorOf(scene(bad, "crs=\"EPSG:25832\"")).find(bad.string() + ":11: '54OO234.567800' is not a number"),
               std::string::npos)
         << errorOf(scene(bad, "crs=\"EPSG:25832\""));
-    std::filesystem::path noZ = write("noz.ply", "ply\nformat ascii 1.0\nelement vertex 0\nproperty double x\n"
-                                                 "property double y\nend_header\n");
+    std::filesystem::path noZ = write("noz.ply",
+                                      "ply\nformat ascii 1.0\nelement vertex 0\nproperty double x\n"
+                                      "property double y\nend_header\n");
     EXPECT_NE(errorOf(scene(noZ, "crs=\"EPSG:25832\"")).find(":3: the vertex element needs the properties x, y and z"),
               std::string::npos)
         << errorOf(scene(noZ, "crs=\"EPSG:25832\""));

@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include <assimp/Importer.hpp>
 #include <assimp/material.h>
 #include <assimp/scene.h>
+#include <assimp/Importer.hpp>
 
 #include "core/axes.h"
 #include "io/scene_export.h"
@@ -35,7 +35,7 @@ class SceneExport : public ::testing::Test {
   protected:
     void SetUp() override {
         folder_ = fs::temp_directory_path() /
-                  ("veduta-export-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+            ("veduta-export-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
         fs::remove_all(folder_);
         fs::create_directories(folder_);
         scene_ = test::sceneFromXml(kSceneXml);
@@ -87,9 +87,11 @@ bool contains(const std::vector<Vec3f> &positions, const Vec3f &p) {
 // Every vertex the scene draws, in world space.
 std::vector<Vec3f> sceneVertices(const RenderScene &scene) {
     std::vector<Vec3f> out;
-    for (const BakedMesh &baked : scene.meshes) out.insert(out.end(), baked.mesh.positions.begin(), baked.mesh.positions.end());
+    for (const BakedMesh &baked : scene.meshes)
+        out.insert(out.end(), baked.mesh.positions.begin(), baked.mesh.positions.end());
     for (const Instance &instance : scene.instances) {
-        for (const Vec3f &p : scene.prototypes[instance.prototype].positions) out.push_back(instance.objectToWorld.applyPoint(p));
+        for (const Vec3f &p : scene.prototypes[instance.prototype].positions)
+            out.push_back(instance.objectToWorld.applyPoint(p));
     }
     return out;
 }
@@ -136,7 +138,8 @@ TEST_F(SceneExport, ObjWritesInstancesAsCopiesZUp) {
     ASSERT_NE(read, nullptr);
     WorldGeometry geometry = worldGeometry(*read);
     EXPECT_EQ(geometry.triangles, scene_.effectiveTriangleCount());
-    for (const Vec3f &p : sceneVertices(scene_)) EXPECT_TRUE(contains(geometry.positions, p)) << p.x << " " << p.y << " " << p.z;
+    for (const Vec3f &p : sceneVertices(scene_))
+        EXPECT_TRUE(contains(geometry.positions, p)) << p.x << " " << p.y << " " << p.z;
     expectMaterialsSurvive(*read, scene_);
 }
 
@@ -185,7 +188,8 @@ void expectGltfInstancing(const fs::path &file, const RenderScene &scene) {
     WorldGeometry geometry = worldGeometry(*read);
     EXPECT_EQ(geometry.triangles, scene.effectiveTriangleCount());
     for (Vec3f &p : geometry.positions) p = yUpToZUp(p);
-    for (const Vec3f &p : sceneVertices(scene)) EXPECT_TRUE(contains(geometry.positions, p)) << p.x << " " << p.y << " " << p.z;
+    for (const Vec3f &p : sceneVertices(scene))
+        EXPECT_TRUE(contains(geometry.positions, p)) << p.x << " " << p.y << " " << p.z;
     expectMaterialsSurvive(*read, scene);
 }
 
@@ -245,7 +249,8 @@ TEST_F(SceneExport, FacetedMeshesKeepFaceNormals) {
         ASSERT_TRUE(mesh.HasNormals());
         for (unsigned f = 0; f < mesh.mNumFaces; ++f, ++triangles) {
             const unsigned *idx = mesh.mFaces[f].mIndices;
-            aiVector3D face = (mesh.mVertices[idx[1]] - mesh.mVertices[idx[0]]) ^ (mesh.mVertices[idx[2]] - mesh.mVertices[idx[0]]);
+            aiVector3D face =
+                (mesh.mVertices[idx[1]] - mesh.mVertices[idx[0]]) ^ (mesh.mVertices[idx[2]] - mesh.mVertices[idx[0]]);
             face.Normalize();
             for (int k = 0; k < 3; ++k) EXPECT_NEAR((mesh.mNormals[idx[k]] - face).Length(), 0, 1e-5f);
         }

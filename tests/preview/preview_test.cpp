@@ -7,9 +7,9 @@
 
 #include <tbb/task_arena.h>
 
+#include "film/passes.h"
 #include "preview/preview.h"
 #include "render/object_ids.h"
-#include "film/passes.h"
 #include "render/renderer.h"
 #include "render/surface_interaction.h"
 #include "test_scenes.h"
@@ -49,7 +49,8 @@ TEST(Preview, ObjectIdsAgreeWithThePathTracerInEveryExampleScene) {
         size_t same = 0;
         for (size_t i = 0; i < traced.size(); ++i) same += traced[i] == drawn[i];
         double agreement = double(same) / double(traced.size());
-        std::printf("%s: object ids agree on %.3f %% of %zu pixels\n", file.filename().c_str(), 100 * agreement, traced.size());
+        std::printf("%s: object ids agree on %.3f %% of %zu pixels\n", file.filename().c_str(), 100 * agreement,
+                    traced.size());
         EXPECT_GE(agreement, 0.995) << same << " of " << traced.size();
     }
 }
@@ -233,8 +234,8 @@ TEST(Preview, ShadowsAgreeWithThePathTracer) {
     }
     size_t disagree = 96 * 96 - agree;
     std::printf("shadows: %zu shadowed pixels, %zu disagree with the path tracer\n", shadowedPixels, disagree);
-    EXPECT_GT(shadowedPixels, 200u);             // the test sees real shadows
-    EXPECT_LE(disagree, shadowedPixels / 10);    // only along shadow edges
+    EXPECT_GT(shadowedPixels, 200u);           // the test sees real shadows
+    EXPECT_LE(disagree, shadowedPixels / 10);  // only along shadow edges
 }
 
 TEST(Preview, IdColoursAreDistinctAndBackgroundIsBlack) {

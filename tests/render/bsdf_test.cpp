@@ -102,8 +102,8 @@ TEST(BsdfChi2, NormalMappedAndWithMirror) {
         in.mirror = c.mirror;
         Bsdf bsdf(in, ns, kUp);
         test::Chi2Result r = chi2OfBsdf(bsdf, wo, ns, c.exponent);
-        std::printf("chi2 tilt=%2g theta_o=%2g n=%-5g mirror=%.1f: p=%.4f (chi2 %.1f, dof %d)\n", c.tiltDegrees, c.thetaO,
-                    c.exponent, c.mirror.x, r.pValue, r.statistic, r.degreesOfFreedom);
+        std::printf("chi2 tilt=%2g theta_o=%2g n=%-5g mirror=%.1f: p=%.4f (chi2 %.1f, dof %d)\n", c.tiltDegrees,
+                    c.thetaO, c.exponent, c.mirror.x, r.pValue, r.statistic, r.degreesOfFreedom);
         EXPECT_GT(r.pValue, kAlpha) << "tilt " << c.tiltDegrees;
         EXPECT_LT(r.outsideSupport, 1e-5);
     }
@@ -326,7 +326,8 @@ TEST(ShadingNormal, EnsureValidReflectionLiftsTheMirrorDirection) {
     std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
     int corrected = 0;
     for (int k = 0; k < 100000; ++k) {
-        Frame frame = Frame::fromNormal(normalize(Vec3f{uniform(rng) - 0.5f, uniform(rng) - 0.5f, uniform(rng) - 0.5f}));
+        Frame frame =
+            Frame::fromNormal(normalize(Vec3f{uniform(rng) - 0.5f, uniform(rng) - 0.5f, uniform(rng) - 0.5f}));
         Vec3f ng = frame.n;
         Vec3f wo = frame.toWorld(fromSpherical(89.9f * uniform(rng), 360 * uniform(rng)));
         Vec3f n = frame.toWorld(fromSpherical(85 * uniform(rng), 360 * uniform(rng)));
@@ -352,9 +353,9 @@ TEST(ShadingNormal, NormalFromMapDecodesTangentSpace) {
     auto near = [](const Vec3f &a, const Vec3f &b) { return length(a - b) < 1e-5f; };
     EXPECT_TRUE(near(normalFromMap({0.5f, 0.5f, 1}, n, tangent, 1, 1), n));
     EXPECT_TRUE(near(normalFromMap({1, 0.5f, 0.5f}, n, tangent, 1, 1), {1, 0, 0}));
-    EXPECT_TRUE(near(normalFromMap({0.5f, 1, 0.5f}, n, tangent, 1, 1), {0, 1, 0}));   // green = +bitangent
+    EXPECT_TRUE(near(normalFromMap({0.5f, 1, 0.5f}, n, tangent, 1, 1), {0, 1, 0}));    // green = +bitangent
     EXPECT_TRUE(near(normalFromMap({0.5f, 1, 0.5f}, n, tangent, -1, 1), {0, -1, 0}));  // mirrored uvs
-    Vec3f tilted{0.75f, 0.5f, 0.5f + 0.5f * std::sqrt(0.75f)};  // 30° towards the tangent
+    Vec3f tilted{0.75f, 0.5f, 0.5f + 0.5f * std::sqrt(0.75f)};                         // 30° towards the tangent
     EXPECT_TRUE(near(normalFromMap(tilted, n, tangent, 1, 0), n));
     EXPECT_TRUE(near(normalFromMap(tilted, n, tangent, 1, 1), fromSpherical(30, 0)));
     // Strength blends as Cycles does: half way between n and the mapped normal.

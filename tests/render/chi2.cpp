@@ -109,8 +109,9 @@ Chi2Result chi2Test(const std::function<Vec3f(Vec2f)> &sample, const std::functi
     for (int i = 0; i < rows; ++i) {
         for (int j = 0; j < columns; ++j) {
             size_t k = size_t(i * columns + j);
-            bool edge = zeros[k] > 0 && (coarse[k] > 0 || holdsSupport(i - 1, j) || holdsSupport(i + 1, j) ||
-                                         holdsSupport(i, j - 1) || holdsSupport(i, j + 1));
+            bool edge = zeros[k] > 0 &&
+                (coarse[k] > 0 || holdsSupport(i - 1, j) || holdsSupport(i + 1, j) || holdsSupport(i, j - 1) ||
+                 holdsSupport(i, j + 1));
             int unused;
             if (edge) expected[k] = grid.integrate(pdf, i, j, std::max(64, options.subdivisions), unused) * n;
             total += expected[k];

@@ -63,9 +63,7 @@ TEST(CubemapDistribution, SamplesMatchDensityForASpotOnACorner) {
     expectSamplesMatchDensity(spotMap({-1, 1, 1}), "spot on the west-north-up corner");
 }
 
-TEST(CubemapDistribution, SamplesMatchDensityForAGradient) {
-    expectSamplesMatchDensity(gradientMap(), "gradient");
-}
+TEST(CubemapDistribution, SamplesMatchDensityForAGradient) { expectSamplesMatchDensity(gradientMap(), "gradient"); }
 
 TEST(CubemapDistribution, DensityIntegratesToOne) {
     // Stratified uniform directions, 1000 × 1000 strata equal in cos θ and φ.

@@ -6,8 +6,8 @@
 #include <random>
 #include <vector>
 
-#include <boost/math/distributions/chi_squared.hpp>
 #include <gtest/gtest.h>
+#include <boost/math/distributions/chi_squared.hpp>
 
 #include "render/lights.h"
 
@@ -80,9 +80,7 @@ TEST(SunLight, SamplesLieInTheDiscWithItsDensity) {
 }
 
 // The test can fail: samples of a disc checked against one of 0.9 times its diameter.
-TEST(SunLight, Chi2RejectsAWrongCone) {
-    EXPECT_LT(coneChi2PValue(sunOf(0.53f), sunOf(0.477f), 1, 200000), 1e-6);
-}
+TEST(SunLight, Chi2RejectsAWrongCone) { EXPECT_LT(coneChi2PValue(sunOf(0.53f), sunOf(0.477f), 1, 200000), 1e-6); }
 
 }  // namespace
 }  // namespace veduta

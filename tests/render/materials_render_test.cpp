@@ -9,8 +9,8 @@
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
-#include "render/bsdf.h"
 #include "film/passes.h"
+#include "render/bsdf.h"
 #include "render/renderer.h"
 #include "scene/tangents.h"
 #include "test_scenes.h"
@@ -21,8 +21,8 @@ namespace {
 // Textures computed from (u, v), so that tests need no image files.
 class ProceduralTextures : public Textures {
   public:
-    ProceduralTextures(int channels, std::function<void(Vec2f, float *)> value)
-        : channels_(channels), value_(std::move(value)) {}
+    ProceduralTextures(int channels, std::function<void(Vec2f, float *)> value) :
+        channels_(channels), value_(std::move(value)) {}
     TextureId add(const std::filesystem::path &, const std::string &) override { return 0; }
     int channels(TextureId) const override { return channels_; }
     std::string fingerprint(TextureId) const override { return "procedural"; }
@@ -80,10 +80,12 @@ TEST(MaterialsRender, PhongWhiteFurnace) {
   <sun irradiance="0"/>
   <environment radiance="1"/>
   <render spp="64" max_depth="64"/>
-  <material name="phong" diffuse="0.5" specular="1" specular_intensity="0.5" shininess=")") + shininess + R"("/>
+  <material name="phong" diffuse="0.5" specular="1" specular_intensity="0.5" shininess=")") +
+                                                        shininess + R"("/>
   <sphere radius="1" segments="128" rings="64" material="phong"/>
 </scene>)"));
-        std::printf("Phong furnace n=%s: image mean %.5f, darkest value %.5f\n", shininess, meanRgb(film), minRgb(film));
+        std::printf("Phong furnace n=%s: image mean %.5f, darkest value %.5f\n", shininess, meanRgb(film),
+                    minRgb(film));
         EXPECT_NEAR(meanRgb(film), 1.0, 0.01);
         EXPECT_GT(minRgb(film), 0.9f);
     }
@@ -92,7 +94,7 @@ TEST(MaterialsRender, PhongWhiteFurnace) {
 // A white diffuse plane whose normal map tilts the shading normal by up to `tiltDegrees`
 // in waves, seen from above and at a grazing angle, under a uniform white sky (or `lights`).
 RgbaImage normalMappedFurnace(const std::string &camera, float tiltDegrees,
-                         const std::string &lights = R"(<sun irradiance="0"/><environment radiance="1"/>)") {
+                              const std::string &lights = R"(<sun irradiance="0"/><environment radiance="1"/>)") {
     RenderScene scene = test::sceneFromXml(R"(<scene>
   )" + camera + R"(
   )" + lights + R"(
@@ -115,11 +117,13 @@ RgbaImage normalMappedFurnace(const std::string &camera, float tiltDegrees,
 TEST(MaterialsRender, NormalMappedPlaneWhiteFurnace) {
     for (float tilt : {20.0f, 45.0f, 60.0f}) {
         SCOPED_TRACE(tilt);
-        RgbaImage above = normalMappedFurnace(R"(<camera position="0 0 10" look_at="0 0 0" up="0 1 0" fov="60" resolution="32 32"/>)", tilt);
+        RgbaImage above = normalMappedFurnace(
+            R"(<camera position="0 0 10" look_at="0 0 0" up="0 1 0" fov="60" resolution="32 32"/>)", tilt);
         std::printf("normal-mapped furnace, tilt up to %.0f deg: mean from above %.5f, darkest %.5f\n", tilt,
                     meanRgb(above), minRgb(above));
         EXPECT_NEAR(meanRgb(above), 1.0, 0.01);
-        RgbaImage grazing = normalMappedFurnace(R"(<camera position="0 -30 0.5" look_at="0 0 0" fov="20" resolution="48 16"/>)", tilt);
+        RgbaImage grazing =
+            normalMappedFurnace(R"(<camera position="0 -30 0.5" look_at="0 0 0" fov="20" resolution="48 16"/>)", tilt);
         double sum = 0;
         int count = 0;
         for (int y = grazing.height() / 2 + 1; y < grazing.height(); ++y) {  // the rows that see the plane
@@ -141,7 +145,8 @@ TEST(MaterialsRender, NormalMappedPlaneWhiteFurnace) {
 // The furnace cannot tell whether the map is used at all: under a low sun it must show.
 TEST(MaterialsRender, NormalMapsShadeUnderTheSun) {
     const char *camera = R"(<camera position="0 0 10" look_at="0 0 0" up="0 1 0" fov="60" resolution="32 32"/>)";
-    const char *sun = R"(<sun azimuth="90" elevation="30" irradiance="3" angular_diameter="0"/><environment radiance="0"/>)";
+    const char *sun =
+        R"(<sun azimuth="90" elevation="30" irradiance="3" angular_diameter="0"/><environment radiance="0"/>)";
     RgbaImage flat = normalMappedFurnace(camera, 0, sun), mapped = normalMappedFurnace(camera, 30, sun);
     std::printf("under a sun at 30 deg: flat plane %.4f to %.4f, normal-mapped %.4f to %.4f\n", minRgb(flat),
                 maxRgb(flat), minRgb(mapped), maxRgb(mapped));
@@ -180,7 +185,8 @@ TEST(MaterialsRender, SunlightThroughGlassIsCountedOnce) {
   <camera position="0 0 0.5" look_at="0 0 0" up="0 1 0" fov="20" resolution="16 16"/>
   <sun direction="0 0 1" irradiance="2" angular_diameter="5"/>
   <environment radiance="0"/>
-  <render spp="256" max_depth="16" light_sampling=")") + sampling + R"("/>
+  <render spp="256" max_depth="16" light_sampling=")") + sampling +
+                                                        R"("/>
   <material name="grey" diffuse="0.5"/>
   <material name="pane" glass="true" ior="1.5"/>
   <plane size="1000 1000" material="grey"/>
@@ -229,7 +235,8 @@ TEST(MaterialsRender, ConstantCubemapLightsLikeAUniformSky) {
         RenderScene scene = test::sceneFromXml(std::string(R"(<scene>
   <camera position="0 0 10" look_at="0 0 0" up="0 1 0" fov="30" resolution="16 16"/>
   <sun irradiance="0"/>
-  <render spp="256" max_depth="1" light_sampling=")") + sampling + R"("/>
+  <render spp="256" max_depth="1" light_sampling=")") +
+                                               sampling + R"("/>
   <material name="grey" diffuse="0.5"/>
   <plane size="1000 1000" material="grey"/>
 </scene>)");
@@ -265,7 +272,8 @@ TEST(MaterialsRender, LightSamplingStrategiesAgree) {
         RenderScene scene = test::sceneFromXml(std::string(R"(<scene>
   <camera position="0 -8 3" look_at="0 0 0.5" fov="40" resolution="24 16"/>
   <sun irradiance="0"/>
-  <render spp="1024" max_depth="3" light_sampling=")") + sampling + R"("/>
+  <render spp="1024" max_depth="3" light_sampling=")") +
+                                               sampling + R"("/>
   <material name="grey" diffuse="0.5"/>
   <material name="glossy" diffuse="0.3" specular="1" specular_intensity="0.4" shininess="50"/>
   <plane size="40 40" material="grey"/>

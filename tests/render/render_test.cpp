@@ -1,6 +1,5 @@
 #include <gtest/gtest.h>
 
-
 #include <tbb/task_arena.h>
 
 #include "app/scene_loading.h"
@@ -30,7 +29,9 @@ RenderScene exampleSceneAt(const std::string &name, int width, int height, uint3
     return buildRenderScene(d);
 }
 
-RenderScene defaultSceneAt(int width, int height, uint32_t spp) { return exampleSceneAt("default.xml", width, height, spp); }
+RenderScene defaultSceneAt(int width, int height, uint32_t spp) {
+    return exampleSceneAt("default.xml", width, height, spp);
+}
 
 TEST(Render, OneAndTwoThreadsGiveBitIdenticalImages) {
     RenderScene scene = defaultSceneAt(96, 54, 4);
@@ -75,7 +76,8 @@ InstancedAndBaked instancedAndBaked(int maxDepth) {
   <camera position="0 -12 4" look_at="0 0 1" fov="40" resolution="96 64"/>
   <sun azimuth="200" elevation="40" irradiance="3"/>
   <environment radiance="0.4 0.5 0.7"/>
-  <render spp="8" max_depth=")" + std::to_string(maxDepth) + R"("/>
+  <render spp="8" max_depth=")" +
+        std::to_string(maxDepth) + R"("/>
   <material name="red" diffuse="0.8 0.2 0.1"/>
   <plane size="40 40"/>)";
     return {test::sceneFromXml(head + R"(
@@ -124,13 +126,14 @@ RgbaImage renderFurnace(const std::string &camera, const std::string &settings, 
   <sun irradiance="0"/>
   <environment radiance="1"/>
   <material name="white" diffuse="1"/>
-  )" + settings + "\n" + geometry + "\n</scene>");
+  )" + settings + "\n" +
+                     geometry + "\n</scene>");
 }
 
 TEST(Render, WhiteFurnace) {
     RgbaImage film = renderFurnace(R"(<camera position="0 -4 0" look_at="0 0 0" fov="40" resolution="48 48"/>)",
-                              R"(<render spp="16" max_depth="64"/>)",
-                              R"(<sphere radius="1" segments="128" rings="64" material="white"/>)");
+                                   R"(<render spp="16" max_depth="64"/>)",
+                                   R"(<sphere radius="1" segments="128" rings="64" material="white"/>)");
     for (size_t i = 0; i < film.pixels().size(); ++i) ASSERT_NEAR(film.pixels()[i], 1.0f, 0.01f) << "value " << i;
 }
 
@@ -139,7 +142,7 @@ TEST(Render, WhiteFurnace) {
 // carry Monte Carlo noise (σ ≈ 0.01 at 1024 spp); the image mean is far tighter.
 TEST(Render, WhiteFurnaceWithRussianRoulette) {
     RgbaImage film = renderFurnace(R"(<camera position="3 -5 4" look_at="0 0 0.5" fov="50" resolution="16 16"/>)",
-                              R"(<render spp="1024" max_depth="1024"/>)", R"(
+                                   R"(<render spp="1024" max_depth="1024"/>)", R"(
   <plane size="6 6" material="white"/>
   <box size="1 1 1" material="white"/>
   <box size="0.4 3 2" translate="-0.8 0 0" material="white"/>)");
@@ -181,8 +184,9 @@ TEST(Render, AnalyticPlaneUnderSunAtNormalIncidence) {
 TEST(Render, AnalyticPlaneUnderSmallSuns) {
     for (const char *diameter : {"0.01", "0.02", "0.05", "0.1"}) {
         SCOPED_TRACE(diameter);
-        expectPlaneRadiance(std::string(R"(<sun direction="0 0 1" irradiance="2" angular_diameter=")") + diameter + "\"/>",
-                            0.5f * 2.0f / kPi);
+        expectPlaneRadiance(
+            std::string(R"(<sun direction="0 0 1" irradiance="2" angular_diameter=")") + diameter + "\"/>",
+            0.5f * 2.0f / kPi);
     }
 }
 

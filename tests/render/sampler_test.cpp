@@ -12,7 +12,7 @@ namespace {
 // The unscrambled first two dimensions are the Sobol sequence in natural (not Gray-code)
 // index order: point i is the XOR of the direction numbers of i's set bits.
 TEST(Sampler, SobolPointsMatchTheSequence) {
-    const float first[8][2] = {{0, 0},         {0.5f, 0.5f},   {0.25f, 0.75f},  {0.75f, 0.25f},
+    const float first[8][2] = {{0, 0},           {0.5f, 0.5f},     {0.25f, 0.75f},   {0.75f, 0.25f},
                                {0.125f, 0.625f}, {0.625f, 0.125f}, {0.375f, 0.375f}, {0.875f, 0.875f}};
     for (uint32_t i = 0; i < 8; ++i) {
         EXPECT_EQ(float(sobolSample(i, 0)) * 0x1p-32f, first[i][0]) << i;

@@ -67,7 +67,8 @@ void paintSquare(Image &cross, int column, int row, const Vec3f &label) {
 void expectLabelsInEveryDirection(const Cubemap &cube) {
     for (const Compass &c : kCompass) {
         const CubeFaceFrame &frame = cubeFaceFrame(c.face);
-        for (Vec3f offset : {Vec3f(0.0f), 0.3f * frame.right + 0.2f * frame.up, -0.3f * frame.right - 0.2f * frame.up}) {
+        for (Vec3f offset :
+             {Vec3f(0.0f), 0.3f * frame.right + 0.2f * frame.up, -0.3f * frame.right - 0.2f * frame.up}) {
             EXPECT_EQ(cube.lookup(normalize(c.direction + offset)), kLabels[c.face]) << c.name;
         }
     }

@@ -98,11 +98,11 @@ TEST(Cubemap, CrossesHaveNoSeams) {
         auto tileCentre = [&](int column, int row) {
             return directionAt(column * kSize + kSize / 2, row * kSize + kSize / 2);
         };
-        EXPECT_GT(tileCentre(1, 1).y, 0.99f);   // north in the middle
-        EXPECT_GT(tileCentre(1, 0).z, 0.99f);   // up above it
-        EXPECT_LT(tileCentre(1, 2).z, -0.99f);  // down below it
-        EXPECT_LT(tileCentre(0, 1).x, -0.99f);  // west on the left
-        EXPECT_GT(tileCentre(2, 1).x, 0.99f);   // east on the right
+        EXPECT_GT(tileCentre(1, 1).y, 0.99f);                                   // north in the middle
+        EXPECT_GT(tileCentre(1, 0).z, 0.99f);                                   // up above it
+        EXPECT_LT(tileCentre(1, 2).z, -0.99f);                                  // down below it
+        EXPECT_LT(tileCentre(0, 1).x, -0.99f);                                  // west on the left
+        EXPECT_GT(tileCentre(2, 1).x, 0.99f);                                   // east on the right
         EXPECT_LT((vertical ? tileCentre(1, 3) : tileCentre(3, 1)).y, -0.99f);  // south
     }
 }

@@ -25,8 +25,7 @@ struct KnownPoint {
 const KnownPoint kKnownPoints[] = {
     {25833, {51.34, 12.37}, {316820.0631, 5690919.2109}, 15},  // Leipzig, west of zone 33's meridian
     {25832, {51.34, 12.37}, {734709.4523, 5693028.0075}, 9},   // Leipzig, east of zone 32's
-    {32633, {51.34, 12.37}, {316820.0631, 5690919.2110}, 15},
-    {32632, {51.34, 12.37}, {734709.4523, 5693028.0076}, 9},
+    {32633, {51.34, 12.37}, {316820.0631, 5690919.2110}, 15},  {32632, {51.34, 12.37}, {734709.4523, 5693028.0076}, 9},
     {25832, {48.0, 8.0}, {425404.8875, 5316784.0091}, 9},       // Black Forest
     {31466, {50.0, 7.0}, {2571686.3866, 5540758.7877}, 6},      // Eifel
     {31467, {47.42, 10.98}, {3649386.1172, 5255306.3563}, 9},   // Garmisch
@@ -86,10 +85,10 @@ TEST(Georeference, TrueNorthOnTheGridIsWhereGridAzimuthPutsIt) {
         double gamma = meridianConvergenceDegrees(g, middle.easting, middle.northing);
         double northOnGrid = gridBearing(a, b);
         double approximate = (start.longitude - k.centralMeridian) * std::sin(start.latitude * M_PI / 180);
-        std::printf("EPSG:%d (%.2f, %.2f): gamma %+.5f (approx %+.5f), true north on the grid %.5f, "
-                    "gridAzimuth(0) %.5f\n",
-                    k.epsg, start.latitude, start.longitude, gamma, approximate, northOnGrid,
-                    gridAzimuthDegrees(0, gamma));
+        std::printf(
+            "EPSG:%d (%.2f, %.2f): gamma %+.5f (approx %+.5f), true north on the grid %.5f, "
+            "gridAzimuth(0) %.5f\n",
+            k.epsg, start.latitude, start.longitude, gamma, approximate, northOnGrid, gridAzimuthDegrees(0, gamma));
         EXPECT_LT(angleBetween(northOnGrid, gridAzimuthDegrees(0, gamma)), 1e-4) << k.epsg;
         EXPECT_NEAR(gamma, approximate, 0.01) << k.epsg;
         // East of the central meridian grid north leans east of true north.

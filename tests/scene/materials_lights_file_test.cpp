@@ -10,8 +10,8 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "core/error.h"
 #include "assembly/build_scene.h"
+#include "core/error.h"
 #include "description/material_file.h"
 #include "description/scene_description.h"
 
@@ -71,8 +71,8 @@ TEST(MaterialFile, ReadsEveryField) {
     EXPECT_FLOAT_EQ(brick.material.textureSize.x, 2);
     EXPECT_FLOAT_EQ(brick.material.textureSize.y, 0.5f);
     EXPECT_EQ(brick.diffuseMap.file, std::filesystem::path(VEDUTA_TEST_DATA) / "tex/brick.png");
-    EXPECT_EQ(brick.diffuseMap.colorSpace, "");            // the file's own
-    EXPECT_EQ(brick.normalMap.colorSpace, "Non-Color");    // data maps are not converted
+    EXPECT_EQ(brick.diffuseMap.colorSpace, "");          // the file's own
+    EXPECT_EQ(brick.normalMap.colorSpace, "Non-Color");  // data maps are not converted
     EXPECT_EQ(brick.opacityMap.colorSpace, "Linear");
     EXPECT_EQ(brick.diffuseMap.loc.toString(), "s.xml:2:55");
     const Material &pane = d.materials[1].material;
@@ -87,8 +87,9 @@ TEST(MaterialFile, UnknownFieldIsAnErrorWithItsPlace) {
     // Glass takes no Phong fields.
     EXPECT_EQ(parseError(R"(<scene><material name="g" glass="true" diffuse="0.5"/></scene>)"),
               "s.xml:1:40: unknown attribute 'diffuse' on <material>");
-    EXPECT_EQ(parseError(R"(<scene><material name="a" category="cellar"/></scene>)"),
-              "s.xml:1:37: unknown material category 'cellar' (facade, roof, material, door, wall, window, reflection)");
+    EXPECT_EQ(
+        parseError(R"(<scene><material name="a" category="cellar"/></scene>)"),
+        "s.xml:1:37: unknown material category 'cellar' (facade, roof, material, door, wall, window, reflection)");
     EXPECT_EQ(parseError(R"(<scene><material name="a" normal_map_colorspace="sRGB"/></scene>)"),
               "s.xml:1:50: 'normal_map_colorspace' without 'normal_map'");
 }
@@ -107,7 +108,8 @@ TEST(MaterialFile, IncludesMaterialFilesWithTheirOwnFolder) {
     EXPECT_EQ(d.materials[2].material.name, "own");
 
     // A name defined twice across files names both places.
-    std::string twice = parseError(R"(<scene><material name="roof"/><materials file="lib/m.xml"/></scene>)", folder.path());
+    std::string twice =
+        parseError(R"(<scene><material name="roof"/><materials file="lib/m.xml"/></scene>)", folder.path());
     EXPECT_NE(twice.find("lib/m.xml:3:3: material 'roof' is already defined at s.xml:1:8"), std::string::npos) << twice;
     // Errors inside the material file point into it.
     folder.write("lib/bad.xml", "<materials>\n  <material name=\"x\" glossy=\"1\"/>\n</materials>");
@@ -119,7 +121,8 @@ TEST(MaterialFile, IncludesMaterialFilesWithTheirOwnFolder) {
 }
 
 TEST(MaterialFile, TheSeedLibraryReads) {
-    std::vector<MaterialDesc> materials = readMaterialFile(std::filesystem::path(VEDUTA_SOURCE_DIR) / "materials/seed000.xml");
+    std::vector<MaterialDesc> materials =
+        readMaterialFile(std::filesystem::path(VEDUTA_SOURCE_DIR) / "materials/seed000.xml");
     std::vector<MaterialCategory> categories;
     for (const MaterialDesc &m : materials) {
         categories.push_back(m.material.category);
@@ -129,15 +132,16 @@ TEST(MaterialFile, TheSeedLibraryReads) {
             }
         }
     }
-    for (MaterialCategory c : {MaterialCategory::Facade, MaterialCategory::Roof, MaterialCategory::Material,
-                               MaterialCategory::Door, MaterialCategory::Wall, MaterialCategory::Window,
-                               MaterialCategory::Reflection}) {
+    for (MaterialCategory c :
+         {MaterialCategory::Facade, MaterialCategory::Roof, MaterialCategory::Material, MaterialCategory::Door,
+          MaterialCategory::Wall, MaterialCategory::Window, MaterialCategory::Reflection}) {
         EXPECT_NE(std::find(categories.begin(), categories.end(), c), categories.end()) << int(c);
     }
 }
 
 TEST(EnvironmentElement, ReadsEachKind) {
-    SceneDescription cube = parse(R"(<scene><environment cubemap="sky_{face}.exr" rotation="30" intensity="2"/></scene>)");
+    SceneDescription cube =
+        parse(R"(<scene><environment cubemap="sky_{face}.exr" rotation="30" intensity="2"/></scene>)");
     EXPECT_EQ(cube.environment.cubemap.file, std::filesystem::path(VEDUTA_TEST_DATA) / "sky_{face}.exr");
     EXPECT_FLOAT_EQ(cube.environment.rotationDegrees, 30);
     EXPECT_FLOAT_EQ(cube.environment.intensity, 2);
@@ -160,8 +164,8 @@ TEST(EnvironmentElement, AMissingFaceIsAnErrorAtTheAttribute) {
 }
 
 TEST(SunElement, ReadsDateTimeAndPlace) {
-    SceneDescription d =
-        parse(R"(<scene><sun date="2026-06-21" time="12:00" utc_offset="+02:00" latitude="51.34" longitude="12.37"/></scene>)");
+    SceneDescription d = parse(
+        R"(<scene><sun date="2026-06-21" time="12:00" utc_offset="+02:00" latitude="51.34" longitude="12.37"/></scene>)");
     ASSERT_TRUE(d.sunTime);
     EXPECT_EQ(d.sunTime->time.year, 2026);
     EXPECT_EQ(d.sunTime->time.hour, 12);
@@ -174,18 +178,22 @@ TEST(SunElement, ReadsDateTimeAndPlace) {
     EXPECT_LT(sun.direction.y, 0);
     EXPECT_GT(sun.direction.x, 0);
 
-    EXPECT_EQ(parseError(R"(<scene><sun azimuth="10" elevation="20" date="2026-01-01" time="10:00" utc_offset="Z"/></scene>)"),
+    EXPECT_EQ(parseError(
+                  R"(<scene><sun azimuth="10" elevation="20" date="2026-01-01" time="10:00" utc_offset="Z"/></scene>)"),
               "s.xml:1:8: give the sun one of 'direction', 'azimuth' and 'elevation', or 'date' and 'time'");
-    std::string badDate = parseError(R"(<scene><sun date="2026-13-01" time="10:00" utc_offset="Z" latitude="50" longitude="10"/></scene>)");
+    std::string badDate = parseError(
+        R"(<scene><sun date="2026-13-01" time="10:00" utc_offset="Z" latitude="50" longitude="10"/></scene>)");
     EXPECT_EQ(badDate.rfind("s.xml:1:19: ", 0), 0u) << badDate;
     EXPECT_EQ(buildError(R"(<scene><sun date="2026-01-01" time="10:00" utc_offset="Z"/></scene>)"),
               "s.xml:1:8: the sun needs 'latitude' and 'longitude', or a <georeference> for the scene");
 }
 
 TEST(SunElement, ErrorsPointAtThePartThatIsWrong) {
-    std::string badTime = parseError(R"(<scene><sun date="2026-06-01" time="25:00" utc_offset="Z" latitude="50" longitude="10"/></scene>)");
+    std::string badTime = parseError(
+        R"(<scene><sun date="2026-06-01" time="25:00" utc_offset="Z" latitude="50" longitude="10"/></scene>)");
     EXPECT_EQ(badTime.rfind("s.xml:1:37: ", 0), 0u) << badTime;
-    std::string badOffset = parseError(R"(<scene><sun date="2026-06-01" time="10:00" utc_offset="+2" latitude="50" longitude="10"/></scene>)");
+    std::string badOffset = parseError(
+        R"(<scene><sun date="2026-06-01" time="10:00" utc_offset="+2" latitude="50" longitude="10"/></scene>)");
     EXPECT_EQ(badOffset.rfind("s.xml:1:56: ", 0), 0u) << badOffset;
 }
 
@@ -206,21 +214,25 @@ TEST(SunElement, LaterElementsReplaceEarlierChoices) {
 
 // At night the sun of a date and time lights nothing.
 TEST(SunElement, SetsAtNight) {
-    Sun night = placeSun(parse(R"(<scene><sun date="2026-06-21" time="23:30" utc_offset="+02:00" latitude="51.34" longitude="12.37" irradiance="3"/></scene>)"));
+    Sun night = placeSun(parse(
+        R"(<scene><sun date="2026-06-21" time="23:30" utc_offset="+02:00" latitude="51.34" longitude="12.37" irradiance="3"/></scene>)"));
     EXPECT_LT(night.direction.z, 0);
     EXPECT_EQ(night.irradiance, Vec3f(0.0f));
-    Sun evening = placeSun(parse(R"(<scene><sun date="2026-06-21" time="21:00" utc_offset="+02:00" latitude="51.34" longitude="12.37" irradiance="3"/></scene>)"));
+    Sun evening = placeSun(parse(
+        R"(<scene><sun date="2026-06-21" time="21:00" utc_offset="+02:00" latitude="51.34" longitude="12.37" irradiance="3"/></scene>)"));
     EXPECT_GT(evening.direction.z, 0);  // still up at 21:00 in June
     EXPECT_EQ(evening.irradiance, Vec3f(3.0f));
 }
 
 // With a georeference the sun's azimuth is turned from true north to grid north.
 TEST(SunElement, GridNorthFollowsTheGeoreference) {
-    const char *sunAt = R"(<sun date="2026-06-21" time="12:00" utc_offset="+02:00" latitude="51.34" longitude="12.37"/>)";
+    const char *sunAt =
+        R"(<sun date="2026-06-21" time="12:00" utc_offset="+02:00" latitude="51.34" longitude="12.37"/>)";
     Sun trueNorth = placeSun(parse(fmt::format("<scene>{}</scene>", sunAt)));
     // Leipzig lies west of UTM zone 33's central meridian (15° E), so true north, towards the
     // pole on that meridian, points east of grid north: grid azimuths are larger.
-    Sun grid = placeSun(parse(fmt::format(R"(<scene><georeference crs="EPSG:25833" origin="317000 5690000"/>{}</scene>)", sunAt)));
+    Sun grid = placeSun(
+        parse(fmt::format(R"(<scene><georeference crs="EPSG:25833" origin="317000 5690000"/>{}</scene>)", sunAt)));
     float trueAzimuth = std::atan2(trueNorth.direction.x, trueNorth.direction.y);
     float gridAzimuth = std::atan2(grid.direction.x, grid.direction.y);
     // γ ≈ (λ − λ0)·sin φ ≈ −2.05°; the grid azimuth is the true one minus γ.

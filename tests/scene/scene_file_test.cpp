@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
-#include "core/error.h"
 #include "assembly/build_scene.h"
+#include "core/error.h"
 #include "description/scene_description.h"
 #include "test_scenes.h"
 
@@ -140,7 +140,8 @@ TEST(SceneFile, LoadsObjAndPlyMeshes) {
 }
 
 TEST(SceneFile, LeafElementsHoldNoChildren) {
-    EXPECT_EQ(errorOf("<scene>\n<box>\n  <sphere/>\n</box>\n</scene>"), "s.xml:3:3: <sphere> cannot stand inside <box>");
+    EXPECT_EQ(errorOf("<scene>\n<box>\n  <sphere/>\n</box>\n</scene>"),
+              "s.xml:3:3: <sphere> cannot stand inside <box>");
 }
 
 TEST(SceneFile, RepeatedAttributeIsAnError) {
@@ -148,7 +149,8 @@ TEST(SceneFile, RepeatedAttributeIsAnError) {
 }
 
 TEST(SceneFile, SunNeedsBothAzimuthAndElevation) {
-    EXPECT_EQ(errorOf("<scene>\n<sun elevation=\"30\"/></scene>"), "s.xml:2:1: give the sun both 'azimuth' and 'elevation'");
+    EXPECT_EQ(errorOf("<scene>\n<sun elevation=\"30\"/></scene>"),
+              "s.xml:2:1: give the sun both 'azimuth' and 'elevation'");
 }
 
 TEST(SceneFile, ObjectIdsFollowFileOrderAroundExplicitOnes) {
@@ -166,7 +168,8 @@ TEST(SceneFile, ObjectIdsFollowFileOrderAroundExplicitOnes) {
 }
 
 TEST(SceneFile, ObjectIdsAreUniqueAndBelongToWholeObjects) {
-    EXPECT_EQ(errorOf("<scene><box id=\"5\"/>\n<box id=\"5\"/></scene>"), "s.xml:2:10: object id 5 is already used at s.xml:1:17");
+    EXPECT_EQ(errorOf("<scene><box id=\"5\"/>\n<box id=\"5\"/></scene>"),
+              "s.xml:2:10: object id 5 is already used at s.xml:1:17");
     EXPECT_EQ(errorOf("<scene><prototype name=\"p\">\n<box id=\"3\"/></prototype></scene>"),
               "s.xml:2:10: parts of a prototype have no id of their own; give it to the <instance>");
 }

@@ -16,9 +16,9 @@
 
 #include <fmt/format.h>
 
+#include "assembly/build_scene.h"
 #include "city/building_pieces.h"
 #include "render/sampler.h"
-#include "assembly/build_scene.h"
 #include "scene/scene_hash.h"
 
 namespace veduta {
@@ -28,8 +28,8 @@ constexpr const char *kRules = VEDUTA_SOURCE_DIR "/rules/gruenderzeit/FacadeStru
 
 // Scene XML with `seed` on <scene> and `own` (an attribute or nothing) where the body says {own}.
 std::string sceneXml(uint32_t seed, const std::string &own, const std::string &body) {
-    return fmt::format("<scene version=\"1\" seed=\"{}\">{}</scene>", seed, fmt::format(fmt::runtime(body),
-                                                                                          fmt::arg("own", own)));
+    return fmt::format("<scene version=\"1\" seed=\"{}\">{}</scene>", seed,
+                       fmt::format(fmt::runtime(body), fmt::arg("own", own)));
 }
 
 RenderScene build(uint32_t seed, const std::string &own, const std::string &body) {
@@ -47,8 +47,8 @@ void expectSceneSeedReaches(const std::string &body, Extract extract) {
 
 // Four houses in a row, each facing the street at y = 0.
 std::string houses(const std::string &settings) {
-    std::string body = fmt::format("<buildings rules=\"{}\" {{own}}><BuildingSettings>{}</BuildingSettings>", kRules,
-                                   settings);
+    std::string body =
+        fmt::format("<buildings rules=\"{}\" {{own}}><BuildingSettings>{}</BuildingSettings>", kRules, settings);
     for (int i = 0; i < 4; ++i) {
         body += fmt::format("<building footprint=\"{0} 0 {1} 0 {1} 12 {0} 12\" street=\"0\"/>", 20 * i, 20 * i + 14);
     }
@@ -85,8 +85,8 @@ TEST(SceneSeed, ReachesTheBuildingHeights) {
 TEST(SceneSeed, ReachesTheRoofChoice) {
     // One roof material, fixed heights: only the roof type drawn from the list changes the roofs.
     std::string body = "<material name=\"tiles\" category=\"roof\"/>" +
-                       houses("<BuildingHeightVar>0</BuildingHeightVar><RoofHeightVar>0</RoofHeightVar>"
-                              "<RoofType>flat gable hip mansard pyramid shed</RoofType>");
+        houses("<BuildingHeightVar>0</BuildingHeightVar><RoofHeightVar>0</RoofHeightVar>"
+               "<RoofType>flat gable hip mansard pyramid shed</RoofType>");
     expectSceneSeedReaches(body, [](const RenderScene &scene) {
         std::vector<std::vector<float>> roofs;
         for (const auto &[id, pieces] : test::buildingsOf(scene)) {
@@ -108,7 +108,8 @@ TEST(SceneSeed, ReachesTheRoofChoice) {
 TEST(SceneSeed, ReachesTheMaterialPalette) {
     std::string materials;
     for (const char *category : {"facade", "wall", "window", "door", "material", "roof"})
-        for (int k = 0; k < 4; ++k) materials += fmt::format("<material name=\"{0}{1}\" category=\"{0}\"/>", category, k);
+        for (int k = 0; k < 4; ++k)
+            materials += fmt::format("<material name=\"{0}{1}\" category=\"{0}\"/>", category, k);
     expectSceneSeedReaches(materials + houses(""), [](const RenderScene &scene) {
         std::map<uint32_t, std::set<std::string>> used;
         for (const auto &[id, pieces] : test::buildingsOf(scene))
@@ -153,8 +154,9 @@ TEST(SceneSeed, ReachesTheCityLotsAndBuildings) {
 
 // --seed: every seed of the file gives way to it.
 TEST(SceneSeed, TheCommandLineSeedReplacesEveryOther) {
-    std::string body = "<render seed=\"7\"/><buildings rules=\"r.xml\" seed=\"1\"/><city file=\"c.xml\" seed=\"2\"/>"
-                       "<landscape seed=\"3\"><dgm file=\"d.asc\"/></landscape>";
+    std::string body =
+        "<render seed=\"7\"/><buildings rules=\"r.xml\" seed=\"1\"/><city file=\"c.xml\" seed=\"2\"/>"
+        "<landscape seed=\"3\"><dgm file=\"d.asc\"/></landscape>";
     SceneDescription d = readSceneText(sceneXml(9, "", body), "test.xml", ".");
     replaceEverySeed(d, 5);
     EXPECT_EQ(d.seed, 5u);

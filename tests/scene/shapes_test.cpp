@@ -13,7 +13,8 @@ namespace {
 double signedVolume(const Mesh &m) {
     double v = 0;
     for (size_t t = 0; t < m.triangleCount(); ++t) {
-        Vec3f a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]], c = m.positions[m.indices[3 * t + 2]];
+        Vec3f a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
+              c = m.positions[m.indices[3 * t + 2]];
         v += double(dot(a, cross(b, c))) / 6.0;
     }
     return v;
@@ -60,7 +61,8 @@ TEST(Shapes, FlatFacesHaveUvsInMetres) {
         ASSERT_EQ(m.uvs.size(), m.vertexCount());
         for (size_t t = 0; t < m.triangleCount(); ++t) {
             const uint32_t *idx = &m.indices[3 * t];
-            float area = 0.5f * length(cross(m.positions[idx[1]] - m.positions[idx[0]], m.positions[idx[2]] - m.positions[idx[0]]));
+            float area = 0.5f *
+                length(cross(m.positions[idx[1]] - m.positions[idx[0]], m.positions[idx[2]] - m.positions[idx[0]]));
             Vec2f a = m.uvs[idx[0]], b = m.uvs[idx[1]], c = m.uvs[idx[2]];
             float uvArea = 0.5f * std::abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
             EXPECT_NEAR(uvArea, area, 1e-5f) << "triangle " << t;

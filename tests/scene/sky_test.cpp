@@ -169,9 +169,10 @@ TEST(Sky, SkyToSunRatioIsPreethamsAndGrowsWithHaze) {
         integral *= (M_PI / 2 / kThetaSteps) * (2 * M_PI / kPhiSteps);  // klx
         double expected = integral * luminance(kSunIrradiance) / sunDirectNormalIlluminance(elevation, turbidity);
         double fraction = baked / (baked + direct);
-        std::printf("T = %.0f, sun at 60 deg: sky %.4f (quadrature of Preetham %.4f, %.1f klx), sun %.4f on the "
-                    "horizontal; sky/sun %.4f, diffuse fraction %.4f\n",
-                    turbidity, baked, expected, integral, direct, baked / direct, fraction);
+        std::printf(
+            "T = %.0f, sun at 60 deg: sky %.4f (quadrature of Preetham %.4f, %.1f klx), sun %.4f on the "
+            "horizontal; sky/sun %.4f, diffuse fraction %.4f\n",
+            turbidity, baked, expected, integral, direct, baked / direct, fraction);
         EXPECT_NEAR(baked, expected, 0.001 * expected) << turbidity;  // midpoint rules on both sides
         EXPECT_GT(fraction, previous) << turbidity;
         previous = fraction;

@@ -81,8 +81,8 @@ TEST(SunPosition, LeipzigAtTheSolsticeAgreesWithAHandCalculation) {
             bestAzimuth = a.azimuthDegrees;
         }
     }
-    std::printf("Leipzig noon: elevation %.4f (hand %.4f), at %.2f min CEST (hand %.2f), azimuth %.4f\n",
-                bestElevation, handNoonElevation, bestMinutes, handNoonMinutes, bestAzimuth);
+    std::printf("Leipzig noon: elevation %.4f (hand %.4f), at %.2f min CEST (hand %.2f), azimuth %.4f\n", bestElevation,
+                handNoonElevation, bestMinutes, handNoonMinutes, bestAzimuth);
     EXPECT_NEAR(bestElevation, handNoonElevation, 0.01);
     EXPECT_NEAR(bestMinutes, handNoonMinutes, 0.5);
     // The azimuth turns about 0.5° per minute at this elevation; the 5 s scan steps allow 0.05°.
