@@ -1,8 +1,7 @@
 #!/usr/bin/env bash
 # veduta set-up on Debian 12: installs the Debian packages that are missing, builds, and then
 #   ./setup.sh         renders the built-in default scene to renders/default.exr and .png
-#   ./setup.sh test    builds with the tests and runs the whole suite through ctest, then the
-#                      unit tests once more under AddressSanitizer + UBSan (preset sanitize)
+#   ./setup.sh test    builds with the tests and runs the whole suite through ctest
 #   ./setup.sh stills  renders the publication stills of every example scene to renders/stills/
 # Run it as root or as a user who may use sudo (only apt-get needs it).
 set -euo pipefail
@@ -52,7 +51,4 @@ else
     cmake --preset test
     cmake --build --preset test -j "$jobs"
     ctest --preset test -j "$jobs"
-    cmake --preset sanitize
-    cmake --build --preset sanitize -j "$jobs"
-    ctest --preset sanitize -j "$jobs"
 fi
