@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # veduta set-up on Debian 12: installs the Debian packages that are missing, builds, and then
 #   ./setup.sh         renders the built-in default scene to renders/default.exr and .png
-#   ./setup.sh test    builds with the tests and runs the whole suite through ctest
+#   ./setup.sh test    builds with the tests and runs the whole suite through ctest, then the
+#                      unit tests again under AddressSanitizer + UBSan (the sanitize preset)
 #   ./setup.sh stills  renders the publication stills of every example scene to renders/stills/
 # Run it as root or as a user who may use sudo (only apt-get needs it).
 set -euo pipefail
@@ -48,7 +49,13 @@ elif [ "$mode" = stills ]; then
             -o "build/stills/$name.exr" --png "renders/stills/$name.png"
     done
 else
-    cmake --preset test
-    cmake --build --preset test -j "$jobs"
-    ctest --preset test -j "$jobs"
+    # The whole suite, then the unit tests once more under AddressSanitizer and UBSan.
+    for preset in test sanitize; do
+        start=$SECONDS
+        cmake --preset "$preset"
+        cmake --build --preset "$preset" -j "$jobs"
+        built=$SECONDS
+        ctest --preset "$preset" -j "$jobs"
+        echo "setup: $preset preset built in $((built - start)) s, tested in $((SECONDS - built)) s"
+    done
 fi
