@@ -6,11 +6,13 @@
 #include <optional>
 #include <string_view>
 
+#include "test_paths.h"
+
 namespace veduta::test {
 
 // ../shared/data/<relative> beside the source tree, or nullopt when it is not there.
 inline std::optional<std::filesystem::path> sharedDataFile(std::string_view relative) {
-    std::filesystem::path file = std::filesystem::path(VEDUTA_SOURCE_DIR) / "../shared/data" / relative;
+    std::filesystem::path file = sourceDir() / "../shared/data" / relative;
     if (!std::filesystem::exists(file)) return std::nullopt;
     return file;
 }

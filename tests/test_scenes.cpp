@@ -1,4 +1,6 @@
 #include "test_scenes.h"
+#include "input_error.h"
+#include "test_paths.h"
 
 #include <unistd.h>
 
@@ -10,16 +12,11 @@
 namespace veduta::test {
 
 RenderScene sceneFromXml(const std::string &xml) {
-    return buildRenderScene(readSceneText(xml, "test.xml", VEDUTA_TEST_DATA));
+    return buildRenderScene(readSceneText(xml, "test.xml", test::testData()));
 }
 
 std::string sceneErrorOf(const std::string &xml) {
-    try {
-        sceneFromXml(xml);
-    } catch (const InputError &e) {
-        return e.what();
-    }
-    return "no error";
+    return test::inputErrorOf([&] { sceneFromXml(xml); });
 }
 
 ScratchFolder::ScratchFolder(const std::string &name) :

@@ -12,13 +12,14 @@
 #include "city/roof_choice.h"
 #include "city/rule_file.h"
 #include "core/error.h"
+#include "test_paths.h"
 
 namespace veduta {
 namespace {
 
 struct Gruenderzeit {
     const AssetLibrary &assets = AssetLibrary::builtIn();
-    BuildingRules loaded{VEDUTA_SOURCE_DIR "/rules/gruenderzeit/FacadeStructure.xml"};
+    BuildingRules loaded{test::sourceFile("rules/gruenderzeit/FacadeStructure.xml")};
     const RuleSet &rules = loaded.rules;
     const Grammar &grammar = loaded.grammar;
 

@@ -14,6 +14,7 @@
 
 #include "assembly/build_scene.h"
 #include "city/building_pieces.h"
+#include "test_paths.h"
 
 namespace veduta {
 namespace {
@@ -72,7 +73,7 @@ class BuildingIdentity : public testing::Test {
             <MinBuildingDepth>10</MinBuildingDepth></BuildingSettings></CityData>)",
                                            kPoints, kStreets, blocks);
         std::string scene = fmt::format(R"(<scene version="1"><city file="{}" rules="{}" seed="4"/></scene>)",
-                                        file.string(), VEDUTA_SOURCE_DIR "/rules/gruenderzeit/FacadeStructure.xml");
+                                        file.string(), test::sourceFile("rules/gruenderzeit/FacadeStructure.xml"));
         return test::buildingsOf(buildRenderScene(readSceneText(scene, "test.xml", folder_)));
     }
 

@@ -5,19 +5,16 @@
 #include <filesystem>
 
 #include "city/city_data.h"
+#include "input_error.h"
+#include "test_paths.h"
 
 namespace veduta {
 namespace {
 
-CityData listing() { return readCityData(VEDUTA_SOURCE_DIR "/cities/bilke-listing-2-1.xml"); }
+CityData listing() { return readCityData(test::sourceFile("cities/bilke-listing-2-1.xml")); }
 
 std::string errorOf(const std::string &xml) {
-    try {
-        parseCityData(xml, "city.xml", ".");
-    } catch (const InputError &e) {
-        return e.what();
-    }
-    return "no error";
+    return test::inputErrorOf([&] { parseCityData(xml, "city.xml", "."); });
 }
 
 // A city of four points and one block around them; `block` and `lots` go inside <Block>.

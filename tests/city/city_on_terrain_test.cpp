@@ -16,6 +16,7 @@
 #include "city/terrain_checks.h"
 #include "description/scene_description.h"
 #include "geo/generate_landscape.h"
+#include "test_paths.h"
 
 namespace veduta {
 namespace {
@@ -50,7 +51,7 @@ CityData town() {
         block.lots.push_back(lot);
     }
     data.blocks.push_back(block);
-    data.ruleFiles.push_back(VEDUTA_SOURCE_DIR "/rules/gruenderzeit/FacadeStructure.xml");
+    data.ruleFiles.push_back(test::sourceFile("rules/gruenderzeit/FacadeStructure.xml"));
     return data;
 }
 
@@ -213,7 +214,7 @@ TEST_F(CityOnTerrain, TheTerrainDecidesAndSaysSoWhenThePointsHaveHeights) {
 // data/hillside/make_hillside.py) render with the streets on the terrain and the houses on it.
 TEST(HillsideTown, StreetsLieOnTheTerrainAndHousesOnTheLowestGroundUnderThem) {
     std::vector<std::string> warnings;
-    RenderScene s = buildRenderScene(readSceneFile(VEDUTA_SOURCE_DIR "/scenes/hillside-town.xml"), &warnings);
+    RenderScene s = buildRenderScene(readSceneFile(test::sourceFile("scenes/hillside-town.xml")), &warnings);
     const Mesh *terrain = nullptr;
     Mesh streets;
     MaterialId bare = materialNamed(s, "land/bare"), asphalt = materialNamed(s, "street/asphalt");

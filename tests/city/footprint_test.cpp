@@ -4,20 +4,16 @@
 #include <string>
 
 #include "city/footprint.h"
+#include "input_error.h"
 
 namespace veduta {
 namespace {
 
 const FileLoc kLoc{"city.xml", 4, 7};
 
-// The message of the InputError normaliseFootprint throws, "" if none.
+// The message of the InputError normaliseFootprint throws, or "no error".
 std::string inputError(Footprint footprint) {
-    try {
-        normaliseFootprint(footprint, kLoc);
-    } catch (const InputError &e) {
-        return e.what();
-    }
-    return "";
+    return test::inputErrorOf([&] { normaliseFootprint(footprint, kLoc); });
 }
 
 bool samePoint(Vec2f a, Vec2f b) { return a.x == b.x && a.y == b.y; }

@@ -9,27 +9,24 @@
 
 #include "assembly/build_scene.h"
 #include "city/generate_buildings.h"
+#include "input_error.h"
+#include "test_paths.h"
 
 namespace veduta {
 namespace {
 
-std::string rules() { return VEDUTA_SOURCE_DIR "/rules/gruenderzeit/FacadeStructure.xml"; }
+std::string rules() { return test::sourceFile("rules/gruenderzeit/FacadeStructure.xml"); }
 
 std::string scene(const std::string &buildings) {
     return "<scene version=\"1\">\n<buildings rules=\"" + rules() + "\">\n" + buildings + "</buildings>\n</scene>\n";
 }
 
 RenderScene build(const std::string &xml, std::vector<std::string> *warnings = nullptr) {
-    return buildRenderScene(readSceneText(xml, "test.xml", VEDUTA_TEST_DATA), warnings);
+    return buildRenderScene(readSceneText(xml, "test.xml", test::testData()), warnings);
 }
 
 std::string errorOf(const std::string &xml) {
-    try {
-        build(xml);
-    } catch (const InputError &e) {
-        return e.what();
-    }
-    return "no error";
+    return test::inputErrorOf([&] { build(xml); });
 }
 
 TEST(GenerateBuildings, BuildingsAndFacadesBecomeGeometryWithTheirIds) {
@@ -128,7 +125,7 @@ TEST(GenerateBuildings, ABuildingWithoutBaseStandsOnTheGroundOverAPlinth) {
     SceneDescription d =
         readSceneText(scene("<building footprint=\"0 0 14 0 14 12 0 12\" street=\"0\"/>\n"
                             "<building base=\"3\" footprint=\"20 0 34 0 34 12 20 12\" street=\"0\"/>\n"),
-                      "test.xml", VEDUTA_TEST_DATA);
+                      "test.xml", test::testData());
     std::vector<Vec2f> asked;
     GroundHeight ground = [&](const std::vector<Vec2f> &footprint) {
         asked = footprint;

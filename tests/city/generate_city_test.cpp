@@ -9,12 +9,14 @@
 
 #include "assembly/build_scene.h"
 #include "city/generate_city.h"
+#include "input_error.h"
+#include "test_paths.h"
 
 namespace veduta {
 namespace {
 
 RenderScene build(const std::string &xml, std::vector<std::string> *warnings = nullptr) {
-    return buildRenderScene(readSceneText(xml, "test.xml", VEDUTA_SOURCE_DIR "/scenes"), warnings);
+    return buildRenderScene(readSceneText(xml, "test.xml", test::sourceFile("scenes")), warnings);
 }
 
 TEST(GenerateCity, ListingTwoOneBecomesLotsBuildingsAndStreets) {
@@ -74,7 +76,7 @@ TEST(GenerateCity, TwoLotsOfOneIdAreWarnedAbout) {
         <Lot><Points><Point id="0" streetEdge="1"/><Point id="4"/><Point id="5"/><Point id="6"/></Points></Lot>
         <Lot><Points><Point id="4" streetEdge="1"/><Point id="1"/><Point id="7"/><Point id="5"/></Points></Lot>
         </Lots></Block></Blocks><Rulefiles><Rulefile>FacadeStructure.xml</Rulefile></Rulefiles></CityData>)",
-                                  "ids.xml", VEDUTA_SOURCE_DIR "/rules/gruenderzeit");
+                                  "ids.xml", test::sourceFile("rules/gruenderzeit"));
     data.blocks[0].lots[0].sourceId = first;
     data.blocks[0].lots[1].sourceId = second;
     RenderSceneBuilder builder;
@@ -106,14 +108,7 @@ TEST(GenerateCity, StreetsJoinThePointsTheyName) {
 }
 
 TEST(GenerateCity, ErrorsAreAtTheirPlace) {
-    auto errorOf = [](const std::string &xml) {
-        try {
-            build(xml);
-        } catch (const InputError &e) {
-            return std::string(e.what());
-        }
-        return std::string("no error");
-    };
+    auto errorOf = [](const std::string &xml) { return test::inputErrorOf([&] { build(xml); }); };
     EXPECT_NE(errorOf("<scene version=\"1\"><city file=\"nowhere.xml\"/></scene>")
                   .find("test.xml:1:32: cannot read the city file"),
               std::string::npos);

@@ -11,11 +11,13 @@
 
 #include "city/footprint.h"
 #include "city/osm_import.h"
+#include "input_error.h"
+#include "test_paths.h"
 
 namespace veduta {
 namespace {
 
-const std::filesystem::path kOsmData = std::filesystem::path(VEDUTA_TEST_DATA) / "osm";
+const std::filesystem::path kOsmData = test::testData() / "osm";
 
 CityData smallDistrict(const OsmImportOptions &options = {}) {
     return importOsm(kOsmData / "small-district.osm", options);
@@ -49,12 +51,7 @@ bool hasWarning(const CityData &city, const std::string &text) {
 }
 
 std::string errorOf(const std::filesystem::path &file) {
-    try {
-        importOsm(file, {});
-    } catch (const InputError &e) {
-        return e.what();
-    }
-    return "no error";
+    return test::inputErrorOf([&] { importOsm(file, {}); });
 }
 
 TEST(OsmImport, HighwaysBecomeStreetsOfTheirWidth) {

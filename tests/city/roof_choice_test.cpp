@@ -7,6 +7,7 @@
 #include "city/roof_choice.h"
 #include "city/roofs.h"
 #include "core/error.h"
+#include "input_error.h"
 
 namespace veduta {
 namespace {
@@ -23,12 +24,7 @@ RoofOptions optionsWith(const SettingsMap &settings, uint32_t buildingId = 1, fl
 }
 
 std::string errorWith(const SettingsMap &settings) {
-    try {
-        optionsWith(settings);
-    } catch (const InputError &e) {
-        return e.what();
-    }
-    return "no error";
+    return test::inputErrorOf([&] { optionsWith(settings); });
 }
 
 TEST(RoofChoice, WithoutRoofTypeSeed000sChoiceStands) {

@@ -8,6 +8,7 @@
 #include "city/listing_2_2.h"
 #include "city/rule_file.h"
 #include "core/error.h"
+#include "input_error.h"
 
 namespace veduta {
 namespace {
@@ -31,12 +32,7 @@ RuleSet parse(const std::string &xml) { return parseRuleFile(xml, "t.xml", isWrl
 
 // The message of the InputError that reading `xml` throws.
 std::string errorOf(const std::string &xml) {
-    try {
-        parse(xml);
-    } catch (const InputError &e) {
-        return e.what();
-    }
-    return "no error";
+    return test::inputErrorOf([&] { parse(xml); });
 }
 
 TEST(RuleFile, ListingTwoTwoParses) {
@@ -390,12 +386,7 @@ class RuleFileIncludes : public testing::Test {
     }
 
     std::string errorOfFile(const std::filesystem::path &file, const RuleFileLimits &limits = {}) const {
-        try {
-            readRuleFile(file, isWrl, limits);
-        } catch (const InputError &e) {
-            return e.what();
-        }
-        return "no error";
+        return test::inputErrorOf([&] { readRuleFile(file, isWrl, limits); });
     }
 
     std::filesystem::path dir_;

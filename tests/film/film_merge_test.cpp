@@ -17,6 +17,7 @@
 #include "film/film.h"
 #include "film/film_merge.h"
 #include "film/passes.h"
+#include "input_error.h"
 
 namespace veduta {
 namespace {
@@ -92,14 +93,9 @@ void expectBitIdentical(const LayeredImage &a, const LayeredImage &b) {
     }
 }
 
-// The message of the InputError mergeFilms throws, "" if none.
+// The message of the InputError mergeFilms throws, or "no error".
 std::string mergeError(const std::vector<LayeredImage> &parts, const std::vector<std::string> &names) {
-    try {
-        mergeFilms(parts, names);
-    } catch (const InputError &e) {
-        return e.what();
-    }
-    return "";
+    return test::inputErrorOf([&] { mergeFilms(parts, names); });
 }
 
 TEST(FilmMerge, SinglePartComesBackBitIdentical) {

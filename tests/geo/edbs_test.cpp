@@ -13,6 +13,7 @@
 #include "core/hash.h"
 #include "geo/edbs.h"
 #include "geo/element_chaining.h"
+#include "input_error.h"
 #include "shared_data.h"
 
 namespace veduta {
@@ -87,12 +88,7 @@ std::string forestFile(std::vector<std::pair<std::string, std::string>> extra = 
 }
 
 std::string errorOf(const std::string &text) {
-    try {
-        toAtkis(parseEdbs(text, "t.edbs"));
-    } catch (const InputError &e) {
-        return e.what();
-    }
-    return "";
+    return test::inputErrorOf([&] { toAtkis(parseEdbs(text, "t.edbs")); });
 }
 
 TEST(Edbs, DecodesBothCoordinateForms) {
@@ -178,7 +174,7 @@ TEST(Edbs, ContinuationErrors) {
     EXPECT_NE(errorOf(a + "\n" + record("BSPE", 2, 'E', "ULTANN", "") + "\n")
                   .find("record 2: continuation record is BSPE ULTANN"),
               std::string::npos);
-    EXPECT_EQ(errorOf(a + "\n" + f + "\n" + e + "\n"), "");
+    EXPECT_EQ(errorOf(a + "\n" + f + "\n" + e + "\n"), "no error");
 }
 
 TEST(Edbs, RepetitionFactorZeroMeansAbsent) {

@@ -15,6 +15,8 @@
 #include "assembly/build_scene.h"
 #include "city/generate_buildings.h"
 #include "geo/terrain_surface.h"
+#include "input_error.h"
+#include "test_paths.h"
 
 namespace veduta {
 namespace {
@@ -61,15 +63,6 @@ class Landscape : public ::testing::Test {
     fs::path dir_;
 };
 
-std::string errorOf(const std::function<void()> &f) {
-    try {
-        f();
-    } catch (const InputError &e) {
-        return e.what();
-    }
-    return "no error";
-}
-
 MaterialId materialNamed(const RenderScene &s, const std::string &name) {
     for (MaterialId m = 0; m < s.materials.size(); ++m)
         if (s.materials[m].name == name) return m;
@@ -93,34 +86,34 @@ TEST_F(Landscape, TheTerrainIsTheDgmInTheLocalFrame) {
 TEST_F(Landscape, NeedsAGeoreference) {
     std::string xml = "<scene version=\"1\">\n<landscape><dgm file=\"dgm.asc\"/></landscape>\n</scene>\n";
     SceneDescription d = readSceneText(xml, "test.xml", dir_);
-    EXPECT_EQ(errorOf([&] { build(d); }),
+    EXPECT_EQ(test::inputErrorOf([&] { build(d); }),
               "test.xml:2:1: a <landscape> needs the scene's <georeference crs=\"EPSG:…\" origin=\"E N\">");
 }
 
 TEST_F(Landscape, ADgmInAnotherCrsIsAnError) {
     SceneDescription d = scene("<landscape><dgm file=\"dgm.asc\" crs=\"EPSG:31467\"/></landscape>\n");
-    std::string error = errorOf([&] { build(d); });
+    std::string error = test::inputErrorOf([&] { build(d); });
     EXPECT_NE(error.find("test.xml:3:23: the DGM is in EPSG:31467 and the scene in EPSG:25832"), std::string::npos)
         << error;
 }
 
 TEST_F(Landscape, BadElementsAndAttributesAreErrorsAtTheirPlace) {
-    EXPECT_EQ(errorOf([&] { scene("<landscape nodata=\"drop\"><dgm file=\"dgm.asc\"/></landscape>\n"); }),
+    EXPECT_EQ(test::inputErrorOf([&] { scene("<landscape nodata=\"drop\"><dgm file=\"dgm.asc\"/></landscape>\n"); }),
               "test.xml:3:20: nodata is 'fill' or 'cut', not 'drop'");
-    EXPECT_EQ(errorOf([&] { scene("<landscape/>\n"); }),
+    EXPECT_EQ(test::inputErrorOf([&] { scene("<landscape/>\n"); }),
               "test.xml:3:1: a <landscape> needs at least one <dgm file=\"...\"/>");
-    EXPECT_EQ(errorOf([&] { scene("<landscape><osm file=\"x\"/></landscape>\n"); }),
+    EXPECT_EQ(test::inputErrorOf([&] { scene("<landscape><osm file=\"x\"/></landscape>\n"); }),
               "test.xml:3:12: <osm> cannot stand inside <landscape>; expected <dgm> or <atkis>");
 }
 
 // The issue's rule: the base is the lowest terrain point under the footprint, interior
 // included (the pit is no corner), the plinth reaches below it, and a given base stays.
 TEST_F(Landscape, BuildingsStandOnTheLowestTerrainUnderTheirFootprint) {
-    std::string buildings = "<buildings rules=\"" VEDUTA_SOURCE_DIR
-                            "/rules/gruenderzeit/FacadeStructure.xml\">\n"
-                            "<building footprint=\"-25 -25 5 -25 5 5 -25 5\" street=\"0\"/>\n"
-                            "<building base=\"600\" footprint=\"30 30 45 30 45 45 30 45\" street=\"0\"/>\n"
-                            "</buildings>\n";
+    std::string buildings = "<buildings rules=\"" + test::sourceFile("rules/gruenderzeit/FacadeStructure.xml") +
+        "\">\n"
+        "<building footprint=\"-25 -25 5 -25 5 5 -25 5\" street=\"0\"/>\n"
+        "<building base=\"600\" footprint=\"30 30 45 30 45 45 30 45\" street=\"0\"/>\n"
+        "</buildings>\n";
     RenderScene s = build(scene("<landscape><dgm file=\"dgm.asc\"/></landscape>\n", buildings));
     MaterialId plinth = materialNamed(s, "plinth");
     ASSERT_NE(plinth, kNoMaterial);
@@ -264,7 +257,7 @@ TEST_F(Landscape, TooManyTreesIsAnError) {
    "geometry": {"type": "Polygon", "coordinates": [[[530010, 5326010], [530190, 5326010], [530190, 5326190], [530010, 5326190], [530010, 5326010]]]}}]})");
     SceneDescription d =
         scene("<landscape tree_budget=\"50\"><dgm file=\"dgm.asc\"/><atkis file=\"forest.geojson\"/></landscape>\n");
-    EXPECT_EQ(errorOf([&] { build(d); }),
+    EXPECT_EQ(test::inputErrorOf([&] { build(d); }),
               "test.xml:3:1: the landscape would have more than 50 trees (tree_budget); raise tree_budget or set "
               "trees=\"false\"");
 }
@@ -275,7 +268,7 @@ TEST_F(Landscape, PointsOutsideTheirCrsAreErrorsNamingTheObject) {
   {"type": "Feature", "properties": {"OBJART": 4107},
    "geometry": {"type": "Polygon", "coordinates": [[[530010, 5326010], [530190, 5326010], [530190, 5326190], [530010, 5326010]]]}}]})");
     SceneDescription d = scene("<landscape><dgm file=\"dgm.asc\"/><atkis file=\"lonlat.geojson\"/></landscape>\n");
-    std::string error = errorOf([&] { build(d); });
+    std::string error = test::inputErrorOf([&] { build(d); });
     EXPECT_NE(error.find("test.xml:3:46: "), std::string::npos) << error;
     EXPECT_NE(error.find("lonlat.geojson: layer lonlat, feature 0: (530010, 5326010) is no point of EPSG:4326"),
               std::string::npos)

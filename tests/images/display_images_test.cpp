@@ -19,12 +19,14 @@
 #include "images/color_config.h"
 #include "images/display_images.h"
 #include "images/oiio_image_library.h"
+#include "input_error.h"
+#include "test_paths.h"
 
 namespace veduta {
 namespace {
 
 // A second config, as users give one by path: its own display and views.
-const std::filesystem::path kOtherConfig = std::filesystem::path(VEDUTA_TEST_DATA) / "gamma22.ocio";
+const std::filesystem::path kOtherConfig = test::testData() / "gamma22.ocio";
 
 class DisplayImageTest : public testing::Test {
   protected:
@@ -169,20 +171,9 @@ DisplaySettings named(const std::string &display, const std::string &view, const
     return settings;
 }
 
-// The message a call throws, or "" when it throws nothing.
-template <typename Call>
-std::string inputErrorOf(Call call) {
-    try {
-        call();
-    } catch (const InputError &e) {
-        return e.what();
-    }
-    return "";
-}
-
 TEST_F(DisplayImageTest, UnknownNamesListTheValidOnes) {
     auto writing = [&](DisplaySettings settings) {
-        return inputErrorOf([&] { library_->writeDisplayImage(dir_ / "bad.png", greys({0.5f}), settings); });
+        return test::inputErrorOf([&] { library_->writeDisplayImage(dir_ / "bad.png", greys({0.5f}), settings); });
     };
     EXPECT_EQ(writing(named("sRBG", "")), "veduta.ocio (built in): unknown display 'sRBG'; displays: sRGB");
     EXPECT_EQ(writing(named("", "Filmc")),
@@ -195,8 +186,10 @@ TEST_F(DisplayImageTest, UnknownNamesListTheValidOnes) {
     EXPECT_EQ(writing(named("", "", "Punchy", other)),
               fmt::format("{}: unknown look 'Punchy'; looks: none", other.string()));
     EXPECT_FALSE(std::filesystem::exists(dir_ / "bad.png"));
-    EXPECT_NE(inputErrorOf([&] { library_->checkDisplaySettings(named("", "", "", dir_ / "missing.ocio")); }), "");
-    EXPECT_EQ(inputErrorOf([&] { library_->checkDisplaySettings(named("", "Filmic", "+Blue Light Fix")); }), "");
+    EXPECT_NE(test::inputErrorOf([&] { library_->checkDisplaySettings(named("", "", "", dir_ / "missing.ocio")); }),
+              "no error");
+    EXPECT_EQ(test::inputErrorOf([&] { library_->checkDisplaySettings(named("", "Filmic", "+Blue Light Fix")); }),
+              "no error");
 }
 
 TEST_F(DisplayImageTest, LooksChangeTheImage) {

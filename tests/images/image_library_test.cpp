@@ -20,6 +20,7 @@
 #include "images/color_config.h"
 #include "images/oiio_image_library.h"
 #include "io/image_library.h"
+#include "test_paths.h"
 
 namespace veduta {
 namespace {
@@ -433,7 +434,7 @@ TEST(ImagePlugin, DefaultTextureCacheDirectory) {
 }
 
 TEST_F(ImageLibraryTest, ReadsTheCityHdri) {
-    std::filesystem::path file = std::filesystem::path(VEDUTA_SOURCE_DIR) / "../shared/data/hdri/city.exr";
+    std::filesystem::path file = test::sourceDir() / "../shared/data/hdri/city.exr";
     if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " is not there";
     Image image = library_->read(file, "");
     EXPECT_EQ(image.width, 1024);

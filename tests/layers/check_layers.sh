@@ -19,6 +19,7 @@ done < <(sed -n '/<!-- layers -->/,/<!-- \/layers -->/p' "$doc" | grep -E '^\| *
 [ ${#allowed[@]} -gt 0 ] || { echo "$doc: no layer table between <!-- layers --> and <!-- /layers -->" >&2; exit 2; }
 
 failures=0
+include_re='^[[:space:]]*#[[:space:]]*include[[:space:]]*"([a-z_]+)/'
 fail() { echo "$1"; failures=$((failures + 1)); }
 
 for dir in "$root"/src/*/; do
@@ -28,12 +29,13 @@ for dir in "$root"/src/*/; do
         continue
     fi
     while IFS=: read -r file line text; do
-        target=$(echo "$text" | sed -E 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*"([a-z_]+)\/.*/\1/')
+        [[ $text =~ $include_re ]] || continue
+        target=${BASH_REMATCH[1]}
         [ "$target" = "$folder" ] && continue
         [ -z "${allowed[$target]+x}" ] && continue  # not a folder of ours (a generated file's own path)
         case "${allowed[$folder]}" in
             *" $target "*) ;;
-            *) fail "${file#"$root"/}:$line: $folder may not include $target/ (docs/ARCHITECTURE.md, Layers): $(echo "$text" | sed 's/^[[:space:]]*//')" ;;
+            *) fail "${file#"$root"/}:$line: $folder may not include $target/ (docs/ARCHITECTURE.md, Layers): ${text#"${text%%[![:space:]]*}"}" ;;
         esac
     done < <(grep -rnE '^[[:space:]]*#[[:space:]]*include[[:space:]]*"[a-z_]+/' "$dir" --include='*.h' --include='*.cpp' --include='*.in' || true)
 done

@@ -12,6 +12,7 @@
 #include "render/object_ids.h"
 #include "render/renderer.h"
 #include "render/surface_interaction.h"
+#include "test_paths.h"
 #include "test_scenes.h"
 
 namespace veduta {
@@ -26,7 +27,7 @@ RenderScene exampleScene(const std::filesystem::path &file) {
 
 std::vector<std::filesystem::path> exampleScenes() {
     std::vector<std::filesystem::path> files;
-    for (const auto &entry : std::filesystem::recursive_directory_iterator(VEDUTA_SOURCE_DIR "/scenes")) {
+    for (const auto &entry : std::filesystem::recursive_directory_iterator(test::sourceFile("scenes"))) {
         if (entry.path().extension() == ".xml") files.push_back(entry.path());
     }
     std::sort(files.begin(), files.end());
@@ -64,7 +65,7 @@ PreviewImage previewWith(const RenderScene &scene, int threads, int tileSize, Pr
 }
 
 TEST(Preview, ThreadsAndTilesDoNotChangeTheImage) {
-    RenderScene scene = exampleScene(VEDUTA_SOURCE_DIR "/scenes/default.xml");
+    RenderScene scene = exampleScene(test::sourceFile("scenes/default.xml"));
     PreviewImage a = previewWith(scene, 1, 64), b = previewWith(scene, 2, 64), c = previewWith(scene, 2, 13);
     EXPECT_EQ(a.film.pixels(), b.film.pixels());
     EXPECT_EQ(a.film.pixels(), c.film.pixels());

@@ -5,6 +5,7 @@
 #include "app/scene_loading.h"
 #include "film/passes.h"
 #include "render/renderer.h"
+#include "test_paths.h"
 #include "test_scenes.h"
 
 namespace veduta {
@@ -22,7 +23,7 @@ RgbaImage renderXml(const std::string &xml) { return renderWith(test::sceneFromX
 
 // An example scene at a small size, for tests that compare renders with each other.
 RenderScene exampleSceneAt(const std::string &name, int width, int height, uint32_t spp) {
-    SceneDescription d = loadSceneDescription(std::string(VEDUTA_SOURCE_DIR) + "/scenes/" + name);
+    SceneDescription d = loadSceneDescription(test::sourceFile("scenes/" + name));
     d.camera.width = width;
     d.camera.height = height;
     d.settings.samplesPerPixel = spp;

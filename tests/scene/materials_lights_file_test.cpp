@@ -14,30 +14,22 @@
 #include "core/error.h"
 #include "description/material_file.h"
 #include "description/scene_description.h"
+#include "input_error.h"
+#include "test_paths.h"
 
 namespace veduta {
 namespace {
 
-SceneDescription parse(const std::string &xml, const std::filesystem::path &base = VEDUTA_TEST_DATA) {
+SceneDescription parse(const std::string &xml, const std::filesystem::path &base = test::testData()) {
     return readSceneText(xml, "s.xml", base);
 }
 
-std::string parseError(const std::string &xml, const std::filesystem::path &base = VEDUTA_TEST_DATA) {
-    try {
-        parse(xml, base);
-    } catch (const InputError &e) {
-        return e.what();
-    }
-    return "no error";
+std::string parseError(const std::string &xml, const std::filesystem::path &base = test::testData()) {
+    return test::inputErrorOf([&] { parse(xml, base); });
 }
 
 std::string buildError(const std::string &xml) {
-    try {
-        buildRenderScene(parse(xml));
-    } catch (const InputError &e) {
-        return e.what();
-    }
-    return "no error";
+    return test::inputErrorOf([&] { buildRenderScene(parse(xml)); });
 }
 
 class TempFolder {
@@ -70,7 +62,7 @@ TEST(MaterialFile, ReadsEveryField) {
     EXPECT_EQ(brick.material.reflectivity, Vec3f(1.0f));
     EXPECT_FLOAT_EQ(brick.material.textureSize.x, 2);
     EXPECT_FLOAT_EQ(brick.material.textureSize.y, 0.5f);
-    EXPECT_EQ(brick.diffuseMap.file, std::filesystem::path(VEDUTA_TEST_DATA) / "tex/brick.png");
+    EXPECT_EQ(brick.diffuseMap.file, test::testData() / "tex/brick.png");
     EXPECT_EQ(brick.diffuseMap.colorSpace, "");          // the file's own
     EXPECT_EQ(brick.normalMap.colorSpace, "Non-Color");  // data maps are not converted
     EXPECT_EQ(brick.opacityMap.colorSpace, "Linear");
@@ -121,8 +113,7 @@ TEST(MaterialFile, IncludesMaterialFilesWithTheirOwnFolder) {
 }
 
 TEST(MaterialFile, TheSeedLibraryReads) {
-    std::vector<MaterialDesc> materials =
-        readMaterialFile(std::filesystem::path(VEDUTA_SOURCE_DIR) / "materials/seed000.xml");
+    std::vector<MaterialDesc> materials = readMaterialFile(test::sourceDir() / "materials/seed000.xml");
     std::vector<MaterialCategory> categories;
     for (const MaterialDesc &m : materials) {
         categories.push_back(m.material.category);
@@ -142,7 +133,7 @@ TEST(MaterialFile, TheSeedLibraryReads) {
 TEST(EnvironmentElement, ReadsEachKind) {
     SceneDescription cube =
         parse(R"(<scene><environment cubemap="sky_{face}.exr" rotation="30" intensity="2"/></scene>)");
-    EXPECT_EQ(cube.environment.cubemap.file, std::filesystem::path(VEDUTA_TEST_DATA) / "sky_{face}.exr");
+    EXPECT_EQ(cube.environment.cubemap.file, test::testData() / "sky_{face}.exr");
     EXPECT_FLOAT_EQ(cube.environment.rotationDegrees, 30);
     EXPECT_FLOAT_EQ(cube.environment.intensity, 2);
     SceneDescription sky = parse(R"(<scene><environment sky="preetham" turbidity="4" face_size="32"/></scene>)");

@@ -3,21 +3,18 @@
 #include "assembly/build_scene.h"
 #include "core/error.h"
 #include "description/scene_description.h"
+#include "input_error.h"
+#include "test_paths.h"
 #include "test_scenes.h"
 
 namespace veduta {
 namespace {
 
-SceneDescription parse(const std::string &xml) { return readSceneText(xml, "s.xml", VEDUTA_TEST_DATA); }
+SceneDescription parse(const std::string &xml) { return readSceneText(xml, "s.xml", test::testData()); }
 
 // The message of the InputError that reading and building `xml` throws.
 std::string errorOf(const std::string &xml) {
-    try {
-        buildRenderScene(parse(xml));
-    } catch (const InputError &e) {
-        return e.what();
-    }
-    return "no error";
+    return test::inputErrorOf([&] { buildRenderScene(parse(xml)); });
 }
 
 // <scene seed> is the base; an element's own seed overrides it, and an element without one has
@@ -110,7 +107,7 @@ TEST(SceneFile, MalformedXmlNamesThePlace) {
 
 TEST(SceneFile, MissingMeshFileIsReportedAtTheAttribute) {
     EXPECT_EQ(errorOf("<scene>\n  <mesh file=\"nowhere.obj\"/>\n</scene>"),
-              std::string("s.xml:2:15: ") + VEDUTA_TEST_DATA + "/nowhere.obj: no such mesh file");
+              "s.xml:2:15: " + (test::testData() / "nowhere.obj").string() + ": no such mesh file");
 }
 
 TEST(SceneFile, UnreadableMeshFileIsReportedAtTheAttribute) {

@@ -20,11 +20,12 @@
 #include "city/building_pieces.h"
 #include "render/sampler.h"
 #include "scene/scene_hash.h"
+#include "test_paths.h"
 
 namespace veduta {
 namespace {
 
-constexpr const char *kRules = VEDUTA_SOURCE_DIR "/rules/gruenderzeit/FacadeStructure.xml";
+const std::string kRules = test::sourceFile("rules/gruenderzeit/FacadeStructure.xml");
 
 // Scene XML with `seed` on <scene> and `own` (an attribute or nothing) where the body says {own}.
 std::string sceneXml(uint32_t seed, const std::string &own, const std::string &body) {
@@ -33,7 +34,7 @@ std::string sceneXml(uint32_t seed, const std::string &own, const std::string &b
 }
 
 RenderScene build(uint32_t seed, const std::string &own, const std::string &body) {
-    return buildRenderScene(readSceneText(sceneXml(seed, own, body), "test.xml", VEDUTA_SOURCE_DIR "/scenes"));
+    return buildRenderScene(readSceneText(sceneXml(seed, own, body), "test.xml", test::sourceFile("scenes")));
 }
 
 // What one generator drew, as `extract` sees it, differs between scene seeds 0 and 5, and the

@@ -1,0 +1,21 @@
+// Where the tests find the project's own files. The folders are compiled into
+// test_paths.cpp alone: no other test object holds the checkout's path, so the compiler
+// cache serves them to every clone of the project.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace veduta::test {
+
+// The root of the source tree.
+const std::filesystem::path &sourceDir();
+
+// tests/data: the inputs the tests bring along.
+const std::filesystem::path &testData();
+
+// sourceDir() / relative, as the string that readers taking a file name want.
+std::string sourceFile(std::string_view relative);
+
+}  // namespace veduta::test
