@@ -11,9 +11,6 @@
 
 namespace veduta {
 
-// How far a building's plinth reaches below its datum on terrain.
-inline constexpr float kPlinthDepth = 0.5f;
-
 // Warnings (a rule's probabilities renormalised, a clockwise footprint turned round, sizes that
 // overflow a split) are appended as "file:line:col: message"; errors throw InputError.
 // A building placed on the ground gets a plinth (city/plinth.h) in the material "plinth".

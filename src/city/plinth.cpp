@@ -1,7 +1,5 @@
 #include "city/plinth.h"
 
-#include "city/generate_buildings.h"
-
 namespace veduta {
 
 Mesh plinthMesh(const Footprint &footprint, float depth) {

@@ -10,12 +10,15 @@
 
 namespace veduta {
 
+// How far a building's plinth reaches below its datum on terrain.
+inline constexpr float kPlinthDepth = 0.5f;
+
 // The outer walls of `footprint` (counter-clockwise) from its base down by `depth` metres,
 // facing out, with u along the outline and v down the wall in metres. Every triangle has
 // material 0: the caller assigns one.
 Mesh plinthMesh(const Footprint &footprint, float depth);
 
-// The plinth of a building on terrain, kPlinthDepth deep (city/generate_buildings.h), in the
+// The plinth of a building on terrain, kPlinthDepth deep, in the
 // material "plinth", with the building's ids.
 void addPlinth(const BuildingSpec &spec, RenderSceneBuilder &builder);
 

@@ -221,7 +221,7 @@ class LandscapeBuilder {
                      std::vector<std::string> &warnings) :
         land_(land),
         seed_(seed),
-        frame_{{georef.originEasting, georef.originNorthing}},
+        frame_(MapProjection(crsByEpsg(georef.epsg), georef).frame()),
         streetAreas_(streetAreas),
         builder_(builder),
         warnings_(warnings) {

@@ -10,8 +10,8 @@
 #include <unistd.h>
 
 #include "assembly/build_scene.h"
-#include "city/generate_buildings.h"
 #include "city/generate_city.h"
+#include "city/plinth.h"
 #include "city/streets_on_terrain.h"
 #include "city/terrain_checks.h"
 #include "description/scene_description.h"

@@ -9,6 +9,7 @@
 
 #include "assembly/build_scene.h"
 #include "city/generate_buildings.h"
+#include "city/plinth.h"
 #include "input_error.h"
 #include "test_paths.h"
 

@@ -13,7 +13,7 @@
 #include <unistd.h>
 
 #include "assembly/build_scene.h"
-#include "city/generate_buildings.h"
+#include "city/plinth.h"
 #include "geo/terrain_surface.h"
 #include "input_error.h"
 #include "test_paths.h"
