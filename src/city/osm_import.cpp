@@ -21,6 +21,7 @@
 #include "core/hash.h"
 #include "core/random_streams.h"
 #include "geodesy/map_projection.h"
+#include "io/gdal_guard.h"
 #include "io/gdal_messages.h"
 
 namespace veduta {
@@ -229,7 +230,7 @@ void addFeature(const std::string &file, std::string_view layer, const OGRFeatur
 
 OsmContent readOsmContent(const std::filesystem::path &file, std::vector<std::string> &warnings) {
     FileLoc fileLoc{file.string(), 0, 0};
-    if (!std::filesystem::is_regular_file(file)) throw InputError(fileLoc, "cannot open file");
+    checkFileForGdal(file);
     GdalMessages messages;
     const char *drivers[] = {"OSM", nullptr};
     std::string configOption = fmt::format("CONFIG_FILE={}", osmDriverConfigFile());

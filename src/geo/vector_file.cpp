@@ -14,6 +14,7 @@
 #include <ogrsf_frmts.h>
 
 #include "core/error.h"
+#include "io/gdal_guard.h"
 #include "io/gdal_messages.h"
 
 namespace veduta {
@@ -258,7 +259,7 @@ int advCrsEpsg(std::string_view urn) {
 
 AtkisData readVectorFile(const std::filesystem::path &path, std::vector<std::string> &warnings) {
     FileLoc loc{path.string(), 0, 0};
-    if (!std::filesystem::exists(path)) throw InputError(loc, "cannot open file");
+    checkFileForGdal(path);
     registerGdalDrivers();
     GdalMessages messages;
     GDALDriverH driver = GDALIdentifyDriverEx(path.c_str(), GDAL_OF_VECTOR, nullptr, nullptr);
