@@ -71,10 +71,13 @@ std::vector<Polygon> streetPieces(const StreetNetwork &network, float extra) {
     return pieces;
 }
 
-// The union of every street's ribbon and joint, each widened by `extra` on either side.
+// The union of every street's ribbon and joint, each widened by `extra` on either side. All
+// at once: CGAL joins a range by divide and conquer, where joining piece by piece would
+// sweep the growing union once per piece, quadratic in the streets of a town.
 PolygonSet streetArea(const StreetNetwork &network, float extra) {
+    std::vector<Polygon> pieces = streetPieces(network, extra);
     PolygonSet area;
-    for (const Polygon &piece : streetPieces(network, extra)) area.join(piece);
+    area.join(pieces.begin(), pieces.end());
     return area;
 }
 
@@ -235,9 +238,11 @@ PolygonSet junctionArea(const StreetNetwork &network, const PolygonSet &carriage
             widestHalf[node] = std::max(widestHalf[node], s.width / 2);
         }
     }
-    PolygonSet junctions;
+    std::vector<Polygon> squares;
     for (size_t n = 0; n < network.nodes.size(); ++n)
-        if (streetsAt[n] >= 3) junctions.join(joint(network.nodes[n], kJunctionReach * widestHalf[n]));
+        if (streetsAt[n] >= 3) squares.push_back(joint(network.nodes[n], kJunctionReach * widestHalf[n]));
+    PolygonSet junctions;
+    junctions.join(squares.begin(), squares.end());
     junctions.intersection(carriageway);
     return junctions;
 }
