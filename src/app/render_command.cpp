@@ -16,6 +16,7 @@
 #include "app/run_guarded.h"
 #include "app/scene_loading.h"
 #include "assembly/build_scene.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include "film/passes.h"
 #include "io/checkpoint_file.h"
@@ -156,10 +157,12 @@ void runRender(const RenderArgs &args) {
 
     LayeredImage image = developFilm(film);
     addRenderMetadata(image, description, scene, options, stats, hash);
+    OutputSet outputs({exr, args.png, args.display.file});
     writeExr(image, exr);
     RgbaImage combined = combinedImage(image);
     if (!args.png.empty()) writePng(combined, args.png);
     writeDisplayImage(combined, args.display);
+    outputs.commit();
     // The checkpoint has served once the image is safely written.
     std::error_code ignored;
     std::filesystem::remove(checkpoint, ignored);
