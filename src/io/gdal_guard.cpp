@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "core/error.h"
+#include "core/input_file.h"
 
 namespace veduta {
 
@@ -66,11 +67,7 @@ size_t doctypeOffset(const std::filesystem::path &file, std::string_view text) {
 }  // namespace
 
 void checkFileForGdal(const std::filesystem::path &file) {
-    FileLoc loc{file.string(), 0, 0};
-    std::error_code error;
-    if (!std::filesystem::exists(file, error)) throw InputError(loc, "cannot open file");
-    if (!std::filesystem::is_regular_file(file, error))
-        throw InputError(loc, "is not a regular file (a directory or a device); veduta reads only files");
+    checkInputFile(file);
     std::string text = head(file, kMaxProlog);
     size_t start = text.find_first_not_of(" \t\r\n", text.starts_with("\xEF\xBB\xBF") ? 3 : 0);
     if (start == std::string::npos || text[start] != '<') return;
