@@ -266,6 +266,12 @@ AtkisData readVectorFile(const std::filesystem::path &path, std::vector<std::str
     std::string driverName = driver ? GDALGetDriverShortName(driver) : "";
     std::optional<MemoryCopy> copy;
     if (driverName == "NAS" || driverName == "GML") copy.emplace(path);
+    // GDAL reads CityGML as GML, and none of its features has an Objektart: say what it is
+    // rather than read nothing.
+    if (driverName == "GML" && copy->bytes().find("www.opengis.net/citygml") != std::string::npos)
+        throw InputError(loc,
+                         "is CityGML (3D city models), not an ATKIS file; an ATKIS layer is NAS, EDBS, a "
+                         "Shapefile or a GeoPackage of the Basis-DLM");
     std::string openName = copy ? copy->name() : path.string();
     AtkisData data;
     {
