@@ -268,7 +268,8 @@ AtkisData readVectorFile(const std::filesystem::path &path, std::vector<std::str
     if (driverName == "NAS" || driverName == "GML") copy.emplace(path);
     // GDAL reads CityGML as GML, and none of its features has an Objektart: say what it is
     // rather than read nothing.
-    if (driverName == "GML" && copy->bytes().find("www.opengis.net/citygml") != std::string::npos)
+    if (driverName == "GML" &&
+        std::string_view(copy->bytes()).substr(0, 1 << 20).find("www.opengis.net/citygml") != std::string_view::npos)
         throw InputError(loc,
                          "is CityGML (3D city models), not an ATKIS file; an ATKIS layer is NAS, EDBS, a "
                          "Shapefile or a GeoPackage of the Basis-DLM");
