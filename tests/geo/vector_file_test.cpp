@@ -222,5 +222,33 @@ TEST(VectorFile, UnreadableFile) {
     EXPECT_THROW(readVectorFile(junk, warnings), InputError);
 }
 
+// CityGML reads through GDAL's GML driver as features without an Objektart: it is refused
+// with what it is instead of giving an empty layer.
+TEST(VectorFile, CityGmlIsNoAtkisLayer) {
+    TempFolder folder;
+    fs::path file = folder.path / "tile.gml";
+    std::FILE *f = std::fopen(file.c_str(), "w");
+    std::fputs(R"(<?xml version="1.0" encoding="UTF-8"?>
+<core:CityModel xmlns:core="http://www.opengis.net/citygml/2.0" xmlns:bldg="http://www.opengis.net/citygml/building/2.0"
+    xmlns:gml="http://www.opengis.net/gml">
+  <core:cityObjectMember><bldg:Building gml:id="b1"><bldg:measuredHeight uom="m">10</bldg:measuredHeight>
+  </bldg:Building></core:cityObjectMember>
+</core:CityModel>
+)",
+               f);
+    std::fclose(f);
+    std::vector<std::string> warnings;
+    try {
+        readVectorFile(file, warnings);
+        FAIL() << "CityGML was read as an ATKIS layer";
+    } catch (const InputError &e) {
+        EXPECT_EQ(std::string(e.what()),
+                  file.string() +
+                      ": is CityGML (3D city models), not an ATKIS file; an ATKIS "
+                      "layer is NAS, EDBS, a Shapefile or a GeoPackage of the "
+                      "Basis-DLM");
+    }
+}
+
 }  // namespace
 }  // namespace veduta
