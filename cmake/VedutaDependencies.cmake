@@ -24,6 +24,8 @@ find_package(OpenEXR QUIET CONFIG)
 veduta_require(OpenEXR_FOUND libopenexr-dev)
 find_package(PNG QUIET)
 veduta_require(PNG_FOUND libpng-dev)
+find_package(ZLIB QUIET)  # CRC-32 of checkpoints
+veduta_require(ZLIB_FOUND zlib1g-dev)
 find_package(GeographicLib QUIET)
 veduta_require(GeographicLib_FOUND libgeographiclib-dev)
 set(CGAL_DATA_DIR "unused")  # silences CGAL's note about its data directory

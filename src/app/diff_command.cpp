@@ -9,6 +9,7 @@
 #include <fmt/ranges.h>
 
 #include "app/commands.h"
+#include "app/number_option.h"
 #include "io/image_compare.h"
 #include "io/output_files.h"
 
@@ -111,18 +112,18 @@ void addDiffCommand(CLI::App &app, int &exitCode) {
         ->check(CLI::IsMember(kMetrics))
         ->capture_default_str();
     cmd->add_option("--fail", args->options.failThreshold, "A pixel fails when a channel differs by more")
-        ->check(CLI::NonNegativeNumber)
+        ->check(finiteIn(0, 1e30))
         ->capture_default_str();
     cmd->add_option("--failpercent", args->options.failPercent, "The images differ when more pixels fail (percent)")
-        ->check(CLI::Range(0.0, 100.0))
+        ->check(finiteIn(0, 100))
         ->capture_default_str();
     cmd->add_option("--warn", args->options.warnThreshold, "Count pixels differing by more, and warn")
-        ->check(CLI::NonNegativeNumber);
+        ->check(finiteIn(0, 1e30));
     cmd->add_option("--warnpercent", args->options.warnPercent, "Warn when more pixels than this exceed --warn")
-        ->check(CLI::Range(0.0, 100.0))
+        ->check(finiteIn(0, 100))
         ->capture_default_str();
     cmd->add_option("--max-relmse", args->options.maxRelMse, "Largest relMSE that passes, for --metric relmse")
-        ->check(CLI::NonNegativeNumber);
+        ->check(finiteIn(0, 1e30));
     CLI::Option *variance =
         cmd->add_option("--reference-variance", args->variance, "Variance of one sample of B, per pixel (for ztest)")
             ->check(CLI::ExistingFile);

@@ -1,4 +1,5 @@
 #include "app/display_options.h"
+#include "app/number_option.h"
 
 #include <algorithm>
 #include <cctype>
@@ -34,7 +35,7 @@ void addDisplayOptions(CLI::App &command, DisplayImageOptions &options) {
     command.add_option("--view", settings.view, "OCIO view of --image [the display's default]")->needs(image);
     command.add_option("--look", settings.look, "OCIO looks of --image, separated by commas [none]")->needs(image);
     command.add_option("--exposure", settings.exposureStops, "Exposure of --image in stops, before the view [0]")
-        ->check(CLI::Range(-64.0f, 64.0f))
+        ->check(finiteIn(-64, 64))
         ->needs(image);
     command.add_option("--ocio-config", settings.config, "OCIO config for --image [$OCIO, else veduta's own]")
         ->check(CLI::ExistingFile)

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "app/commands.h"
+#include "app/number_option.h"
 #include "app/run_guarded.h"
 #include "app/study_preview.h"
 #include "app/study_scene.h"
@@ -25,8 +26,8 @@ void addFacadeCommand(CLI::App &app, int &exitCode) {
     CLI::App *cmd = app.add_subcommand("facade", "Derive one facade from a rule file and preview it, to PNG");
     addStudyOptions(*cmd, args->study);
     cmd->add_option("--start", args->start, "Start symbol [FrontFacade]");
-    cmd->add_option("--width", args->width, "Facade width in metres [15]")->check(CLI::Range(0.1f, 1000.0f));
-    cmd->add_option("--height", args->height, "Facade height in metres [16]")->check(CLI::Range(0.1f, 1000.0f));
+    cmd->add_option("--width", args->width, "Facade width in metres [15]")->check(finiteIn(0.1, 1000));
+    cmd->add_option("--height", args->height, "Facade height in metres [16]")->check(finiteIn(0.1, 1000));
     addStudyPreviewOptions(*cmd, args->preview, "facade.png");
     cmd->callback([args, &exitCode] {
         exitCode = runGuarded([&] {

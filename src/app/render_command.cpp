@@ -11,10 +11,12 @@
 #include "app/command_options.h"
 #include "app/commands.h"
 #include "app/display_options.h"
+#include "app/number_option.h"
 #include "app/render_metadata.h"
 #include "app/run_guarded.h"
 #include "app/scene_loading.h"
 #include "assembly/build_scene.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include "film/passes.h"
 #include "io/checkpoint_file.h"
@@ -155,10 +157,12 @@ void runRender(const RenderArgs &args) {
 
     LayeredImage image = developFilm(film);
     addRenderMetadata(image, description, scene, options, stats, hash);
+    OutputSet outputs({exr, args.png, args.display.file});
     writeExr(image, exr);
     RgbaImage combined = combinedImage(image);
     if (!args.png.empty()) writePng(combined, args.png);
     writeDisplayImage(combined, args.display);
+    outputs.commit();
     // The checkpoint has served once the image is safely written.
     std::error_code ignored;
     std::filesystem::remove(checkpoint, ignored);
@@ -195,13 +199,13 @@ void addRenderCommand(CLI::App &app, int &exitCode) {
     cmd->add_option("--noise-threshold", args->noiseThreshold,
                     "Adaptive sampling: a pixel stops once its relative deviation over its samples falls "
                     "below this (e.g. 0.001; 0 = off)")
-        ->check(CLI::Range(0.0f, 1e6f));
+        ->check(finiteIn(0, 1e6));
     cmd->add_option("--min-spp", args->minSamples, "Adaptive sampling: samples before the first check [automatic]")
         ->check(CLI::Range(1u, 1u << 24));
     cmd->add_option("--time-limit", args->timeLimit, "Stop after the last pass that ends within SECONDS")
-        ->check(CLI::PositiveNumber);
+        ->check(finiteIn(1e-3, 1e9));
     cmd->add_option("--checkpoint-every", args->checkpointEvery, "Write a checkpoint after a pass every SECONDS")
-        ->check(CLI::PositiveNumber);
+        ->check(finiteIn(1e-3, 1e9));
     cmd->add_option("--checkpoint", args->checkpoint, "Checkpoint file [<output>.checkpoint]");
     cmd->add_flag("--resume", args->resume, "Continue from the checkpoint if there is one");
     cmd->add_option("--tile", args->tileSize, "Tile size in pixels; changes speed, never the image")

@@ -8,9 +8,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
 
 #include <fmt/format.h>
+
+#include "city/triangulation_inside.h"
 
 namespace veduta {
 
@@ -59,29 +60,6 @@ void reverseFootprint(Footprint &footprint) {
     std::reverse(footprint.points.begin(), footprint.points.end());
     std::reverse(footprint.streetEdges.begin(), footprint.streetEdges.end());
     std::rotate(footprint.streetEdges.begin(), footprint.streetEdges.begin() + 1, footprint.streetEdges.end());
-}
-
-// A face lies inside when reaching it from the infinite face crosses the outlines an odd number
-// of times: the outline's interior is inside, a hole's interior outside again. Flood fill region
-// by region, each across the constraints of the one before.
-void markInside(Cdt &cdt) {
-    for (Cdt::Face_handle f : cdt.all_face_handles()) f->info() = false;
-    std::vector<Cdt::Face_handle> frontier{cdt.infinite_face()}, next;
-    std::set<Cdt::Face_handle> visited{cdt.infinite_face()};
-    for (bool inside = false; !frontier.empty(); inside = !inside, frontier.swap(next), next.clear()) {
-        std::vector<Cdt::Face_handle> stack = frontier;
-        while (!stack.empty()) {
-            Cdt::Face_handle f = stack.back();
-            stack.pop_back();
-            f->info() = inside;
-            for (int i = 0; i < 3; ++i) {
-                Cdt::Face_handle neighbour = f->neighbor(i);
-                if (visited.count(neighbour)) continue;
-                visited.insert(neighbour);
-                (f->is_constrained(i) ? next : stack).push_back(neighbour);
-            }
-        }
-    }
 }
 
 }  // namespace

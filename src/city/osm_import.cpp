@@ -18,9 +18,11 @@
 
 #include "city/footprint.h"
 #include "city/osm_config.h"
+#include "city/segment_grid.h"
 #include "core/hash.h"
 #include "core/random_streams.h"
 #include "geodesy/map_projection.h"
+#include "io/gdal_guard.h"
 #include "io/gdal_messages.h"
 
 namespace veduta {
@@ -229,7 +231,7 @@ void addFeature(const std::string &file, std::string_view layer, const OGRFeatur
 
 OsmContent readOsmContent(const std::filesystem::path &file, std::vector<std::string> &warnings) {
     FileLoc fileLoc{file.string(), 0, 0};
-    if (!std::filesystem::is_regular_file(file)) throw InputError(fileLoc, "cannot open file");
+    checkFileForGdal(file);
     GdalMessages messages;
     const char *drivers[] = {"OSM", nullptr};
     std::string configOption = fmt::format("CONFIG_FILE={}", osmDriverConfigFile());
@@ -272,18 +274,8 @@ std::optional<GeographicPoint> boundsCentre(const OsmContent &content) {
     return GeographicPoint{(south + north) / 2, (west + east) / 2};
 }
 
-// A street of the import: its centreline in the local frame and its width.
-struct StreetLine {
-    std::vector<Vec2f> points;
-    float width = 0;
-};
-
-double distanceToLine(Vec2f p, const StreetLine &street) {
-    double nearest = INFINITY;
-    for (size_t i = 0; i + 1 < street.points.size(); ++i)
-        nearest = std::min(nearest, distanceToSegment(p, street.points[i], street.points[i + 1]));
-    return nearest;
-}
+// The cells of the street-edge search (metres): about a street's reach.
+constexpr float kStreetCell = 32;
 
 class OsmImporter {
   public:
@@ -299,6 +291,7 @@ class OsmImporter {
         for (const OsmLine &line : content.highways) addStreet(line);
         for (const OsmArea &area : content.residentialAreas) addBlocks(area);
         size_t residentialBlocks = city_.blocks.size();
+        for (const CityBlock &block : city_.blocks) blockBoxes_.push_back(boxOf(block.points));
         for (const OsmArea &area : content.buildings) addBuilding(area, residentialBlocks);
         return std::move(city_);
     }
@@ -357,17 +350,19 @@ class OsmImporter {
 
     void addStreet(const OsmLine &line) {
         std::optional<float> width = streetWidth(line);
-        StreetLine street{{}, width.value_or(city_.streetWidth)};
+        float reach = width.value_or(city_.streetWidth) / 2 + float(kStreetEdgeMargin);
+        auto way = uint32_t(streetWays_++);
         uint32_t previous = 0;
         for (size_t i = 0; i < line.points.size(); ++i) {
             uint32_t point = streetPoint(line.points[i], line.loc);
-            const CityPoint &p = city_.points[point];
-            street.points.push_back({float(p.e), float(p.n)});
-            if (i > 0 && point != previous)
-                city_.streets.push_back({uint32_t(city_.streets.size()), previous, point, width, line.loc});
+            if (i > 0) {
+                const CityPoint &p = city_.points[previous], &q = city_.points[point];
+                streetSegments_.add({{float(p.e), float(p.n)}, {float(q.e), float(q.n)}, reach, way});
+                if (point != previous)
+                    city_.streets.push_back({uint32_t(city_.streets.size()), previous, point, width, line.loc});
+            }
             previous = point;
         }
-        streetLines_.push_back(std::move(street));
     }
 
     // A ring in the local frame, counter-clockwise; nothing (with a warning) when it is no
@@ -441,7 +436,9 @@ class OsmImporter {
         Vec2f centre = areaCentroid(lot.points);
         for (size_t b = 0; b < residentialBlocks; ++b) {
             CityBlock &block = city_.blocks[b];
-            if (!covers(block.points, centre, kOutsideTolerance)) continue;
+            // The box first: a town has hundreds of blocks, and covers() walks a block's outline.
+            if (!blockBoxes_[b].holds(centre, kOutsideTolerance) || !covers(block.points, centre, kOutsideTolerance))
+                continue;
             bool cornersIn = std::all_of(lot.points.begin(), lot.points.end(),
                                          [&](Vec2f p) { return covers(block.points, p, kOutsideTolerance); });
             if (cornersIn && !edgeLeaving(lot.points, block.points, kOutsideTolerance)) return &block;
@@ -454,15 +451,27 @@ class OsmImporter {
         return nullptr;
     }
 
-    // An edge faces a street when both its ends lie near the centreline of one street.
+    // The highway ways that pass within their reach of `p`.
+    std::vector<uint32_t> waysNear(Vec2f p) const {
+        std::vector<uint32_t> ways;
+        streetSegments_.forEachNear(p, [&](const SegmentGrid::Segment &s) {
+            if (distanceToSegment(p, s.a, s.b) <= s.reach) ways.push_back(s.owner);
+        });
+        std::sort(ways.begin(), ways.end());
+        ways.erase(std::unique(ways.begin(), ways.end()), ways.end());
+        return ways;
+    }
+
+    // An edge faces a street when both its ends lie near the centreline of one highway way.
     std::vector<bool> streetEdges(const std::vector<Vec2f> &points) const {
+        std::vector<std::vector<uint32_t>> near;
+        for (Vec2f p : points) near.push_back(waysNear(p));
         std::vector<bool> flags(points.size(), false);
         for (size_t i = 0; i < points.size(); ++i) {
-            Vec2f a = points[i], b = points[(i + 1) % points.size()];
-            for (const StreetLine &street : streetLines_) {
-                double reach = street.width / 2 + kStreetEdgeMargin;
-                if (distanceToLine(a, street) <= reach && distanceToLine(b, street) <= reach) flags[i] = true;
-            }
+            const std::vector<uint32_t> &a = near[i], &b = near[(i + 1) % points.size()];
+            std::vector<uint32_t> both;
+            std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(both));
+            flags[i] = !both.empty();
         }
         return flags;
     }
@@ -521,7 +530,25 @@ class OsmImporter {
     GeographicLib::LocalCartesian tangentPlane_;  // without a projection
     CityData city_;
     std::unordered_map<std::pair<int64_t, int64_t>, std::vector<uint32_t>, CellHash> pointCells_;
-    std::vector<StreetLine> streetLines_;
+    struct Box {
+        Vec2f low, high;
+        bool holds(Vec2f p, double tolerance) const {
+            return p.x >= low.x - tolerance && p.x <= high.x + tolerance && p.y >= low.y - tolerance &&
+                p.y <= high.y + tolerance;
+        }
+    };
+    static Box boxOf(const std::vector<Vec2f> &points) {
+        Box box{points[0], points[0]};
+        for (Vec2f p : points) {
+            box.low = {std::min(box.low.x, p.x), std::min(box.low.y, p.y)};
+            box.high = {std::max(box.high.x, p.x), std::max(box.high.y, p.y)};
+        }
+        return box;
+    }
+
+    SegmentGrid streetSegments_{kStreetCell};
+    std::vector<Box> blockBoxes_;  // of the residential blocks
+    size_t streetWays_ = 0;
 };
 
 }  // namespace

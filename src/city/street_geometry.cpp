@@ -3,11 +3,16 @@
 #include <algorithm>
 #include <cmath>
 
+#include <map>
+
 #include <CGAL/Boolean_set_operations_2.h>
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Polygon_set_2.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
 
 #include "city/footprint.h"
+#include "city/triangulation_inside.h"
 
 namespace veduta {
 
@@ -19,6 +24,12 @@ using Point = Kernel::Point_2;
 using Polygon = CGAL::Polygon_2<Kernel>;
 using PolygonWithHoles = CGAL::Polygon_with_holes_2<Kernel>;
 using PolygonSet = CGAL::Polygon_set_2<Kernel>;
+// Street surfaces are triangulated in the exact kernel too (addRegion says why).
+using ExactCdt = CGAL::Constrained_Delaunay_triangulation_2<
+    Kernel,
+    CGAL::Triangulation_data_structure_2<
+        CGAL::Triangulation_vertex_base_2<Kernel>,
+        CGAL::Constrained_triangulation_face_base_2<Kernel, CGAL::Triangulation_face_base_with_info_2<bool, Kernel>>>>;
 
 Polygon ribbon(Vec2f a, Vec2f b, float halfWidth) {
     float dx = b.x - a.x, dy = b.y - a.y, length = std::hypot(dx, dy);
@@ -60,10 +71,13 @@ std::vector<Polygon> streetPieces(const StreetNetwork &network, float extra) {
     return pieces;
 }
 
-// The union of every street's ribbon and joint, each widened by `extra` on either side.
+// The union of every street's ribbon and joint, each widened by `extra` on either side. All
+// at once: CGAL joins a range by divide and conquer, where joining piece by piece would
+// sweep the growing union once per piece, quadratic in the streets of a town.
 PolygonSet streetArea(const StreetNetwork &network, float extra) {
+    std::vector<Polygon> pieces = streetPieces(network, extra);
     PolygonSet area;
-    for (const Polygon &piece : streetPieces(network, extra)) area.join(piece);
+    area.join(pieces.begin(), pieces.end());
     return area;
 }
 
@@ -89,30 +103,49 @@ StreetNetwork streetsNear(const std::vector<Vec2f> &outline, const StreetNetwork
 
 Vec3f lifted(const Point &p, float z) { return {float(CGAL::to_double(p.x())), float(CGAL::to_double(p.y())), z}; }
 
+Vec2f toFloat(const Point &p) { return {float(CGAL::to_double(p.x())), float(CGAL::to_double(p.y()))}; }
+
+// The outline in float. Corners of an exact union can lie closer than a float can tell apart;
+// a corner that rounds onto the one before it is left out.
 std::vector<Vec2f> toRing(const Polygon &polygon) {
     std::vector<Vec2f> ring;
-    for (auto v = polygon.vertices_begin(); v != polygon.vertices_end(); ++v)
-        ring.push_back({float(CGAL::to_double(v->x())), float(CGAL::to_double(v->y()))});
+    for (auto v = polygon.vertices_begin(); v != polygon.vertices_end(); ++v) {
+        Vec2f p = toFloat(*v);
+        if (ring.empty() || p.x != ring.back().x || p.y != ring.back().y) ring.push_back(p);
+    }
+    while (ring.size() > 1 && ring.front().x == ring.back().x && ring.front().y == ring.back().y) ring.pop_back();
     return ring;
 }
 
-// The region's triangles, facing up, at height z.
+// The region's triangles, facing up, at height z. They are found in exact arithmetic and only
+// then rounded: rounded first, two corners of the exact union may fall on one float point, or
+// outlines cross, and no triangulation of float outlines can take that.
 void addRegion(Mesh &mesh, const PolygonSet &region, float z, StreetSurface surface) {
     std::vector<PolygonWithHoles> parts;
     region.polygons_with_holes(std::back_inserter(parts));
     for (const PolygonWithHoles &part : parts) {
-        std::vector<std::vector<Vec2f>> rings{toRing(part.outer_boundary())};
-        for (const Polygon &hole : part.holes()) rings.push_back(toRing(hole));
-        auto base = uint32_t(mesh.positions.size());
-        for (const std::vector<Vec2f> &ring : rings)
-            for (Vec2f p : ring) {
-                mesh.positions.push_back({p.x, p.y, z});
-                mesh.normals.push_back({0, 0, 1});
-                mesh.uvs.push_back(p);
+        ExactCdt cdt;
+        auto constrain = [&](const Polygon &ring) {
+            cdt.insert_constraint(ring.vertices_begin(), ring.vertices_end(), true);
+        };
+        constrain(part.outer_boundary());
+        for (const Polygon &hole : part.holes()) constrain(hole);
+        markInside(cdt);
+        std::map<ExactCdt::Vertex_handle, uint32_t> index;
+        for (ExactCdt::Face_handle f : cdt.finite_face_handles()) {
+            if (!f->info()) continue;
+            for (int k = 0; k < 3; ++k) {
+                auto [at, added] = index.try_emplace(f->vertex(k), uint32_t(mesh.positions.size()));
+                if (added) {
+                    Vec2f p = toFloat(f->vertex(k)->point());
+                    mesh.positions.push_back({p.x, p.y, z});
+                    mesh.normals.push_back({0, 0, 1});
+                    mesh.uvs.push_back(p);
+                }
+                mesh.indices.push_back(at->second);
             }
-        std::vector<uint32_t> triangles = triangulatePolygonWithHoles(rings);
-        for (uint32_t i : triangles) mesh.indices.push_back(base + i);
-        mesh.triangleMaterials.insert(mesh.triangleMaterials.end(), triangles.size() / 3, surface);
+            mesh.triangleMaterials.push_back(surface);
+        }
     }
 }
 
@@ -177,6 +210,7 @@ std::vector<BuildableArea> buildableAreas(const std::vector<Vec2f> &block, const
     for (const PolygonWithHoles &part : parts) {
         BuildableArea area;
         area.outline = toRing(part.outer_boundary());
+        if (area.outline.size() < 3) continue;  // a sliver narrower than a float step
         size_t n = area.outline.size();
         for (size_t i = 0; i < n; ++i) {
             Vec2f a = area.outline[i], b = area.outline[(i + 1) % n];
@@ -204,9 +238,11 @@ PolygonSet junctionArea(const StreetNetwork &network, const PolygonSet &carriage
             widestHalf[node] = std::max(widestHalf[node], s.width / 2);
         }
     }
-    PolygonSet junctions;
+    std::vector<Polygon> squares;
     for (size_t n = 0; n < network.nodes.size(); ++n)
-        if (streetsAt[n] >= 3) junctions.join(joint(network.nodes[n], kJunctionReach * widestHalf[n]));
+        if (streetsAt[n] >= 3) squares.push_back(joint(network.nodes[n], kJunctionReach * widestHalf[n]));
+    PolygonSet junctions;
+    junctions.join(squares.begin(), squares.end());
     junctions.intersection(carriageway);
     return junctions;
 }

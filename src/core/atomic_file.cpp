@@ -10,11 +10,20 @@
 
 namespace veduta {
 
+namespace {
+
+// A hidden file beside `file` for this process, with its extension: ".name.tmp1234.exr".
+std::filesystem::path siblingName(const std::filesystem::path &file, const char *kind) {
+    return file.parent_path() /
+        fmt::format(".{}.{}{}{}", file.stem().string(), kind, getpid(), file.extension().string());
+}
+
+}  // namespace
+
 void writeFileAtomically(const std::filesystem::path &file,
                          const std::function<void(const std::filesystem::path &temporary)> &write) {
     if (!file.parent_path().empty()) std::filesystem::create_directories(file.parent_path());
-    std::filesystem::path temporary =
-        file.parent_path() / fmt::format(".{}.tmp{}{}", file.stem().string(), getpid(), file.extension().string());
+    std::filesystem::path temporary = siblingName(file, "tmp");
     try {
         write(temporary);
         std::filesystem::rename(temporary, file);
@@ -68,5 +77,36 @@ void writeBytesAtomically(const std::filesystem::path &file, const void *data, s
 void writeBytesAtomically(const std::filesystem::path &file, const std::vector<std::span<const std::byte>> &pieces) {
     writeFileAtomically(file, [&](const std::filesystem::path &temporary) { writeWholeFile(temporary, pieces, file); });
 }
+
+OutputSet::OutputSet(std::vector<std::filesystem::path> files) {
+    for (std::filesystem::path &file : files) {
+        if (file.empty()) continue;  // an output not asked for
+        Entry entry{std::move(file), {}};
+        std::error_code error;
+        if (std::filesystem::is_regular_file(entry.file, error)) {
+            // A hard link costs no copy; a file system without links gets a copy.
+            entry.backup = siblingName(entry.file, "old");
+            std::filesystem::create_hard_link(entry.file, entry.backup, error);
+            if (error)
+                std::filesystem::copy_file(entry.file, entry.backup, std::filesystem::copy_options::overwrite_existing);
+        }
+        entries_.push_back(std::move(entry));
+    }
+}
+
+OutputSet::~OutputSet() {
+    std::error_code ignored;
+    for (const Entry &entry : entries_) {
+        if (committed_) {
+            if (!entry.backup.empty()) std::filesystem::remove(entry.backup, ignored);
+        } else if (entry.backup.empty()) {
+            std::filesystem::remove(entry.file, ignored);
+        } else {
+            std::filesystem::rename(entry.backup, entry.file, ignored);
+        }
+    }
+}
+
+void OutputSet::commit() { committed_ = true; }
 
 }  // namespace veduta

@@ -29,4 +29,28 @@ void writeWholeFile(const std::filesystem::path &path, const std::vector<std::sp
 void writeBytesAtomically(const std::filesystem::path &file, const void *data, size_t size);
 void writeBytesAtomically(const std::filesystem::path &file, const std::vector<std::span<const std::byte>> &pieces);
 
+// Files that one command writes together (an EXR and its PNG, six cube faces): all of them
+// change, or none. Each is still written atomically by its own writer; an OutputSet made
+// before the first keeps a link to every older file, and unless commit() is called, its
+// destructor puts the older files back and removes the new ones, so a failure part-way
+// through leaves the folder as it was.
+class OutputSet {
+  public:
+    // Empty paths, outputs not asked for, are passed over.
+    explicit OutputSet(std::vector<std::filesystem::path> files);
+    ~OutputSet();
+    OutputSet(const OutputSet &) = delete;
+    OutputSet &operator=(const OutputSet &) = delete;
+
+    // Every file is written: the older ones go.
+    void commit();
+
+  private:
+    struct Entry {
+        std::filesystem::path file, backup;  // backup empty: there was no older file
+    };
+    std::vector<Entry> entries_;
+    bool committed_ = false;
+};
+
 }  // namespace veduta

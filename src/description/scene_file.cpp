@@ -82,10 +82,23 @@ class SceneFileReader {
         return n == "box" || n == "sphere" || n == "cylinder" || n == "cone" || n == "plane" || n == "mesh";
     }
 
+    // A point of the render frame: metres from the scene origin, which georeferenced data
+    // puts near the scene (geodesy/map_projection.h). Farther, float steps are metres wide
+    // and Embree's bounds overflow.
+    Vec3f framePoint(const XmlElement &e, const char *attribute, Vec3f fallback) const {
+        constexpr float kFarthest = 1e7f;  // 10,000 km
+        Vec3f p = e.vec3(attribute, fallback);
+        if (std::abs(p.x) > kFarthest || std::abs(p.y) > kFarthest || std::abs(p.z) > kFarthest)
+            e.failAt(attribute,
+                     fmt::format("{} {} {} lies more than 10,000 km from the scene origin (attribute '{}')", p.x, p.y,
+                                 p.z, attribute));
+        return p;
+    }
+
     void readCamera(const XmlElement &e) {
         Camera &c = scene_.camera;
-        c.position = e.vec3("position", c.position);
-        c.lookAt = e.vec3("look_at", c.lookAt);
+        c.position = framePoint(e, "position", c.position);
+        c.lookAt = framePoint(e, "look_at", c.lookAt);
         c.up = e.vec3("up", c.up);
         c.verticalFovDegrees = e.number("fov", c.verticalFovDegrees, 0.01f, 179.0f);
         if (e.has("resolution")) {

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "core/input_file.h"
 #include "geo/no_data_fill.h"
 #include "geo/raster_grid.h"
 #include "geo/xyz_grid.h"
@@ -119,6 +120,7 @@ void applyPolicy(Dgm &dgm, NoDataPolicy noData, const std::filesystem::path &fir
 }  // namespace
 
 Dgm readDgm(const std::filesystem::path &file) {
+    checkInputFile(file);
     if (looksLikeXyz(file)) return Dgm{readXyzGrid(file), 0};
     return readRasterGrid(file);
 }

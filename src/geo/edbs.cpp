@@ -1,12 +1,11 @@
 #include "geo/edbs.h"
 
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "core/input_file.h"
 
 namespace veduta {
 
@@ -446,12 +445,6 @@ EdbsFile parseEdbs(std::string_view text, const std::string &name) {
     return file;
 }
 
-EdbsFile readEdbs(const std::filesystem::path &path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(FileLoc{path.string(), 0, 0}, "cannot open file");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parseEdbs(text.str(), path.string());
-}
+EdbsFile readEdbs(const std::filesystem::path &path) { return parseEdbs(readInputFile(path), path.string()); }
 
 }  // namespace veduta

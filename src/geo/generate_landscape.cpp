@@ -228,6 +228,7 @@ class LandscapeBuilder {
         grid_ = readTerrain(land, georef.epsg, warnings);
         for (const DataFileDesc &d : land.layers) {
             AtkisData layer = readLayer(d, georef, warnings);
+            reportUndrawn(d, layer);
             for (AtkisObject &o : layer.objects) objects_.push_back(std::move(o));
         }
     }
@@ -245,13 +246,57 @@ class LandscapeBuilder {
     }
 
   private:
+    // What the landscape makes of an object: an area draped on the terrain, a ribbon, trees.
+    static bool drapesAsArea(const AtkisObject &o) {
+        return o.geometry == AtkisGeometry::Area && landClass(o) != LandClass::Other;
+    }
+    static bool drawsAsRibbon(const AtkisObject &o) {
+        LandClass c = landClass(o);
+        return o.geometry == AtkisGeometry::Line &&
+            (c == LandClass::Road || c == LandClass::Path || c == LandClass::Rail);
+    }
+    bool plantsTrees(const AtkisObject &o) const {
+        return land_.trees && treeStand(landClass(o), treeKind(o)).spacing > 0;
+    }
+
+    // Nothing a layer holds goes unsaid: a layer with objects the landscape does not draw says
+    // how many, and of which Objektarten.
+    void reportUndrawn(const DataFileDesc &d, const AtkisData &layer) {
+        std::map<std::string, size_t> undrawn;
+        for (const AtkisObject &o : layer.objects) {
+            if (drapesAsArea(o) || drawsAsRibbon(o) || plantsTrees(o)) continue;
+            std::string kind = o.type ? std::to_string(o.type) : "no Objektart";
+            if (!o.typeName.empty()) kind += " " + o.typeName;
+            ++undrawn[kind];
+        }
+        if (layer.objects.empty()) {
+            warnings_.push_back(fmt::format("{}: {} holds no objects", d.loc.toString(), d.file.string()));
+            return;
+        }
+        size_t count = 0;
+        std::vector<std::pair<size_t, std::string>> kinds;
+        for (const auto &[kind, n] : undrawn) {
+            count += n;
+            kinds.push_back({n, kind});
+        }
+        if (count == 0) return;
+        std::sort(kinds.rbegin(), kinds.rend());
+        std::string list;
+        for (size_t k = 0; k < std::min<size_t>(kinds.size(), 5); ++k)
+            list += fmt::format("{}{} × {}", k ? ", " : "", kinds[k].first, kinds[k].second);
+        if (kinds.size() > 5) list += fmt::format(" and {} more kinds", kinds.size() - 5);
+        warnings_.push_back(
+            fmt::format("{}: {}: {} of its {} objects are of kinds the landscape does not draw ({}); "
+                        "docs/draping.md lists those it does",
+                        d.loc.toString(), d.file.string(), count, layer.objects.size(), list));
+    }
+
     void addTerrain() {
         std::vector<DrapeArea> areas;
         for (size_t i = 0; i < objects_.size(); ++i) {
             const AtkisObject &o = objects_[i];
-            LandClass c = landClass(o);
-            if (o.geometry != AtkisGeometry::Area || c == LandClass::Other) continue;
-            for (const MapRing &ring : o.areas) areas.push_back({ring, c, uint32_t(i), o.where});
+            if (!drapesAsArea(o)) continue;
+            for (const MapRing &ring : o.areas) areas.push_back({ring, landClass(o), uint32_t(i), o.where});
         }
         for (size_t i = 0; i < streetAreas_.size(); ++i) {
             MapRing ring;
@@ -295,10 +340,8 @@ class LandscapeBuilder {
     void addRibbons() {
         Mesh ribbons;
         for (const AtkisObject &o : objects_) {
+            if (!drawsAsRibbon(o)) continue;
             LandClass c = landClass(o);
-            if (o.geometry != AtkisGeometry::Line ||
-                (c != LandClass::Road && c != LandClass::Path && c != LandClass::Rail))
-                continue;
             RibbonOptions options;
             options.lift = ribbonLift(c);
             MaterialId material = builder_.findOrAddMaterial(landMaterial(c));
@@ -319,8 +362,8 @@ class LandscapeBuilder {
         std::vector<uint32_t> planter;  // per tree: the object it was planted for
         for (size_t i = 0; i < objects_.size(); ++i) {
             const AtkisObject &o = objects_[i];
+            if (!plantsTrees(o)) continue;
             TreeStand stand = treeStand(landClass(o), treeKind(o));
-            if (stand.spacing <= 0) continue;
             uint32_t key = objectKey(o);
             try {
                 for (const MapRing &ring : o.areas) plantArea(set, toLocal(ring, frame_), stand, seed_, key);

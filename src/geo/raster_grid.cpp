@@ -13,6 +13,7 @@
 #include <ogr_spatialref.h>
 
 #include "core/error.h"
+#include "io/gdal_guard.h"
 #include "io/gdal_messages.h"
 
 namespace veduta {
@@ -60,6 +61,7 @@ void flipRows(HeightGrid &grid) {
 }  // namespace
 
 Dgm readRasterGrid(const std::filesystem::path &path) {
+    checkFileForGdal(path);
     registerGdalDrivers();
     FileLoc loc{path.string(), 0, 0};
     GdalMessages messages;

@@ -14,6 +14,7 @@
 #include <ogrsf_frmts.h>
 
 #include "core/error.h"
+#include "io/gdal_guard.h"
 #include "io/gdal_messages.h"
 
 namespace veduta {
@@ -22,34 +23,58 @@ namespace {
 
 struct ClassEntry {
     std::string_view name;
-    int type;
+    int aaaCode;  // the class's 5-digit code in the AdV Objektartenkatalog (GeoInfoDok); 0: none
+    int type;     // the ATKIS-OK 3.2 Objektart it succeeds
 };
 
-// AAA classes of the Basis-DLM and ALKIS mapped to the ATKIS-OK 3.2 Objektart they succeed.
+// AAA classes of the Basis-DLM and ALKIS mapped to the ATKIS-OK 3.2 Objektart they succeed:
+// NAS names them, today's Shape deliveries give OBJART (the code) and OBJART_TXT (the name).
 constexpr std::array kNasClasses{
-    ClassEntry{"AX_Wald", 4107},
-    ClassEntry{"AX_Gehoelz", 4108},
-    ClassEntry{"AX_Gruenland", 4102},
-    ClassEntry{"AX_Landwirtschaft", 4101},
-    ClassEntry{"AX_Heide", 4104},
-    ClassEntry{"AX_Moor", 4105},
-    ClassEntry{"AX_Sumpf", 4106},
-    ClassEntry{"AX_Strassenachse", 3101},
-    ClassEntry{"AX_Fahrbahnachse", 3101},
-    ClassEntry{"AX_Strassenverkehr", 3101},
-    ClassEntry{"AX_Weg", 3102},
-    ClassEntry{"AX_Wegachse", 3102},
-    ClassEntry{"AX_Bahnstrecke", 3201},
-    ClassEntry{"AX_Bahnverkehr", 3201},
-    ClassEntry{"AX_StehendesGewaesser", 5112},
-    ClassEntry{"AX_Fliessgewaesser", 5101},
-    ClassEntry{"AX_Gewaesserachse", 5101},
-    ClassEntry{"AX_Wohnbauflaeche", 2111},
-    ClassEntry{"AX_IndustrieUndGewerbeflaeche", 2112},
-    ClassEntry{"AX_FlaecheGemischterNutzung", 2113},
-    ClassEntry{"AX_FlaecheBesondererFunktionalerPraegung", 2114},
-    ClassEntry{"AX_Ortslage", 2101},
+    ClassEntry{"AX_Wohnbauflaeche", 41001, 2111},
+    ClassEntry{"AX_IndustrieUndGewerbeflaeche", 41002, 2112},
+    ClassEntry{"AX_FlaecheGemischterNutzung", 41006, 2113},
+    ClassEntry{"AX_FlaecheBesondererFunktionalerPraegung", 41007, 2114},
+    ClassEntry{"AX_SportFreizeitUndErholungsflaeche", 41008, 2227},
+    ClassEntry{"AX_Ortslage", 0, 2101},
+    ClassEntry{"AX_Strassenverkehr", 42001, 3101},
+    ClassEntry{"AX_Strassenachse", 42003, 3101},
+    ClassEntry{"AX_Fahrbahnachse", 42005, 3101},
+    ClassEntry{"AX_Weg", 42006, 3102},
+    ClassEntry{"AX_Fahrwegachse", 42008, 3102},
+    ClassEntry{"AX_Wegachse", 0, 3102},
+    ClassEntry{"AX_Bahnverkehr", 42010, 3201},
+    ClassEntry{"AX_Bahnstrecke", 42014, 3201},
+    ClassEntry{"AX_Landwirtschaft", 43001, 4101},
+    ClassEntry{"AX_Gruenland", 0, 4102},
+    ClassEntry{"AX_Wald", 43002, 4107},
+    ClassEntry{"AX_Gehoelz", 43003, 4108},
+    ClassEntry{"AX_Heide", 43004, 4104},
+    ClassEntry{"AX_Moor", 43005, 4105},
+    ClassEntry{"AX_Sumpf", 43006, 4106},
+    ClassEntry{"AX_Fliessgewaesser", 44001, 5101},
+    ClassEntry{"AX_Gewaesserachse", 44004, 5101},
+    ClassEntry{"AX_StehendesGewaesser", 44006, 5112},
 };
+
+// AX_Landwirtschaft's Vegetationsmerkmal (VEG) 1020: Grünland, which ATKIS-OK kept apart.
+constexpr std::string_view kGrasslandVegetation = "1020";
+
+// AX_Landwirtschaft whose Vegetationsmerkmal (VEG in Shape deliveries, vegetationsmerkmal in
+// NAS) says Grünland.
+bool isGrassland(const std::map<std::string, std::string> &attributes) {
+    for (const char *key : {"VEG", "VEGETATIONSMERKMAL"}) {
+        auto it = attributes.find(key);
+        if (it != attributes.end() && it->second == kGrasslandVegetation) return true;
+    }
+    return false;
+}
+
+// The ATKIS-OK Objektart of a 5-digit AAA code; 0 for a class the table does not hold.
+int aaaCodeType(int code) {
+    auto it = std::find_if(kNasClasses.begin(), kNasClasses.end(),
+                           [&](const ClassEntry &e) { return e.aaaCode != 0 && e.aaaCode == code; });
+    return it == kNasClasses.end() ? 0 : it->type;
+}
 
 std::string upper(std::string_view s) {
     std::string out(s);
@@ -184,19 +209,26 @@ class VectorReader {
         object.typeName = layer.GetName();
         object.type = nasClassType(layer.GetName());
         // No feature id: it is the feature's place in the file, which other features shift.
+        std::optional<std::string> objart, objartText;
         for (int i = 0; i < feature.GetFieldCount(); ++i) {
             if (!feature.IsFieldSetAndNotNull(i)) continue;
             std::string name = upper(feature.GetFieldDefnRef(i)->GetNameRef());
             std::string value = feature.GetFieldAsString(i);
             if (name == "OBJART") {
-                object.type = objectType(value, object.where);
-                object.typeName.clear();
+                objart = value;
+            } else if (name == "OBJART_TXT") {
+                objartText = value;
             } else if (name == "GML_ID") {
                 object.id = value;
             } else {
                 object.attributes[name] = value;
             }
         }
+        if (objart) {
+            object.type = objectType(*objart, objartText, object.where);
+            object.typeName = objartText.value_or("");
+        }
+        if (object.type == 4101 && isGrassland(object.attributes)) object.type = 4102;
         auto objid = object.attributes.find("OBJID");  // ATKIS exports' Objektidentifikator
         if (object.id.empty() && objid != object.attributes.end()) object.id = objid->second;
         if (g.holes > 0)
@@ -215,13 +247,25 @@ class VectorReader {
         data.objects.push_back(std::move(object));
     }
 
-    // OBJART as ATKIS Shape exports write it: the 4-digit code, maybe with blanks round it.
-    int objectType(const std::string &value, const std::string &where) {
+    // OBJART as Shape exports write it, maybe with blanks round it: ATKIS-OK's 4-digit code,
+    // or the 5-digit AAA code of today's Basis-DLM (with its name in OBJART_TXT), taken to the
+    // ATKIS-OK Objektart it succeeds. An AAA class without one keeps its code: the landscape
+    // reports it among the kinds it does not draw.
+    int objectType(const std::string &value, const std::optional<std::string> &name, const std::string &where) {
         std::string code = value;
         code.erase(std::remove(code.begin(), code.end(), ' '), code.end());
-        if (code.size() == 4 && std::all_of(code.begin(), code.end(), [](char c) { return c >= '0' && c <= '9'; }))
-            return std::stoi(code);
-        warnings_.push_back(fmt::format("{}: OBJART '{}' is not a 4-digit Objektart", where, value));
+        bool digits =
+            !code.empty() && std::all_of(code.begin(), code.end(), [](char c) { return c >= '0' && c <= '9'; });
+        if (digits && code.size() == 4) return std::stoi(code);
+        if (digits && code.size() == 5) {
+            int aaa = std::stoi(code);
+            if (int type = aaaCodeType(aaa)) return type;
+            if (int type = name ? nasClassType(*name) : 0) return type;
+            return aaa;
+        }
+        if (int type = name ? nasClassType(*name) : 0) return type;
+        warnings_.push_back(
+            fmt::format("{}: OBJART '{}' is not a 4-digit (ATKIS-OK) or 5-digit (AAA) Objektart", where, value));
         return 0;
     }
 
@@ -258,13 +302,20 @@ int advCrsEpsg(std::string_view urn) {
 
 AtkisData readVectorFile(const std::filesystem::path &path, std::vector<std::string> &warnings) {
     FileLoc loc{path.string(), 0, 0};
-    if (!std::filesystem::exists(path)) throw InputError(loc, "cannot open file");
+    checkFileForGdal(path);
     registerGdalDrivers();
     GdalMessages messages;
     GDALDriverH driver = GDALIdentifyDriverEx(path.c_str(), GDAL_OF_VECTOR, nullptr, nullptr);
     std::string driverName = driver ? GDALGetDriverShortName(driver) : "";
     std::optional<MemoryCopy> copy;
     if (driverName == "NAS" || driverName == "GML") copy.emplace(path);
+    // GDAL reads CityGML as GML, and none of its features has an Objektart: say what it is
+    // rather than read nothing.
+    if (driverName == "GML" &&
+        std::string_view(copy->bytes()).substr(0, 1 << 20).find("www.opengis.net/citygml") != std::string_view::npos)
+        throw InputError(loc,
+                         "is CityGML (3D city models), not an ATKIS file; an ATKIS layer is NAS, EDBS, a "
+                         "Shapefile or a GeoPackage of the Basis-DLM");
     std::string openName = copy ? copy->name() : path.string();
     AtkisData data;
     {

@@ -5,12 +5,14 @@
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <string_view>
 
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "core/input_file.h"
 
 namespace veduta {
 
@@ -26,18 +28,6 @@ struct XyzPoint {
     float height = 0;
     int line = 0, column = 0;  // of the easting
 };
-
-std::string readWholeFile(const std::filesystem::path &file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw InputError({file.string(), 0, 0}, "cannot open the file");
-    std::string text;
-    in.seekg(0, std::ios::end);
-    text.resize(size_t(in.tellg()));
-    in.seekg(0);
-    in.read(text.data(), std::streamsize(text.size()));
-    if (!in) throw InputError({file.string(), 0, 0}, "cannot read the file");
-    return text;
-}
 
 bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
@@ -208,9 +198,14 @@ XyzPoint firstPointAt(std::string_view text, const std::string &file, const Heig
 }  // namespace
 
 bool looksLikeXyz(const std::filesystem::path &file) {
+    // The first lines only, and only so much of them: a binary raster has no line ends.
     std::ifstream in(file, std::ios::binary);
+    std::string head(64 * 1024, '\0');
+    in.read(head.data(), std::streamsize(head.size()));
+    head.resize(size_t(in.gcount()));
+    std::istringstream lines(head);
     std::string line;
-    for (int i = 0; i < 100 && std::getline(in, line); ++i) {
+    for (int i = 0; i < 100 && std::getline(lines, line); ++i) {
         size_t start = line.find_first_not_of(" \t\r");
         if (start == std::string::npos) continue;
         if (line[start] == '#') continue;
@@ -227,7 +222,7 @@ bool looksLikeXyz(const std::filesystem::path &file) {
 
 HeightGrid readXyzGrid(const std::filesystem::path &path) {
     std::string file = path.string();
-    std::string text = readWholeFile(path);
+    std::string text = readInputFile(path);
 
     GridScan scan(file);
     forEachPoint(text, file, [&](const XyzPoint &p) { return scan.add(p), true; });

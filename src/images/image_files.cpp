@@ -13,6 +13,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/input_file.h"
 
 namespace veduta {
 
@@ -25,11 +26,23 @@ OIIO::ImageSpec keepAlpha(OIIO::ImageSpec spec) {
     return spec;
 }
 
+// The most values (pixels × channels) an image may hold: 16 GiB of float.
+constexpr uint64_t kMaxImageValues = uint64_t(1) << 32;
+
 std::unique_ptr<OIIO::ImageInput> openImage(const std::filesystem::path &file) {
+    checkInputFile(file);
     const OIIO::ImageSpec hints = keepAlpha(OIIO::ImageSpec());
     std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::open(file.string(), &hints);
     if (!input) throw InputError(FileLoc{file.string()}, OIIO::geterror());
-    if (input->spec().deep) throw InputError(FileLoc{file.string()}, "deep images are not supported");
+    const OIIO::ImageSpec &spec = input->spec();
+    if (spec.deep) throw InputError(FileLoc{file.string()}, "deep images are not supported");
+    // Checked before the pixels are allocated: a header may claim any size.
+    uint64_t values =
+        uint64_t(std::max(spec.width, 0)) * uint64_t(std::max(spec.height, 0)) * uint64_t(std::max(spec.nchannels, 0));
+    if (values > kMaxImageValues)
+        throw InputError(FileLoc{file.string()},
+                         fmt::format("is {} × {} pixels of {} channels; veduta reads images of up to {} values",
+                                     spec.width, spec.height, spec.nchannels, kMaxImageValues));
     return input;
 }
 

@@ -3,8 +3,11 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <span>
+#include <string_view>
 
 #include <fmt/format.h>
+#include <zlib.h>
 
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -13,7 +16,14 @@ namespace veduta {
 
 namespace {
 
-constexpr const char *kMagic = "veduta checkpoint 1";
+// Format 2 ends in a CRC-32 of everything before it, so that a damaged file is refused
+// rather than resumed into a wrong image.
+constexpr std::string_view kMagic = "veduta checkpoint 2";
+constexpr std::string_view kAnyFormat = "veduta checkpoint ";
+
+uint32_t crcOf(uint32_t crc, std::span<const std::byte> bytes) {
+    return uint32_t(crc32_z(crc, reinterpret_cast<const Bytef *>(bytes.data()), bytes.size()));
+}
 
 // RenderStats as the file stores them, in this order.
 struct StoredStats {
@@ -22,8 +32,8 @@ struct StoredStats {
     uint64_t camera, bounce, shadow, nonFinite;
 };
 
-// Reads the checkpoint straight into the film's buffers: a film may be gigabytes, too much to
-// hold twice.
+// Reads the checkpoint straight into the film's buffers (a film may be gigabytes, too much to
+// hold twice) and sums the CRC of what it has read.
 class Reader {
   public:
     explicit Reader(const std::filesystem::path &file) : file_(file), in_(file, std::ios::binary) {
@@ -33,10 +43,18 @@ class Reader {
     std::string line() {
         std::string text;
         if (!std::getline(in_, text)) fail("ends inside its header");
+        crc_ = crcOf(crc_, std::as_bytes(std::span(text)));
+        crc_ = crcOf(crc_, std::as_bytes(std::span("\n", 1)));
         return text;
     }
     void raw(void *out, size_t size) {
         if (!in_.read(static_cast<char *>(out), std::streamsize(size))) fail("is cut short");
+        crc_ = crcOf(crc_, {static_cast<const std::byte *>(out), size});
+    }
+    // The CRC the file ends with against that of everything read before it.
+    void checkCrc() {
+        uint32_t summed = crc_, stored = get<uint32_t>();
+        if (stored != summed) fail("is damaged: its CRC-32 does not match its contents");
     }
     template <typename T>
     T get() {
@@ -52,6 +70,7 @@ class Reader {
   private:
     std::filesystem::path file_;
     std::ifstream in_;
+    uint32_t crc_ = 0;
 };
 
 void checkIdentity(const Reader &reader, const RenderIdentity &written, const RenderIdentity &expected) {
@@ -83,12 +102,20 @@ void writeCheckpoint(const std::filesystem::path &file, const RenderIdentity &id
         pieces.push_back(std::as_bytes(std::span(&sizes[i], 1)));
         pieces.push_back(buffers[i].bytes);
     }
+    uint32_t crc = 0;
+    for (std::span<const std::byte> piece : pieces) crc = crcOf(crc, piece);
+    pieces.push_back(std::as_bytes(std::span(&crc, 1)));
     writeBytesAtomically(file, pieces);
 }
 
 void readCheckpoint(const std::filesystem::path &file, const RenderIdentity &identity, Film &film, RenderStats &stats) {
     Reader reader(file);
-    if (reader.line() != kMagic) reader.fail("does not start with its signature: not a veduta checkpoint");
+    std::string signature = reader.line();
+    if (signature != kMagic) {
+        if (signature.starts_with(kAnyFormat))
+            reader.fail(fmt::format("is of another format ('{}'); render afresh without --resume", signature));
+        reader.fail("does not start with its signature: not a veduta checkpoint");
+    }
     RenderIdentity written;
     for (std::string text = reader.line(); !text.empty(); text = reader.line()) {
         size_t colon = text.find(": ");
@@ -107,6 +134,7 @@ void readCheckpoint(const std::filesystem::path &file, const RenderIdentity &ide
         }
         reader.raw(buffer.bytes.data(), buffer.bytes.size());
     }
+    reader.checkCrc();
     if (!reader.atEnd()) reader.fail("has data after its last buffer");
 }
 

@@ -2,9 +2,11 @@
 
 #include <array>
 #include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
+#include "core/atomic_file.h"
 #include "io/image_library.h"
 #include "scene/cubemap_layout.h"
 
@@ -53,7 +55,11 @@ void writeCubemap(const Cubemap &cubemap, const std::filesystem::path &file, Cub
     switch (layout) {
     case CubemapLayout::Faces: {
         std::array<Image, kCubeFaceCount> faces = facesFromCubemap(cubemap);
-        for (int f = 0; f < kCubeFaceCount; ++f) library.write(faceFile(file, f), faces[size_t(f)]);
+        std::vector<std::filesystem::path> files;
+        for (int f = 0; f < kCubeFaceCount; ++f) files.push_back(faceFile(file, f));
+        OutputSet outputs(files);
+        for (int f = 0; f < kCubeFaceCount; ++f) library.write(files[size_t(f)], faces[size_t(f)]);
+        outputs.commit();
         return;
     }
     case CubemapLayout::VerticalCross: library.write(file, crossFromCubemap(cubemap, true)); return;

@@ -2,19 +2,15 @@
 
 #include <algorithm>
 #include <charconv>
-#include <fstream>
-#include <sstream>
 
 #include <fmt/format.h>
+
+#include "core/input_file.h"
 
 namespace veduta {
 
 XmlDocument XmlDocument::fromFile(const std::filesystem::path &file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw InputError({file.string()}, "cannot open file");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return XmlDocument(text.str(), file.string());
+    return XmlDocument(readInputFile(file), file.string());
 }
 
 XmlDocument XmlDocument::fromString(std::string text, std::string name) {

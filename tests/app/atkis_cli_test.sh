@@ -45,6 +45,24 @@ check "junk exits 1" rc_is 1
 run atkis info "$work/missing.edbs"
 check "missing exits 1" rc_is 1
 
+# GDAL's "billion laughs" NAS test, rebuilt: refused at once, before GDAL expands anything.
+{
+    printf '<?xml version="1.0"?>\n<!DOCTYPE lolz [\n<!ENTITY lol "lol">\n'
+    previous=lol
+    for level in 1 2 3 4 5 6 7 8 9; do
+        printf '<!ENTITY lol%s "%s">\n' $level "$(printf "&$previous;%.0s" 1 2 3 4 5 6 7 8 9 10)"
+        previous=lol$level
+    done
+    printf ']>\n<AX_Bestandsdatenauszug>&lol9;</AX_Bestandsdatenauszug>\n'
+} >"$work/laughs.xml"
+timeout 10 "$veduta" atkis info "$work/laughs.xml" >"$work/out" 2>"$work/err"
+echo $? >"$work/rc"
+check "billion laughs exits 1" rc_is 1
+check "billion laughs names the declaration" err_has "laughs.xml:2:1: the XML file has a document type declaration"
+run atkis info /dev/zero
+check "a device exits 1" rc_is 1
+check "a device is named" err_has "/dev/zero: is not a regular file"
+
 # GeoJSON through GDAL: a road with OBJART and BRF.
 cat >"$work/road.geojson" <<'JSON'
 {"type": "FeatureCollection",

@@ -16,6 +16,12 @@ for command in facade building; do
     check "$command help names --seed" out_has "--seed"
 done
 
+for bad in "--width nan" "--height inf" "--width 1e-9"; do
+    run facade "$rules" $bad -o "$work/bad.png"
+    check "facade $bad exits 2" rc_is 2
+    check "facade $bad writes nothing" test ! -e "$work/bad.png"
+done
+
 run facade "$rules" --width 12 --height 15 --res 320x400 -o "$work/facade.png"
 check "facade exits 0" rc_is 0
 check "facade png written" test -s "$work/facade.png"

@@ -23,6 +23,17 @@ run render -o picture.png
 check "non-exr output exits 2" rc_is 2
 run render --png picture.jpg
 check "non-png display image exits 2" rc_is 2
+# A device named as the scene: refused at once as no file, exit 1.
+run info /dev/zero
+check "a device as the scene exits 1" rc_is 1
+check "a device as the scene is named" err_has "/dev/zero: is not a regular file"
+# Numbers that are no numbers: NaN passes every comparison, so each option checks it.
+for bad in "--noise-threshold nan" "--noise-threshold inf" "--time-limit nan" "--checkpoint-every -inf" \
+    "--exposure nan --image x.png"; do
+    run render $bad
+    check "render $bad exits 2" rc_is 2
+    check "render $bad names the value" err_has "is not a number from"
+done
 
 # An output that cannot be written is reported before rendering: exit 3.
 touch "$work/afile"

@@ -52,6 +52,8 @@ run diff "$work/block.exr" "$work/ref.exr" --failpercent 2
 check "2% off within --failpercent 2" rc_is 0
 run diff "$work/block.exr" "$work/ref.exr" --fail 0.2
 check "2% off within --fail 0.2" rc_is 0
+run diff "$work/block.exr" "$work/ref.exr" --fail nan
+check "--fail nan is a bad command line" rc_is 2
 run diff "$work/block.exr" "$work/ref.exr" --warn 0.05 --failpercent 5
 check "warning still passes" rc_is 0
 check "warning counted" out_line "warned_pixels: 81"

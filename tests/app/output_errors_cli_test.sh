@@ -46,6 +46,14 @@ run preview --res 2000x2000 -q -o "$work/full/z.png"
 check "full disk, preview PNG: fails" rc_is 3
 check "full disk, preview PNG: nothing left" nothing_but "$work/full" x.exr
 
+# Six faces that do not all fit: none of them is left.
+if command -v oiiotool >/dev/null; then
+    oiiotool --pattern noise:type=white 256x128 3 -d float -o "$work/noise.exr"
+    run cubemap "$work/noise.exr" -o "$work/full/c_{face}.exr" --size 64
+    check "full disk, cube faces: fails" rc_is 3
+    check "full disk, cube faces: no face is left" nothing_but "$work/full" x.exr
+fi
+
 run render "${small[@]}" -o "$work/readonly/x.exr"
 check "read-only folder: fails before rendering" rc_is 3
 check "read-only folder: says so" err_has "$work/readonly/x.exr: its folder is not writable"

@@ -10,6 +10,7 @@
 #include "assembly/build_scene.h"
 #include "city/generate_city.h"
 #include "input_error.h"
+#include "shared_data.h"
 #include "test_paths.h"
 
 namespace veduta {
@@ -39,6 +40,20 @@ TEST(GenerateCity, ListingTwoOneBecomesLotsBuildingsAndStreets) {
     for (const std::string &w : warnings)
         clockwise |= w.find("bilke-listing-2-1.xml:63:7: the block runs clockwise") != std::string::npos;
     EXPECT_TRUE(clockwise);
+}
+
+// Two real footways (MANIFEST.md) whose street surface crashed the float triangulation of
+// its rounded outlines: a closed way and a short one below it.
+TEST(GenerateCity, TwoRealFootwaysGiveAStreetSurface) {
+    std::optional<std::filesystem::path> file = test::sharedDataFile("osm/two_footways.osm");
+    if (!file) GTEST_SKIP() << "../shared/data/osm/two_footways.osm is not there";
+    RenderScene scene = build(fmt::format("<scene version=\"1\"><city file=\"{}\" "
+                                          "rules=\"../rules/gruenderzeit/FacadeStructure.xml\"/></scene>",
+                                          file->string()));
+    size_t streetTriangles = 0;
+    for (const BakedMesh &m : scene.meshes)
+        if (m.buildingId == 0) streetTriangles += m.mesh.triangleCount();
+    EXPECT_GT(streetTriangles, 0u);
 }
 
 TEST(GenerateCity, AnOpenStreetMapFileIsACityWithTheRulesOfItsElement) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "city/street_geometry.h"
 
@@ -121,6 +122,37 @@ TEST(StreetGeometry, ABlockOnTheStreetsCentrelinesKeepsWhatTheSidewalksLeave) {
     for (bool street : rest[0].streetEdges) streetEdges += street;
     EXPECT_GE(streetEdges, 1);
     EXPECT_LE(streetEdges, 3);  // the long edge, and perhaps the short bevels of the round end
+}
+
+// Every triangle indexes a vertex of the mesh, and the road covers at least the longest
+// street's ribbon and at most all ribbons and joints together.
+void expectWholeSurface(const StreetNetwork &network, const Mesh &m) {
+    for (uint32_t i : m.indices) ASSERT_LT(i, m.positions.size());
+    ASSERT_EQ(m.triangleMaterials.size(), m.triangleCount());
+    float longest = 0, pieces = 0;
+    for (const StreetNetwork::Street &s : network.streets) {
+        float ribbon = length(network.nodes[s.to] - network.nodes[s.from]) * s.width;
+        longest = std::max(longest, ribbon);
+        pieces += ribbon + 2 * kPi * s.width * s.width / 4 / std::cos(kPi / kStreetJointSides);
+    }
+    EXPECT_GT(road(m), 0.999f * longest);
+    EXPECT_LT(road(m), 1.001f * pieces);
+}
+
+// Outlines whose corners a float cannot tell apart: the diagonal CityData street that made
+// the float triangulation of rounded outlines crash, and random networks that cross.
+TEST(StreetGeometry, DiagonalAndCrossingStreetsGiveWholeSurfaces) {
+    StreetNetwork diagonal{{{19.955f, 120.477f}, {268.778f, 286.421f}}, {{0, 1, 20}}, 0};
+    expectWholeSurface(diagonal, streetGeometry(diagonal));
+    std::mt19937 random(17);
+    std::uniform_real_distribution<float> coordinate(0, 300), width(2, 20);
+    for (int n = 0; n < 10; ++n) {
+        StreetNetwork network;
+        for (int k = 0; k < 8; ++k) network.nodes.push_back({coordinate(random), coordinate(random)});
+        for (uint32_t k = 0; k + 1 < 8; ++k) network.streets.push_back({k, uint32_t(random() % 8), width(random)});
+        SCOPED_TRACE(n);
+        expectWholeSurface(network, streetGeometry(network));
+    }
 }
 
 }  // namespace

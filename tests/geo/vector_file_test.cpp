@@ -222,5 +222,80 @@ TEST(VectorFile, UnreadableFile) {
     EXPECT_THROW(readVectorFile(junk, warnings), InputError);
 }
 
+// Today's Basis-DLM Shape delivery: 5-digit AAA codes in OBJART, the class name in
+// OBJART_TXT, Grünland as AX_Landwirtschaft with VEG 1020.
+TEST(VectorFile, AaaCodesAndClassNamesAreMapped) {
+    TempFolder folder;
+    fs::path file = folder.path / "dlm.shp";
+    GDALAllRegister();
+    GDALDatasetUniquePtr dataset(
+        GetGDALDriverManager()->GetDriverByName("ESRI Shapefile")->Create(file.c_str(), 0, 0, 0, GDT_Unknown, nullptr));
+    ASSERT_NE(dataset, nullptr);
+    OGRSpatialReference srs;
+    srs.importFromEPSG(25832);
+    OGRLayer *layer = dataset->CreateLayer("dlm", &srs, wkbPolygon, nullptr);
+    for (const char *name : {"OBJART", "OBJART_TXT", "VEG"}) {
+        OGRFieldDefn field(name, OFTString);
+        layer->CreateField(&field);
+    }
+    auto add = [&](const char *code, const char *text, const char *vegetation) {
+        OGRFeatureUniquePtr feature(OGRFeature::CreateFeature(layer->GetLayerDefn()));
+        feature->SetField("OBJART", code);
+        feature->SetField("OBJART_TXT", text);
+        if (vegetation) feature->SetField("VEG", vegetation);
+        OGRGeometry *geometry = nullptr;
+        OGRGeometryFactory::createFromWkt("POLYGON ((400000 5500000, 400100 5500000, 400100 5500100, 400000 5500000))",
+                                          &srs, &geometry);
+        feature->SetGeometryDirectly(geometry);
+        ASSERT_EQ(layer->CreateFeature(feature.get()), OGRERR_NONE);
+    };
+    add("43002", "AX_Wald", nullptr);
+    add("43001", "AX_Landwirtschaft", "1010");
+    add("43001", "AX_Landwirtschaft", "1020");
+    add("41009", "AX_Friedhof", nullptr);
+    add("", "AX_Gehoelz", nullptr);
+    dataset.reset();
+    std::vector<std::string> warnings;
+    AtkisData data = readVectorFile(file, warnings);
+    ASSERT_EQ(data.objects.size(), 5u);
+    EXPECT_EQ(data.objects[0].type, 4107);
+    EXPECT_EQ(data.objects[0].typeName, "AX_Wald");
+    EXPECT_EQ(landClass(data.objects[0]), LandClass::Forest);
+    EXPECT_EQ(data.objects[1].type, 4101);
+    EXPECT_EQ(data.objects[2].type, 4102);
+    EXPECT_EQ(data.objects[3].type, 41009) << "a class without an ATKIS-OK successor keeps its code";
+    EXPECT_EQ(landClass(data.objects[3]), LandClass::Other);
+    EXPECT_EQ(data.objects[4].type, 4108) << "the name alone is enough";
+    EXPECT_TRUE(warnings.empty()) << warnings.front();
+}
+
+// CityGML reads through GDAL's GML driver as features without an Objektart: it is refused
+// with what it is instead of giving an empty layer.
+TEST(VectorFile, CityGmlIsNoAtkisLayer) {
+    TempFolder folder;
+    fs::path file = folder.path / "tile.gml";
+    std::FILE *f = std::fopen(file.c_str(), "w");
+    std::fputs(R"(<?xml version="1.0" encoding="UTF-8"?>
+<core:CityModel xmlns:core="http://www.opengis.net/citygml/2.0" xmlns:bldg="http://www.opengis.net/citygml/building/2.0"
+    xmlns:gml="http://www.opengis.net/gml">
+  <core:cityObjectMember><bldg:Building gml:id="b1"><bldg:measuredHeight uom="m">10</bldg:measuredHeight>
+  </bldg:Building></core:cityObjectMember>
+</core:CityModel>
+)",
+               f);
+    std::fclose(f);
+    std::vector<std::string> warnings;
+    try {
+        readVectorFile(file, warnings);
+        FAIL() << "CityGML was read as an ATKIS layer";
+    } catch (const InputError &e) {
+        EXPECT_EQ(std::string(e.what()),
+                  file.string() +
+                      ": is CityGML (3D city models), not an ATKIS file; an ATKIS "
+                      "layer is NAS, EDBS, a Shapefile or a GeoPackage of the "
+                      "Basis-DLM");
+    }
+}
+
 }  // namespace
 }  // namespace veduta

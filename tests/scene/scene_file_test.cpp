@@ -86,6 +86,13 @@ TEST(SceneFile, BadNumberPointsAtTheValue) {
               "s.xml:2:14: '12x' is not an integer (attribute 'spp')");
     EXPECT_EQ(errorOf("<scene>\n<camera fov=\"wide\"/>\n</scene>"),
               "s.xml:2:14: 'wide' is not a number (attribute 'fov')");
+    EXPECT_EQ(errorOf("<scene>\n<camera fov=\"nan\"/>\n</scene>"),
+              "s.xml:2:14: 'nan' is not a number (attribute 'fov')");
+    EXPECT_EQ(errorOf("<scene>\n<camera position=\"0 -1e39 2\"/>\n</scene>"),
+              "s.xml:2:19: '-1e39' is not a number (attribute 'position')");
+    // A camera Embree's bounds cannot hold.
+    EXPECT_EQ(errorOf("<scene>\n<camera position=\"0 -1e19 2\"/>\n</scene>"),
+              "s.xml:2:19: 0 -1e+19 2 lies more than 10,000 km from the scene origin (attribute 'position')");
 }
 
 TEST(SceneFile, UnknownAttributeIsAnError) {
