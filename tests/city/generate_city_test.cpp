@@ -47,9 +47,10 @@ TEST(GenerateCity, ListingTwoOneBecomesLotsBuildingsAndStreets) {
 TEST(GenerateCity, TwoRealFootwaysGiveAStreetSurface) {
     std::optional<std::filesystem::path> file = test::sharedDataFile("osm/two_footways.osm");
     if (!file) GTEST_SKIP() << "../shared/data/osm/two_footways.osm is not there";
-    RenderScene scene = build(fmt::format("<scene version=\"1\"><city file=\"{}\" "
-                                          "rules=\"../rules/gruenderzeit/FacadeStructure.xml\"/></scene>",
-                                          file->string()));
+    RenderScene scene =
+        build(fmt::format("<scene version=\"1\"><city file=\"{}\" "
+                          "rules=\"../rules/gruenderzeit/FacadeStructure.xml\"/></scene>",
+                          file->string()));
     size_t streetTriangles = 0;
     for (const BakedMesh &m : scene.meshes)
         if (m.buildingId == 0) streetTriangles += m.mesh.triangleCount();
