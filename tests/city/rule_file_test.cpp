@@ -307,6 +307,33 @@ TEST(RuleFile, CycleOfRulesIsNamedAtItsFirstRule) {
               "A → B → A");
 }
 
+// Rule files that generators write: a chain of 30,000 rules, each deriving the next, read in
+// time linear in the rules (the fixed point used to take one pass per rule), and the same
+// chain ending in a cycle, which is named at its first rule.
+std::string chain(int rules, const std::string &last) {
+    std::string xml = "<Rulefile name=\"t\">\n";
+    for (int i = 0; i < rules; ++i) {
+        std::string next = i + 1 < rules ? fmt::format("R{}", i + 1) : last;
+        xml += fmt::format(
+            "<Rule><Predecessor>R{}</Predecessor><Rules><Probability value=\"1\"><Symbol>{}</Symbol>"
+            "</Probability></Rules></Rule>\n",
+            i, next);
+    }
+    return xml;
+}
+
+TEST(RuleFile, LongChainsOfRulesAreRead) {
+    RuleSet set = parse(chain(30000, "a.wrl") + "</Rulefile>");
+    EXPECT_EQ(set.rules.size(), 30000u);
+    EXPECT_EQ(errorOf(chain(30000, "X") +
+                      "<Rule><Predecessor>X</Predecessor><Rules><Probability value=\"1\"><Symbol>Y</Symbol>"
+                      "</Probability></Rules></Rule>\n"
+                      "<Rule><Predecessor>Y</Predecessor><Rules><Probability value=\"1\"><Symbol>X</Symbol>"
+                      "</Probability></Rules></Rule>\n</Rulefile>"),
+              "t.xml:30002:1: rule 'X' can never finish: every branch derives a rule that cannot finish, round the "
+              "cycle X → Y → X");
+}
+
 // Bilke's GroundfloorWindowTileChoice (L2040–2050): its only branch has probability 0.5.
 TEST(RuleFile, ProbabilitiesNotSummingToOneAreWarnedAndRenormalised) {
     RuleSet set = parse(R"(<Rulefile name="t">
