@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -40,17 +42,36 @@ void checkPoints(const Footprint &footprint, const FileLoc &loc) {
     const std::vector<Vec2f> &points = footprint.points;
     if (points.size() < 3)
         throw InputError(loc, fmt::format("a footprint needs at least 3 points, not {}", points.size()));
+    if (points.size() > kMaxOutlinePoints)
+        throw InputError(
+            loc,
+            fmt::format("an outline of {} points is more than veduta takes ({})", points.size(), kMaxOutlinePoints));
     for (size_t i = 0; i < points.size(); ++i) {
         if (!std::isfinite(points[i].x) || !std::isfinite(points[i].y)) {
             throw InputError(loc, fmt::format("footprint point {} is not a finite number", i + 1));
         }
-        for (size_t j = 0; j < i; ++j) {
-            if (points[j].x == points[i].x && points[j].y == points[i].y) {
-                throw InputError(
-                    loc,
-                    fmt::format("footprint point {} repeats point {} ({} {})", i + 1, j + 1, points[i].x, points[i].y));
-            }
+    }
+    // Repeated points, found by sorting rather than by comparing every pair; the message names
+    // the later point and the first one it repeats, as a reader counts them.
+    std::vector<uint32_t> order(points.size());
+    for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    auto key = [&](uint32_t i) { return std::tuple(points[i].x, points[i].y, i); };
+    std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return key(a) < key(b); });
+    std::optional<std::pair<uint32_t, uint32_t>> repeat;  // (later, first)
+    size_t group = 0;                                     // where the run of equal points began
+    for (size_t k = 1; k < order.size(); ++k) {
+        uint32_t a = order[k - 1], b = order[k];
+        if (points[a].x != points[b].x || points[a].y != points[b].y) {
+            group = k;
+            continue;
         }
+        if (!repeat || b < repeat->first) repeat = std::pair(b, order[group]);
+    }
+    if (repeat) {
+        Vec2f p = points[repeat->first];
+        throw InputError(loc,
+                         fmt::format("footprint point {} repeats point {} ({} {})", repeat->first + 1,
+                                     repeat->second + 1, p.x, p.y));
     }
 }
 

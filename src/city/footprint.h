@@ -33,6 +33,10 @@ struct Footprint {
     Vec3f outwardNormal(size_t edge) const;
 };
 
+// The most points an outline (footprint, block) may have: far more than any building or
+// block of a real town, and few enough that the checks and cuts stay fast.
+inline constexpr size_t kMaxOutlinePoints = 20000;
+
 // A footprint point at height z.
 inline Vec3f lift(Vec2f p, float z) { return {p.x, p.y, z}; }
 

@@ -65,6 +65,27 @@ TEST(Footprint, InvalidOutlinesAreInputErrorsAtTheirPlace) {
               std::string::npos);
 }
 
+// Outlines of many points: repeats are found without comparing every pair, the first repeat
+// in reading order is the one named, and an outline beyond kMaxOutlinePoints stops at once.
+TEST(Footprint, LargeOutlinesAreCheckedInTimeAndStopAtTheirLimit) {
+    auto circle = [](size_t n) {
+        Footprint f;
+        for (size_t i = 0; i < n; ++i) {
+            double a = 2 * M_PI * double(i) / double(n);
+            f.points.push_back({float(1000 * std::cos(a)), float(1000 * std::sin(a))});
+        }
+        return f;
+    };
+    Footprint many = circle(kMaxOutlinePoints);
+    EXPECT_EQ(inputError(many), "no error");
+    Footprint repeats = circle(1000);
+    repeats.points[700] = repeats.points[3];
+    repeats.points[500] = repeats.points[9];
+    EXPECT_NE(inputError(repeats).find("point 501 repeats point 10"), std::string::npos) << inputError(repeats);
+    EXPECT_EQ(inputError(circle(100000)),
+              "city.xml:4:7: an outline of 100000 points is more than veduta takes (20000)");
+}
+
 TEST(Footprint, TriangulationCoversAnLShapeWithNMinusTwoCounterClockwiseTriangles) {
     std::vector<Vec2f> l{{0, 0}, {24, 0}, {24, 12}, {12, 12}, {12, 24}, {0, 24}};
     std::vector<uint32_t> indices = triangulatePolygon(l);
