@@ -15,7 +15,6 @@ namespace veduta {
 
 namespace {
 
-constexpr double kMaxNodes = 1e9;  // as for one file
 // Tiles must agree in spacing, and their nodes must line up, to this fraction of a spacing.
 constexpr double kAlignTolerance = 0.01;
 
@@ -60,10 +59,10 @@ Dgm mosaic(std::vector<Tile> &tiles, std::vector<std::string> &warnings) {
         east = std::max(east, t.column + t.dgm.grid.columns - 1), north = std::max(north, t.row + t.dgm.grid.rows - 1);
     }
     double columns = double(east - west + 1), rows = double(north - south + 1);
-    if (columns * rows > kMaxNodes)
-        throw InputError(
-            {first.file.string(), 0, 0},
-            fmt::format("the tiles span {} × {} nodes, more than the {:.0e} a DGM may have", columns, rows, kMaxNodes));
+    if (columns * rows > kMaxGridNodes)
+        throw InputError({first.file.string(), 0, 0},
+                         fmt::format("the tiles span {} × {} nodes, more than the {:.0e} a DGM may have", columns, rows,
+                                     kMaxGridNodes));
     Dgm result;
     HeightGrid &grid = result.grid;
     grid.spacing = first.dgm.grid.spacing;

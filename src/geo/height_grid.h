@@ -11,6 +11,13 @@
 
 namespace veduta {
 
+// The most nodes a DGM may have, read from one file or put together from tiles: 4 GB of
+// heights, checked before they are allocated.
+inline constexpr double kMaxGridNodes = 1e9;
+// No height on Earth lies farther from sea level (metres): a height beyond is a broken file,
+// or one in other units.
+inline constexpr double kMaxHeight = 1e5;
+
 struct HeightGrid {
     // Node (0, 0) is the south-west node; column c lies at west + c·spacing, row r at
     // south + r·spacing. Nodes are sample points (pixel centres of a raster), not cells.

@@ -20,7 +20,18 @@ namespace veduta {
 
 namespace {
 
-constexpr double kMaxNodes = 1e9;  // as for XYZ files: 4 GB of heights
+// Heights read as float32 that are no heights: infinities, or values beyond any on Earth
+// (NaN is no data, and stays).
+void checkHeights(const HeightGrid &grid, const FileLoc &loc) {
+    for (size_t i = 0; i < grid.heights.size(); ++i) {
+        float h = grid.heights[i];
+        if (std::isnan(h) || std::abs(h) <= kMaxHeight) continue;
+        size_t column = i % size_t(grid.columns), row = i / size_t(grid.columns);
+        throw InputError(loc,
+                         fmt::format("the height {} at pixel ({}, {}) lies beyond any on Earth (±{} m)", h, column,
+                                     size_t(grid.rows) - 1 - row, kMaxHeight));
+    }
+}
 
 // The EPSG code of the raster's CRS, 0 when it has none or GDAL finds no EPSG code for it
 // (an ESRI .prj names its CRS by a WKT without authority).
@@ -85,10 +96,10 @@ Dgm readRasterGrid(const std::filesystem::path &path) {
     HeightGrid &grid = dgm.grid;
     grid.columns = dataset->GetRasterXSize();
     grid.rows = dataset->GetRasterYSize();
-    if (double(grid.columns) * grid.rows > kMaxNodes)
+    if (double(grid.columns) * grid.rows > kMaxGridNodes)
         throw InputError(loc,
                          fmt::format("the raster has {} × {} pixels, more than the {:.0e} a DGM may have", grid.columns,
-                                     grid.rows, kMaxNodes));
+                                     grid.rows, kMaxGridNodes));
     grid.spacing = dx;
     grid.west = transform[0] + 0.5 * dx;
     // Row 0 of a north-up raster is its north edge; the grid counts from the south.
@@ -109,6 +120,7 @@ Dgm readRasterGrid(const std::filesystem::path &path) {
         for (float &h : grid.heights)
             if (h == marker) h = std::numeric_limits<float>::quiet_NaN();
     }
+    checkHeights(grid, loc);
     dgm.epsg = epsgOf(*dataset);
     return dgm;
 }

@@ -18,8 +18,6 @@ namespace veduta {
 
 namespace {
 
-// Beyond this the grid would not fit in memory anyway (4 GB of heights).
-constexpr double kMaxNodes = 1e9;
 // A point may lie this fraction of a spacing off its node (coordinates rounded in the file).
 constexpr double kGridTolerance = 0.05;
 
@@ -46,6 +44,9 @@ double parseNumber(std::string_view token, const FileLoc &loc, bool isHeight) {
     if (std::isnan(value) && isHeight)
         throw InputError(loc, "the height is NaN; leave out the points that have no height");
     if (!std::isfinite(value)) throw InputError(loc, fmt::format("'{}' is not a finite number", shown(token)));
+    if (isHeight && std::abs(value) > kMaxHeight)
+        throw InputError(loc,
+                         fmt::format("the height {} m lies beyond any on Earth (±{} m)", shown(token), kMaxHeight));
     return value;
 }
 
@@ -161,11 +162,11 @@ HeightGrid emptyGridOver(const GridScan &scan, const std::string &file) {
         throw InputError({file, 0, 0}, "fewer than two points a grid step apart along a row or column");
     double columns = std::round((scan.maxX() - scan.minX()) / scan.spacing()) + 1;
     double rows = std::round((scan.maxY() - scan.minY()) / scan.spacing()) + 1;
-    if (columns * rows > kMaxNodes)
+    if (columns * rows > kMaxGridNodes)
         throw InputError({file, 0, 0},
                          fmt::format("the points span {} × {} nodes of {:.6g} m, more than the {:.0e} "
                                      "a DGM may have",
-                                     columns, rows, scan.spacing(), kMaxNodes));
+                                     columns, rows, scan.spacing(), kMaxGridNodes));
     HeightGrid grid;
     grid.west = scan.minX();
     grid.south = scan.minY();

@@ -204,6 +204,9 @@ TEST_F(DgmFileTest, XyzErrorsNameLineAndColumn) {
     expectError([&] { readDgm(file); }, file.string() + ":2:5: 2 values where a line needs three");
     file = write("long.xyz", "0 0 1\n10 0 1 7\n");
     expectError([&] { readDgm(file); }, file.string() + ":2:8: a fourth value");
+    // A double, but no float: it became infinity and rendered black.
+    file = write("huge.xyz", "0 0 1\n10 0 1e39\n");
+    expectError([&] { readDgm(file); }, file.string() + ":2:6: the height 1e39 m lies beyond any on Earth (±100000 m)");
 }
 
 TEST_F(DgmFileTest, XyzMixedSpacingsAreAnError) {
