@@ -33,6 +33,23 @@ void checkHeights(const HeightGrid &grid, const FileLoc &loc) {
     }
 }
 
+// A text raster holds at least two characters per height (a digit and a separator): one whose
+// header promises more heights than that is refused before the heights are allocated (a
+// 60-byte ASC header would otherwise claim gigabytes).
+void checkTextSize(GDALDataset &dataset, const std::filesystem::path &path, const HeightGrid &grid,
+                   const FileLoc &loc) {
+    std::string driver = dataset.GetDriver() ? dataset.GetDriver()->GetDescription() : "";
+    if (driver != "AAIGrid" && driver != "GRASSASCIIGrid" && driver != "XYZ") return;
+    std::error_code error;
+    double bytes = double(std::filesystem::file_size(path, error));
+    double heights = double(grid.columns) * double(grid.rows);
+    if (!error && heights > bytes / 2)
+        throw InputError(loc,
+                         fmt::format("the header promises {} × {} heights, more than the file's {:.0f} bytes can "
+                                     "hold",
+                                     grid.columns, grid.rows, bytes));
+}
+
 // The EPSG code of the raster's CRS, 0 when it has none or GDAL finds no EPSG code for it
 // (an ESRI .prj names its CRS by a WKT without authority).
 int epsgOf(const GDALDataset &dataset) {
@@ -100,6 +117,7 @@ Dgm readRasterGrid(const std::filesystem::path &path) {
         throw InputError(loc,
                          fmt::format("the raster has {} × {} pixels, more than the {:.0e} a DGM may have", grid.columns,
                                      grid.rows, kMaxGridNodes));
+    checkTextSize(*dataset, path, grid, loc);
     grid.spacing = dx;
     grid.west = transform[0] + 0.5 * dx;
     // Row 0 of a north-up raster is its north edge; the grid counts from the south.

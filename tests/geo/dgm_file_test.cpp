@@ -209,6 +209,14 @@ TEST_F(DgmFileTest, XyzErrorsNameLineAndColumn) {
     expectError([&] { readDgm(file); }, file.string() + ":2:6: the height 1e39 m lies beyond any on Earth (±100000 m)");
 }
 
+// A text raster whose header promises more heights than its bytes can hold is refused before
+// gigabytes are allocated for them.
+TEST_F(DgmFileTest, AnAscHeaderPromisingTooMuchIsRefused) {
+    fs::path file = write("claims.asc", "ncols 30000\nnrows 30000\nxllcorner 0\nyllcorner 0\ncellsize 1\n1 2 3\n");
+    expectError([&] { readDgm(file); },
+                file.string() + ": the header promises 30000 × 30000 heights, more than the file's");
+}
+
 TEST_F(DgmFileTest, XyzMixedSpacingsAreAnError) {
     fs::path file = write("mixed.xyz", "0 0 1\n10 0 1\n20 0 1\n30 0 1\n0 10 1\n5 10 1\n");
     expectError([&] { readDgm(file); },
