@@ -1,7 +1,10 @@
 #include "assembly/build_scene.h"
 
 #include <map>
+#include <new>
 #include <optional>
+#include <stdexcept>
+#include <type_traits>
 #include <string>
 #include <utility>
 
@@ -64,27 +67,47 @@ class SceneAssembler {
         std::vector<CityData> cities;
         std::vector<LocalPolygon> streetAreas;
         for (const CityDesc &city : d_.cities) {
-            cities.push_back(readCity(city, d_.georeference));
+            cities.push_back(within(city.loc, "<city>", [&] { return readCity(city, d_.georeference); }));
             if (!d_.landscape) continue;
             for (LocalPolygon &piece : streetAreaPieces(streetNetworkOf(cities.back())))
                 streetAreas.push_back(std::move(piece));
         }
         std::optional<LandscapeGround> landscape;
         if (d_.landscape) {
-            landscape = generateLandscape(*d_.landscape, seedOf(d_.landscape->seed), d_.georeference, streetAreas,
-                                          builder_, warnings_);
+            landscape = within(d_.landscape->loc, "<landscape>", [&] {
+                return generateLandscape(*d_.landscape, seedOf(d_.landscape->seed), d_.georeference, streetAreas,
+                                         builder_, warnings_);
+            });
         }
         GroundHeight ground = landscape ? landscape->ground : GroundHeight();
-        for (const BuildingGroupDesc &group : d_.buildingGroups)
-            generateBuildings(group, seedOf(group.seed), ground, builder_, warnings_);
+        for (const BuildingGroupDesc &group : d_.buildingGroups) {
+            within(group.loc, "<buildings>",
+                   [&] { generateBuildings(group, seedOf(group.seed), ground, builder_, warnings_); });
+        }
         for (size_t i = 0; i < d_.cities.size(); ++i) {
-            generateCity(d_.cities[i], cities[i], seedOf(d_.cities[i].seed), landscape ? &*landscape : nullptr,
-                         builder_, warnings_);
+            within(d_.cities[i].loc, "<city>", [&] {
+                generateCity(d_.cities[i], cities[i], seedOf(d_.cities[i].seed), landscape ? &*landscape : nullptr,
+                             builder_, warnings_);
+            });
         }
         return std::move(builder_).build();
     }
 
   private:
+    // Runs `make` for the element at `loc`: memory running out there says which element ran
+    // out, rather than a bare std::bad_alloc (exit 3, as every failure that is not the input's).
+    template <typename Make>
+    static std::invoke_result_t<Make> within(const FileLoc &loc, const char *element, Make make) {
+        try {
+            return make();
+        } catch (const std::bad_alloc &) {
+            throw std::runtime_error(
+                fmt::format("{}: memory ran out while building this {}; give the scene less "
+                            "to build, or the machine more memory",
+                            loc.toString(), element));
+        }
+    }
+
     // Where every seed is resolved: a generator's (or the sampler's) own seed from the file,
     // else the scene's.
     uint32_t seedOf(const std::optional<uint32_t> &own) const { return own.value_or(d_.seed); }
