@@ -4,8 +4,8 @@
 #include <new>
 #include <optional>
 #include <stdexcept>
-#include <type_traits>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include <fmt/format.h>
