@@ -3,11 +3,13 @@
 // tree rather than the user's cache. Values already in the environment win.
 #include <cstdlib>
 
+#include "test_paths.h"
+
 namespace {
 
 const bool kEnvironmentSet = [] {
-    setenv("VEDUTA_IMAGE_PLUGIN", VEDUTA_IMAGE_PLUGIN_FILE, 0);
-    setenv("VEDUTA_CACHE_DIR", VEDUTA_TEST_CACHE, 0);
+    setenv("VEDUTA_IMAGE_PLUGIN", veduta::test::imagePluginFile().c_str(), 0);
+    setenv("VEDUTA_CACHE_DIR", veduta::test::textureCache().c_str(), 0);
     return true;
 }();
 

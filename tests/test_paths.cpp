@@ -14,4 +14,14 @@ const std::filesystem::path &testData() {
 
 std::string sourceFile(std::string_view relative) { return (sourceDir() / relative).string(); }
 
+const std::string &imagePluginFile() {
+    static const std::string file = VEDUTA_IMAGE_PLUGIN_FILE;
+    return file;
+}
+
+const std::string &textureCache() {
+    static const std::string dir = VEDUTA_TEST_CACHE;
+    return dir;
+}
+
 }  // namespace veduta::test

@@ -18,4 +18,8 @@ const std::filesystem::path &testData();
 // sourceDir() / relative, as the string that readers taking a file name want.
 std::string sourceFile(std::string_view relative);
 
+// The image plugin the build made, and the build tree's folder for converted textures.
+const std::string &imagePluginFile();
+const std::string &textureCache();
+
 }  // namespace veduta::test

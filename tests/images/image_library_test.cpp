@@ -385,8 +385,8 @@ TEST_F(TexturesTest, ParallelLookupsEqualSerialOnes) {
 }
 
 TEST(ImagePlugin, LoadsFromVedutaImagePlugin) {
-    ScopedEnv plugin("VEDUTA_IMAGE_PLUGIN", VEDUTA_IMAGE_PLUGIN_FILE);
-    EXPECT_EQ(imagePluginPath(), VEDUTA_IMAGE_PLUGIN_FILE);
+    ScopedEnv plugin("VEDUTA_IMAGE_PLUGIN", test::imagePluginFile());
+    EXPECT_EQ(imagePluginPath(), test::imagePluginFile());
     ImageLibrary &library = imageLibrary();
     EXPECT_EQ(&library, &imageLibrary()) << "loaded once";
     std::filesystem::path file =
