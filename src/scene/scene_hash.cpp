@@ -24,7 +24,7 @@ class Hasher {
             word(w);
         }
         uint64_t tail = 0;
-        std::memcpy(&tail, p, size);
+        if (size > 0) std::memcpy(&tail, p, size);  // an empty vector's data() may be null
         word(tail);
     }
     template <typename T>
