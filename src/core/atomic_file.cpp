@@ -101,6 +101,10 @@ OutputSet::~OutputSet() {
             if (!entry.backup.empty()) std::filesystem::remove(entry.backup, ignored);
         } else if (entry.backup.empty()) {
             std::filesystem::remove(entry.file, ignored);
+        } else if (std::filesystem::equivalent(entry.backup, entry.file, ignored)) {
+            // Never replaced. rename() of one hard link over another of the same file does
+            // nothing and leaves both names.
+            std::filesystem::remove(entry.backup, ignored);
         } else {
             std::filesystem::rename(entry.backup, entry.file, ignored);
         }

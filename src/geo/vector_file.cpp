@@ -224,8 +224,8 @@ class VectorReader {
                 object.attributes[name] = value;
             }
         }
-        if (objart) {
-            object.type = objectType(*objart, objartText, object.where);
+        if (objart || objartText) {
+            object.type = objectType(objart.value_or(""), objartText, object.where);
             object.typeName = objartText.value_or("");
         }
         if (object.type == 4101 && isGrassland(object.attributes)) object.type = 4102;

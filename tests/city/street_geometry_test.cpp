@@ -131,7 +131,8 @@ void expectWholeSurface(const StreetNetwork &network, const Mesh &m) {
     ASSERT_EQ(m.triangleMaterials.size(), m.triangleCount());
     float longest = 0, pieces = 0;
     for (const StreetNetwork::Street &s : network.streets) {
-        float ribbon = length(network.nodes[s.to] - network.nodes[s.from]) * s.width;
+        Vec2f a = network.nodes[s.from], b = network.nodes[s.to];
+        float ribbon = std::hypot(b.x - a.x, b.y - a.y) * s.width;
         longest = std::max(longest, ribbon);
         pieces += ribbon + 2 * kPi * s.width * s.width / 4 / std::cos(kPi / kStreetJointSides);
     }

@@ -47,6 +47,18 @@ TEST_F(OutputSetTest, AFailurePartWayLeavesTheFolderAsItWas) {
     EXPECT_EQ(filesInFolder(), 1u) << "no backup or temporary is left";
 }
 
+// The first write fails: the older file was never replaced, and its backup (a second link to
+// it) must go too.
+TEST_F(OutputSetTest, AFailureBeforeTheFirstWriteLeavesNoBackup) {
+    put(exr_, "older image");
+    try {
+        OutputSet outputs({exr_, png_});
+        throw std::runtime_error("the first output failed");
+    } catch (const std::runtime_error &) {}
+    EXPECT_EQ(contents(exr_), "older image");
+    EXPECT_EQ(filesInFolder(), 1u);
+}
+
 TEST_F(OutputSetTest, ACommittedSetKeepsTheNewFiles) {
     put(exr_, "older image");
     {
