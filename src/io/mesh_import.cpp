@@ -4,6 +4,7 @@
 #include <assimp/scene.h>
 #include <fmt/format.h>
 #include <assimp/Importer.hpp>
+#include <cmath>
 
 #include "core/error.h"
 
@@ -18,8 +19,14 @@ Transform toTransform(const aiMatrix4x4 &m) {
 Mesh convert(const aiMesh &in, const std::filesystem::path &file) {
     Mesh m;
     m.positions.reserve(in.mNumVertices);
-    for (unsigned i = 0; i < in.mNumVertices; ++i)
-        m.positions.push_back({in.mVertices[i].x, in.mVertices[i].y, in.mVertices[i].z});
+    for (unsigned i = 0; i < in.mNumVertices; ++i) {
+        const aiVector3D &v = in.mVertices[i];
+        // Embree's BVH build asserts on a bound that is not finite.
+        if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+            throw InputError({file.string()},
+                             fmt::format("vertex {} is not a finite point ({} {} {})", i, v.x, v.y, v.z));
+        m.positions.push_back({v.x, v.y, v.z});
+    }
     if (in.HasNormals()) {
         for (unsigned i = 0; i < in.mNumVertices; ++i)
             m.normals.push_back({in.mNormals[i].x, in.mNormals[i].y, in.mNormals[i].z});
@@ -56,9 +63,11 @@ void collect(const aiScene &scene, const aiNode &node, const Transform &parent, 
 Mesh importMesh(const std::filesystem::path &file) {
     if (!std::filesystem::is_regular_file(file)) throw InputError({file.string()}, "no such mesh file");
     Assimp::Importer importer;
-    // Normals are the file's own; we do not invent smooth normals for faceted models.
-    const aiScene *scene = importer.ReadFile(
-        file.string(), aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
+    // Normals are the file's own; we do not invent smooth normals for faceted models. Assimp
+    // checks what its reader built (face indices, counts) before the other steps use it.
+    const aiScene *scene = importer.ReadFile(file.string(),
+                                             aiProcess_ValidateDataStructure | aiProcess_Triangulate |
+                                                 aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
     if (!scene || !scene->mRootNode || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) {
         throw InputError({file.string()}, std::string("cannot read mesh: ") + importer.GetErrorString());
     }

@@ -122,6 +122,24 @@ TEST(SceneFile, UnreadableMeshFileIsReportedAtTheAttribute) {
     EXPECT_EQ(message.rfind("s.xml:1:20: ", 0), 0u) << message;
 }
 
+// Meshes that would crash Assimp's later steps or Embree's build: a face index past the
+// vertices, a vertex beyond float (Assimp reads 1e39 as infinity).
+TEST(SceneFile, BrokenMeshesAreInputErrors) {
+    test::ScratchFolder folder("broken_meshes");
+    std::filesystem::path index =
+        folder.write("index.ply",
+                     "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                     "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                     "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
+    std::filesystem::path huge = folder.write("huge.obj", "v 0 0 0\nv 1 0 1e39\nv 0 1 0\nf 1 2 3\n");
+    auto errorFor = [](const std::filesystem::path &file) {
+        return test::sceneErrorOf("<scene><mesh file=\"" + file.string() + "\"/></scene>");
+    };
+    EXPECT_NE(errorFor(index).find(index.string() + ": "), std::string::npos) << errorFor(index);
+    EXPECT_NE(errorFor(huge).find(huge.string() + ": vertex 1 is not a finite point (1 0 inf)"), std::string::npos)
+        << errorFor(huge);
+}
+
 TEST(SceneFile, UnknownReferencesNameTheirPlace) {
     EXPECT_EQ(errorOf("<scene>\n<box material=\"gold\"/>\n</scene>"), "s.xml:2:16: unknown material 'gold'");
     EXPECT_EQ(errorOf("<scene>\n<instance prototype=\"tree\"/>\n</scene>"), "s.xml:2:22: unknown prototype 'tree'");
