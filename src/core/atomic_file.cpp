@@ -87,10 +87,22 @@ OutputSet::OutputSet(std::vector<std::filesystem::path> files) {
             // A hard link costs no copy; a file system without links gets a copy.
             entry.backup = siblingName(entry.file, "old");
             std::filesystem::create_hard_link(entry.file, entry.backup, error);
-            if (error)
-                std::filesystem::copy_file(entry.file, entry.backup, std::filesystem::copy_options::overwrite_existing);
+            if (error) copyBackup(entry);
         }
         entries_.push_back(std::move(entry));
+    }
+}
+
+void OutputSet::copyBackup(const Entry &entry) {
+    try {
+        std::filesystem::copy_file(entry.file, entry.backup, std::filesystem::copy_options::overwrite_existing);
+    } catch (...) {
+        // No destructor runs for a set whose constructor throws: its backups go here.
+        std::error_code ignored;
+        std::filesystem::remove(entry.backup, ignored);
+        for (const Entry &made : entries_)
+            if (!made.backup.empty()) std::filesystem::remove(made.backup, ignored);
+        throw;
     }
 }
 

@@ -49,6 +49,10 @@ class OutputSet {
     struct Entry {
         std::filesystem::path file, backup;  // backup empty: there was no older file
     };
+    // The backup as a copy, where the file system has no hard links; a failure removes every
+    // backup made so far before it is rethrown.
+    void copyBackup(const Entry &entry);
+
     std::vector<Entry> entries_;
     bool committed_ = false;
 };
