@@ -4,9 +4,7 @@
 #include <array>
 #include <atomic>
 #include <cctype>
-#include <fstream>
 #include <optional>
-#include <sstream>
 
 #include <cpl_vsi.h>
 #include <fmt/format.h>
@@ -14,6 +12,7 @@
 #include <ogrsf_frmts.h>
 
 #include "core/error.h"
+#include "core/input_file.h"
 #include "io/gdal_guard.h"
 #include "io/gdal_messages.h"
 
@@ -90,10 +89,7 @@ class MemoryCopy {
         static std::atomic<int> counter{0};
         folder_ = fmt::format("/vsimem/veduta_vector_{}", counter++);
         name_ = folder_ + "/" + file.filename().string();
-        std::ifstream in(file, std::ios::binary);
-        std::ostringstream bytes;
-        bytes << in.rdbuf();
-        bytes_ = bytes.str();
+        bytes_ = readInputFile(file);
         VSIFCloseL(VSIFileFromMemBuffer(name_.c_str(), reinterpret_cast<GByte *>(bytes_.data()),
                                         vsi_l_offset(bytes_.size()), FALSE));
     }
