@@ -1,12 +1,11 @@
 #include "app/display_options.h"
 #include "app/number_option.h"
 
-#include <algorithm>
-#include <cctype>
 #include <filesystem>
 
 #include <fmt/format.h>
 
+#include "core/file_extension.h"
 #include "io/output_files.h"
 
 namespace veduta {
@@ -14,9 +13,7 @@ namespace veduta {
 namespace {
 
 std::string checkDisplayImageFile(const std::string &text) {
-    std::string extension = std::filesystem::path(text).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
+    std::string extension = lowercaseExtension(text);
     for (const char *known : {".png", ".jpg", ".jpeg", ".tif", ".tiff"}) {
         if (extension == known) return {};
     }

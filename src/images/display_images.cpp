@@ -9,6 +9,7 @@
 #include <fmt/ranges.h>
 
 #include "core/error.h"
+#include "core/file_extension.h"
 #include "images/image_files.h"
 
 namespace veduta {

@@ -1,7 +1,6 @@
 #include "images/image_files.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -13,6 +12,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/file_extension.h"
 #include "core/input_file.h"
 
 namespace veduta {
@@ -53,13 +53,6 @@ std::string knownSpace(const std::filesystem::path &file, const std::string &nam
 }
 
 }  // namespace
-
-std::string lowercaseExtension(const std::filesystem::path &file) {
-    std::string extension = file.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
-    return extension;
-}
 
 OIIO::ImageSpec readImageSpec(const std::filesystem::path &file) { return openImage(file)->spec(); }
 

@@ -35,7 +35,4 @@ void writeImageFile(const std::filesystem::path &file, const Image &image, const
 // all; throws std::runtime_error naming the file when it cannot be written.
 void writeEncodedImage(const std::filesystem::path &file, const Image &encoded, OIIO::ImageSpec spec);
 
-// The file's extension in lower case, with its dot.
-std::string lowercaseExtension(const std::filesystem::path &file);
-
 }  // namespace veduta

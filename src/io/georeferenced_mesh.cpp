@@ -1,6 +1,5 @@
 #include "io/georeferenced_mesh.h"
 
-#include <cctype>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -13,6 +12,7 @@
 #include <tiny_obj_loader.h>
 
 #include "core/error.h"
+#include "core/file_extension.h"
 #include "io/map_mesh.h"
 #include "io/ply_file.h"
 
@@ -140,8 +140,7 @@ Mesh place(const MapMesh &in, const MapProjection &projection, const std::filesy
 
 Mesh importGeoreferencedMesh(const std::filesystem::path &file, const MapProjection &projection) {
     if (!std::filesystem::is_regular_file(file)) throw InputError({file.string()}, "no such mesh file");
-    std::string extension = file.extension().string();
-    for (char &c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    std::string extension = lowercaseExtension(file);
     if (extension == ".obj") return place(readObj(file), projection, file);
     if (extension == ".ply") return place(readPlyFile(file), projection, file);
     throw InputError({file.string()},

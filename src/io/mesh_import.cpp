@@ -7,6 +7,8 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/file_extension.h"
+#include "io/ply_file.h"
 
 namespace veduta {
 
@@ -58,10 +60,33 @@ void collect(const aiScene &scene, const aiNode &node, const Transform &parent, 
     for (unsigned i = 0; i < node.mNumChildren; ++i) collect(scene, *node.mChildren[i], toWorld, file, out);
 }
 
+// A PLY file as read by veduta's own reader, in the file's coordinates.
+Mesh toMesh(const MapMesh &in, const std::filesystem::path &file) {
+    if (in.indices.empty()) throw InputError({file.string()}, "mesh file holds no triangles");
+    Mesh mesh;
+    mesh.positions.reserve(in.positions.size());
+    for (size_t i = 0; i < in.positions.size(); ++i) {
+        Vec3f p{float(in.positions[i].x), float(in.positions[i].y), float(in.positions[i].z)};
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+            throw InputError({file.string()},
+                             fmt::format("vertex {} is not a finite point in single precision ({} {} {})", i,
+                                         in.positions[i].x, in.positions[i].y, in.positions[i].z));
+        mesh.positions.push_back(p);
+    }
+    mesh.normals = in.normals;
+    mesh.uvs = in.uvs;
+    mesh.indices = in.indices;
+    mesh.setMaterial(0);
+    return mesh;
+}
+
 }  // namespace
 
 Mesh importMesh(const std::filesystem::path &file) {
     if (!std::filesystem::is_regular_file(file)) throw InputError({file.string()}, "no such mesh file");
+    // Assimp's PLY reader loops for ever on a malformed header line ("elemen 0") or a cut
+    // body; veduta's own reader (io/ply_file.h) names the line instead.
+    if (lowercaseExtension(file) == ".ply") return toMesh(readPlyFile(file), file);
     Assimp::Importer importer;
     // Normals are the file's own; we do not invent smooth normals for faceted models. Assimp
     // checks what its reader built (face indices, counts) before the other steps use it.

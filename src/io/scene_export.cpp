@@ -1,7 +1,5 @@
 #include "io/scene_export.h"
 
-#include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -18,6 +16,7 @@
 
 #include "core/atomic_file.h"
 #include "core/axes.h"
+#include "core/file_extension.h"
 
 namespace veduta {
 
@@ -311,9 +310,7 @@ size_t writeAllOrNothing(const aiExportDataBlob &blob, const std::filesystem::pa
 }  // namespace
 
 std::optional<ExportFormat> exportFormatForPath(const std::filesystem::path &path) {
-    std::string extension = path.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
+    std::string extension = lowercaseExtension(path);
     if (extension == ".obj") return ExportFormat::Obj;
     if (extension == ".gltf") return ExportFormat::Gltf;
     if (extension == ".glb") return ExportFormat::Glb;

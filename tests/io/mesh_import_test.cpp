@@ -1,0 +1,65 @@
+// importMesh on files others wrote: PLY goes through veduta's own reader (Assimp's loops for
+// ever on some broken headers and cut bodies), the rest through Assimp, and every failure is an
+// InputError naming the file, at once.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <fstream>
+#include <iterator>
+
+#include "input_error.h"
+#include "io/mesh_import.h"
+#include "test_paths.h"
+#include "test_scenes.h"
+
+namespace veduta {
+namespace {
+
+const std::string kQuadHeader =
+    "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+    "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+const std::string kQuadBody = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n";
+
+class MeshImport : public testing::Test {
+  protected:
+    test::ScratchFolder folder_{"mesh_import"};
+};
+
+TEST_F(MeshImport, PlyQuadBecomesTwoTriangles) {
+    Mesh mesh = importMesh(folder_.write("quad.PLY", kQuadHeader + kQuadBody));
+    EXPECT_EQ(mesh.vertexCount(), 4u);
+    EXPECT_EQ(mesh.triangleCount(), 2u);
+    EXPECT_EQ(mesh.triangleMaterials.size(), 2u);
+}
+
+// The input on which Assimp's PLY parser never returned (found by fuzz/mesh_ply).
+TEST_F(MeshImport, PlyWithAMisspeltHeaderLineIsRefusedAtOnce) {
+    std::ifstream in(test::sourceFile("fuzz/regressions/mesh_ply/misspelt_element_loops_assimp.ply"), std::ios::binary);
+    std::string text((std::istreambuf_iterator<char>(in)), {});
+    ASSERT_FALSE(text.empty());
+    auto file = folder_.write("misspelt.ply", text);
+    auto start = std::chrono::steady_clock::now();
+    std::string error = test::inputErrorOf([&] { importMesh(file); });
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+    EXPECT_EQ(error.rfind(file.string() + ":8: ", 0), 0u) << error;
+}
+
+TEST_F(MeshImport, CutPlyIsRefused) {
+    std::string whole = kQuadHeader + kQuadBody;
+    auto file = folder_.write("cut.ply", whole.substr(0, whole.size() - 8));
+    std::string error = test::inputErrorOf([&] { importMesh(file); });
+    EXPECT_EQ(error.rfind(file.string() + ":", 0), 0u) << error;
+}
+
+TEST_F(MeshImport, PlyVertexBeyondSinglePrecisionIsRefused) {
+    std::string body = "0 0 0\n1e39 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n";
+    std::string header = kQuadHeader;
+    for (size_t at = header.find("float"); at != std::string::npos; at = header.find("float", at))
+        header.replace(at, 5, "double");
+    auto file = folder_.write("far.ply", header + body);
+    EXPECT_EQ(test::inputErrorOf([&] { importMesh(file); }),
+              file.string() + ": vertex 1 is not a finite point in single precision (1e+39 0 0)");
+}
+
+}  // namespace
+}  // namespace veduta
