@@ -10,6 +10,8 @@ macro(veduta_require found package)
   endif()
 endmacro()
 
+find_package(Threads REQUIRED)
+
 find_package(embree 3 QUIET)
 veduta_require(embree_FOUND libembree-dev)
 

@@ -239,6 +239,7 @@ OsmContent readOsmContent(const std::filesystem::path &file, std::vector<std::st
     const char *openOptions[] = {configOption.c_str(), "USE_CUSTOM_INDEXING=NO", nullptr};
     OsmContent content;
     {
+        GdalDeadline deadline(file);
         GDALDatasetUniquePtr dataset(GDALDataset::Open(file.c_str(), GDAL_OF_VECTOR, drivers, openOptions, nullptr));
         if (!dataset) {
             std::string detail = messages.failures.empty() ? "" : fmt::format(" ({})", messages.failures.front());

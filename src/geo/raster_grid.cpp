@@ -93,6 +93,7 @@ Dgm readRasterGrid(const std::filesystem::path &path) {
     registerGdalDrivers();
     FileLoc loc{path.string(), 0, 0};
     GdalMessages messages;
+    GdalDeadline deadline(path);
     GDALDatasetUniquePtr dataset(
         GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
     if (!dataset) throw InputError(loc, "GDAL cannot read this as a raster" + messages.detail());

@@ -315,6 +315,7 @@ AtkisData readVectorFile(const std::filesystem::path &path, std::vector<std::str
     std::string openName = copy ? copy->name() : path.string();
     AtkisData data;
     {
+        GdalDeadline deadline(path);
         GDALDatasetUniquePtr dataset(GDALDataset::Open(openName.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
         if (!dataset) {
             std::string detail = messages.failures.empty() ? "" : fmt::format(" ({})", messages.failures.front());

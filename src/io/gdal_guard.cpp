@@ -1,5 +1,7 @@
 #include "io/gdal_guard.h"
 
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <string>
 #include <string_view>
@@ -77,6 +79,38 @@ void checkFileForGdal(const std::filesystem::path &file) {
                      "the XML file has a document type declaration (<!DOCTYPE>); its entities could expand "
                      "without bound, so veduta does not give it to GDAL (NAS, GML and OSM files have none: "
                      "remove it)");
+}
+
+std::chrono::milliseconds gdalTimeLimit() {
+    if (const char *text = std::getenv("VEDUTA_GDAL_TIME_LIMIT")) {
+        char *end = nullptr;
+        double seconds = std::strtod(text, &end);
+        if (end != text && *end == '\0' && seconds > 0 && seconds < 1e9)
+            return std::chrono::milliseconds(int64_t(seconds * 1000));
+    }
+    return std::chrono::seconds(300);
+}
+
+GdalDeadline::GdalDeadline(const std::filesystem::path &file, std::chrono::milliseconds limit) {
+    watch_ = std::thread([this, name = file.string(), limit] {
+        std::unique_lock lock(mutex_);
+        if (finished_.wait_for(lock, limit, [this] { return done_; })) return;
+        std::fprintf(stderr,
+                     "veduta: %s: GDAL has read this file for %g s without finishing; giving up (a damaged or "
+                     "hostile file? VEDUTA_GDAL_TIME_LIMIT sets the limit in seconds)\n",
+                     name.c_str(), double(limit.count()) / 1000);
+        std::fflush(stderr);
+        std::_Exit(1);
+    });
+}
+
+GdalDeadline::~GdalDeadline() {
+    {
+        std::lock_guard lock(mutex_);
+        done_ = true;
+    }
+    finished_.notify_one();
+    watch_.join();
 }
 
 }  // namespace veduta

@@ -1,9 +1,13 @@
 // Nothing that could make GDAL run away reaches it: XML with a document type declaration (the
 // "billion laughs" of GDAL's own NAS tests, built here), directories and devices. Every reader
-// that hands files to GDAL refuses them with the file's name.
+// that hands files to GDAL refuses them with the file's name. A read that GDAL does not finish
+// in time ends the program with a message naming the file.
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <cstdlib>
 #include <string>
+#include <thread>
 
 #include "city/osm_import.h"
 #include "geo/raster_grid.h"
@@ -75,6 +79,36 @@ TEST_F(GdalGuard, DirectoriesDevicesAndMissingFilesAreRefused) {
     EXPECT_EQ(test::inputErrorOf([&] { readVectorFile("/dev/zero", warnings); }), "/dev/zero" + notAFile);
     EXPECT_EQ(test::inputErrorOf([&] { checkFileForGdal(folder_.path() / "missing.tif"); }),
               (folder_.path() / "missing.tif").string() + ": cannot open file");
+}
+
+TEST(GdalDeadline, AReadPastTheLimitEndsTheProgramNamingTheFile) {
+    GTEST_FLAG_SET(death_test_style, "threadsafe");
+    using namespace std::chrono_literals;
+    EXPECT_EXIT(
+        {
+            GdalDeadline deadline("slow.xml", 50ms);
+            std::this_thread::sleep_for(10s);
+        },
+        testing::ExitedWithCode(1), "veduta: slow.xml: GDAL has read this file for 0.05 s without finishing");
+}
+
+TEST(GdalDeadline, AReadWithinTheLimitGoesOnAtOnce) {
+    auto start = std::chrono::steady_clock::now();
+    { GdalDeadline deadline("quick.xml", std::chrono::seconds(60)); }
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+}
+
+TEST(GdalDeadline, TheLimitComesFromTheEnvironment) {
+    using std::chrono::milliseconds;
+    unsetenv("VEDUTA_GDAL_TIME_LIMIT");
+    EXPECT_EQ(gdalTimeLimit(), milliseconds(300'000));
+    setenv("VEDUTA_GDAL_TIME_LIMIT", "2.5", 1);
+    EXPECT_EQ(gdalTimeLimit(), milliseconds(2500));
+    for (const char *bad : {"", "ten", "-1", "0", "5s", "nan"}) {
+        setenv("VEDUTA_GDAL_TIME_LIMIT", bad, 1);
+        EXPECT_EQ(gdalTimeLimit(), milliseconds(300'000)) << bad;
+    }
+    unsetenv("VEDUTA_GDAL_TIME_LIMIT");
 }
 
 }  // namespace
