@@ -2,7 +2,8 @@
 # veduta set-up on Debian 12: installs the Debian packages that are missing, builds, and then
 #   ./setup.sh         renders the built-in default scene to renders/default.exr and .png
 #   ./setup.sh test    builds with the tests and runs the whole suite through ctest, then the
-#                      unit tests again under AddressSanitizer + UBSan (the sanitize preset)
+#                      unit tests again under AddressSanitizer + UBSan (the sanitize preset),
+#                      then every fuzz target for 20 s on its corpus and regression files
 #   ./setup.sh stills  renders the publication stills of every example scene to renders/stills/
 # Run it as root or as a user who may use sudo (only apt-get needs it).
 set -euo pipefail
@@ -15,7 +16,7 @@ case "$mode" in
 esac
 
 packages=(
-    cmake g++ make pkg-config ccache time clang-format
+    cmake g++ make pkg-config ccache time clang-format clang libclang-rt-14-dev
     libembree-dev libopenimageio-dev openimageio-tools libopenexr-dev libopencolorio-dev opencolorio-tools
     libgeographiclib-dev libcgal-dev libgdal-dev libtbb-dev libpugixml-dev libcli11-dev
     libgtest-dev libbenchmark-dev libspdlog-dev libfmt-dev libassimp-dev libtinyobjloader-dev libboost-dev libpng-dev zlib1g-dev libosmesa6-dev
@@ -58,4 +59,10 @@ else
         ctest --preset "$preset" -j "$jobs"
         echo "setup: $preset preset built in $((built - start)) s, tested in $((SECONDS - built)) s"
     done
+    start=$SECONDS
+    cmake --preset fuzz
+    cmake --build --preset fuzz -j "$jobs"
+    built=$SECONDS
+    fuzz/run_fuzzers.sh 20
+    echo "setup: fuzz preset built in $((built - start)) s, fuzzed in $((SECONDS - built)) s"
 fi

@@ -5,7 +5,7 @@ set -euo pipefail
 root=${1:?usage: format_check.sh ROOT}
 command -v clang-format >/dev/null || { echo "clang-format is not installed (Debian: clang-format)"; exit 77; }
 cd "$root"
-mapfile -t files < <(find src tests bench -name '*.h' -o -name '*.cpp' | sort)
+mapfile -t files < <(find src tests bench fuzz -name '*.h' -o -name '*.cpp' | sort)
 # One clang-format per batch of files, a batch per core; each finding starts "file:line:col:".
 status=0
 report=$(printf '%s\0' "${files[@]}" | xargs -0 -n 40 -P "$(nproc)" clang-format --dry-run --Werror 2>&1 >/dev/null) ||

@@ -305,7 +305,7 @@ class LandscapeBuilder {
                 {std::move(ring), LandClass::CityStreet, kCityStreetOwner, fmt::format("city street area {}", i)});
             for (size_t k = 0; k < streetAreas_[i].size(); ++k) {
                 Vec2d a = streetAreas_[i][k], b = streetAreas_[i][(k + 1) % streetAreas_[i].size()];
-                streetClearance_.add({Vec2f(float(a.x), float(a.y)), Vec2f(float(b.x), float(b.y))}, kTreeClearance);
+                streetClearance_.add({Vec2f{float(a.x), float(a.y)}, Vec2f{float(b.x), float(b.y)}}, kTreeClearance);
             }
         }
         Mesh mesh;
