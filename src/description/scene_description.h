@@ -156,6 +156,11 @@ struct DataFileDesc {
     int epsg = 0;  // 0: the scene's georeference CRS
 };
 
+// How many rings from the nearest height a <landscape nodata="fill"> fills by default: gaps of
+// up to about 16 nodes across (bridges and buildings cut out of a DGM1, a missing tile row),
+// not the margin of a tile whose data covers half its raster.
+inline constexpr int kDefaultFillDistance = 8;
+
 // A <landscape> element: terrain from DGM tiles, with ATKIS layers draped on it and trees in
 // its forests (docs/terrain.md). Needs the scene's <georeference>, whose origin is the local
 // frame's.
@@ -163,8 +168,10 @@ struct LandscapeDesc {
     FileLoc loc;
     std::vector<DataFileDesc> dgm;     // tiles of one grid, mosaicked
     std::vector<DataFileDesc> layers;  // ATKIS: EDBS, NAS, Shapefile, GeoPackage, GeoJSON …
-    bool fillNoData = true;            // nodata="fill" (a warning) or "cut" (holes stay open)
-    float simplify = 0;                // the largest height error of a simplified mesh; 0: full resolution
+    // nodata="fill": holes within this many nodes of a height are filled (a warning), farther
+    // ones cut; nodata="cut": 0, every hole stays open.
+    int fillDistance = kDefaultFillDistance;
+    float simplify = 0;  // the largest height error of a simplified mesh; 0: full resolution
     bool trees = true;
     uint32_t treeBudget = 500000;  // more trees than this is an error
     std::optional<uint32_t> seed;  // with each object's identity, every random choice; unset: the scene's

@@ -366,7 +366,11 @@ class SceneFileReader {
         std::string nodata = e.string("nodata", "fill");
         if (nodata != "fill" && nodata != "cut")
             e.failAt("nodata", fmt::format("nodata is 'fill' or 'cut', not '{}'", nodata));
-        land.fillNoData = nodata == "fill";
+        land.fillDistance = e.integer("fill_distance", kDefaultFillDistance, 1, 1 << 20);
+        if (nodata == "cut") {
+            if (e.has("fill_distance")) e.failAt("fill_distance", "fill_distance needs nodata=\"fill\"");
+            land.fillDistance = 0;
+        }
         land.simplify = e.number("simplify", 0, 0, 1000);
         land.trees = e.boolean("trees", true);
         land.treeBudget = e.unsignedInteger("tree_budget", land.treeBudget);

@@ -104,16 +104,30 @@ void applyPolicy(Dgm &dgm, NoDataPolicy noData, const std::filesystem::path &fir
     size_t missing = countNoData(dgm.grid);
     if (missing == dgm.grid.heights.size()) throw InputError({first.string(), 0, 0}, "the DGM has no height at all");
     if (missing == 0) return;
-    if (noData == NoDataPolicy::Fill) {
-        fillNoData(dgm.grid);
-        warnings.push_back(fmt::format("{}: {} of {} DGM nodes had no data and were filled from their neighbours",
-                                       first.string(), missing, dgm.grid.heights.size()));
-    } else {
+    const size_t nodes = dgm.grid.heights.size();
+    if (noData.fillDistance == 0) {
         warnings.push_back(
-            fmt::format("{}: {} of {} DGM nodes have no data; the terrain leaves out the cells around "
-                        "them",
-                        first.string(), missing, dgm.grid.heights.size()));
+            fmt::format("{}: {} of {} DGM nodes have no data; the terrain leaves out the cells around them",
+                        first.string(), missing, nodes));
+        return;
     }
+    NoDataFill fill = fillNoData(dgm.grid, noData.fillDistance);
+    if (fill.cut == 0) {
+        warnings.push_back(fmt::format("{}: {} of {} DGM nodes had no data and were filled from their neighbours",
+                                       first.string(), missing, nodes));
+        return;
+    }
+    std::string filled = fill.filled == 0 ? ""
+                                          : fmt::format(
+                                                "{} in holes within {} nodes of a height were filled from "
+                                                "their neighbours, ",
+                                                fill.filled, noData.fillDistance);
+    warnings.push_back(
+        fmt::format("{}: {} of {} DGM nodes had no data: {}{} in {} hole{} reaching farther than {} "
+                    "nodes from any height are cut, not made up (the terrain leaves out the cells "
+                    "around them; <landscape fill_distance> fills farther)",
+                    first.string(), missing, nodes, filled, fill.cut, fill.cutHoles, fill.cutHoles == 1 ? "" : "s",
+                    noData.fillDistance));
 }
 
 }  // namespace

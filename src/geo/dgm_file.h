@@ -18,10 +18,11 @@ struct Dgm {
     int epsg = 0;
 };
 
-// What to do with nodes that have no data (NaN) after the tiles are put together.
-enum class NoDataPolicy {
-    Fill,  // fill them from their neighbours (fillNoData, no_data_fill.h)
-    Cut,   // leave them NaN: the terrain mesh leaves out the cells around them
+// What to do with nodes that have no data (NaN) after the tiles are put together: the holes
+// within `fillDistance` rings of a height are filled from their neighbours (fillNoData,
+// no_data_fill.h); the rest stay NaN, and the terrain mesh leaves out the cells around them.
+struct NoDataPolicy {
+    int fillDistance = 0;  // 0: fill nothing (nodata="cut")
 };
 
 // One file. XYZ is recognised by its content (the first line that is not blank or a comment
@@ -33,7 +34,7 @@ Dgm readDgm(const std::filesystem::path &file);
 // spacing and their nodes must line up (an error names both files); where tiles overlap the
 // first in `files` wins, and a warning counts the nodes where a later tile disagrees.
 // Then `noData` decides about the nodes no tile covers or has data for (a warning counts
-// them). Tiles with two different EPSG codes are an error; the result has the one named.
+// what was filled and what was cut). Tiles with two different EPSG codes are an error; the result has the one named.
 Dgm readDgmTiles(const std::vector<std::filesystem::path> &files, NoDataPolicy noData,
                  std::vector<std::string> &warnings);
 

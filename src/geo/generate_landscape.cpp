@@ -69,7 +69,7 @@ int dataEpsg(const DataFileDesc &d, int fileEpsg, int sceneEpsg) {
 HeightGrid readTerrain(const LandscapeDesc &land, int sceneEpsg, std::vector<std::string> &warnings) {
     std::vector<std::filesystem::path> files;
     for (const DataFileDesc &d : land.dgm) files.push_back(d.file);
-    Dgm dgm = readDgmTiles(files, land.fillNoData ? NoDataPolicy::Fill : NoDataPolicy::Cut, warnings);
+    Dgm dgm = readDgmTiles(files, NoDataPolicy{land.fillDistance}, warnings);
     const DataFileDesc &first = land.dgm.front();
     int epsg = dataEpsg(first, dgm.epsg, sceneEpsg);
     if (epsg != sceneEpsg) {

@@ -268,8 +268,7 @@ TEST_F(DgmFileTest, TilesMosaic) {
         for (int c = 0; c < 5; ++c)
             west.heights.push_back(whole.text(c, r)), east.heights.push_back(whole.text(c + 4, r));
     std::vector<std::string> warnings;
-    Dgm mosaic =
-        readDgmTiles({writeXyz("east.xyz", east), writeGeoTiff("west.tif", west)}, NoDataPolicy::Cut, warnings);
+    Dgm mosaic = readDgmTiles({writeXyz("east.xyz", east), writeGeoTiff("west.tif", west)}, NoDataPolicy{0}, warnings);
     EXPECT_TRUE(warnings.empty());
     HeightGrid expected = readDgm(writeXyz("whole.xyz", whole)).grid;
     expectSameGrid(mosaic.grid, expected, 1e-6);
@@ -284,12 +283,12 @@ TEST_F(DgmFileTest, TilesMustLineUp) {
     std::vector<std::string> warnings;
     expectError(
         [&] {
-            readDgmTiles({fa, fb}, NoDataPolicy::Cut, warnings);
+            readDgmTiles({fa, fb}, NoDataPolicy{0}, warnings);
         },
         fb.string() + ": the nodes are off the nodes of " + fa.string() + " by 0.5000 m east");
     expectError(
         [&] {
-            readDgmTiles({fa, fc}, NoDataPolicy::Cut, warnings);
+            readDgmTiles({fa, fc}, NoDataPolicy{0}, warnings);
         },
         fc.string() + ": the grid spacing 1 m differs from the 2 m of " + fa.string());
 }
@@ -300,7 +299,7 @@ TEST_F(DgmFileTest, OverlapsKeepTheFirstTile) {
     b.heights[1] = "601.000";
     std::vector<std::string> warnings;
     fs::path fb = writeAsc("b.asc", b);
-    Dgm dgm = readDgmTiles({writeXyz("a.xyz", a), fb}, NoDataPolicy::Cut, warnings);
+    Dgm dgm = readDgmTiles({writeXyz("a.xyz", a), fb}, NoDataPolicy{0}, warnings);
     EXPECT_TRUE(sameBits(dgm.grid.node(0, 0), a.value(0, 0)));
     // The hole of tile a is a hole of b too; only the two changed nodes disagree.
     ASSERT_EQ(warnings.size(), 2u);
@@ -313,10 +312,10 @@ TEST_F(DgmFileTest, NoDataPolicies) {
     SmallDgm d;
     fs::path file = writeXyz("hole.xyz", d);
     std::vector<std::string> warnings;
-    Dgm cut = readDgmTiles({file}, NoDataPolicy::Cut, warnings);
+    Dgm cut = readDgmTiles({file}, NoDataPolicy{0}, warnings);
     EXPECT_TRUE(std::isnan(cut.grid.node(1, 2)));
     warnings.clear();
-    Dgm filled = readDgmTiles({file}, NoDataPolicy::Fill, warnings);
+    Dgm filled = readDgmTiles({file}, NoDataPolicy{8}, warnings);
     ASSERT_EQ(warnings.size(), 1u);
     EXPECT_NE(warnings[0].find("1 of 20 DGM nodes had no data and were filled"), std::string::npos) << warnings[0];
     // The heights are a plane (to the 3 decimals), so the mean of the 8 neighbours is on it.
@@ -324,16 +323,60 @@ TEST_F(DgmFileTest, NoDataPolicies) {
     EXPECT_NEAR(filled.grid.node(1, 2), plane, 2e-3);
 }
 
-TEST(NoDataFill, FillsLargeHolesRingByRing) {
+// A 40 × 40 grid of 7.5 m with a 30 × 30 hole against its west edge (15 rings deep) and, when
+// asked, a 3 × 3 hole (2 rings deep) in its north-east.
+HeightGrid gridWithHoles(bool smallHole) {
     HeightGrid grid;
     grid.columns = grid.rows = 40;
     grid.spacing = 1;
     grid.heights.assign(1600, 7.5f);
     for (int r = 5; r < 35; ++r)
         for (int c = 0; c < 30; ++c) grid.node(c, r) = NAN;
-    EXPECT_EQ(fillNoData(grid), 900u);
+    if (smallHole)
+        for (int r = 35; r < 38; ++r)
+            for (int c = 34; c < 37; ++c) grid.node(c, r) = NAN;
+    return grid;
+}
+
+TEST(NoDataFill, FillsLargeHolesRingByRingWhenAllowedTo) {
+    HeightGrid grid = gridWithHoles(false);
+    NoDataFill fill = fillNoData(grid, 15);
+    EXPECT_EQ(fill.filled, 900u);
+    EXPECT_EQ(fill.cut, 0u);
     EXPECT_EQ(countNoData(grid), 0u);
     for (float h : grid.heights) ASSERT_EQ(h, 7.5f);
+}
+
+TEST(NoDataFill, AHoleReachingFartherIsCutWhole) {
+    HeightGrid grid = gridWithHoles(true);
+    NoDataFill fill = fillNoData(grid, 14);
+    EXPECT_EQ(fill.filled, 9u);
+    EXPECT_EQ(fill.cut, 900u);
+    EXPECT_EQ(fill.cutHoles, 1u);
+    EXPECT_EQ(countNoData(grid), 900u);
+    for (int r = 5; r < 35; ++r)
+        for (int c = 0; c < 30; ++c) ASSERT_TRUE(std::isnan(grid.node(c, r))) << c << " " << r;
+    EXPECT_EQ(grid.node(35, 36), 7.5f);
+    EXPECT_EQ(grid.node(30, 20), 7.5f);
+}
+
+TEST_F(DgmFileTest, TheDefaultFillCutsWhatItWouldMakeUp) {
+    HeightGrid grid = gridWithHoles(true);
+    SmallDgm d;
+    d.columns = grid.columns, d.rows = grid.rows;
+    d.heights.clear();
+    for (float h : grid.heights) d.heights.push_back(std::isnan(h) ? "" : fmt::format("{:.3f}", h));
+    fs::path file = writeXyz("holes.xyz", d);
+    std::vector<std::string> warnings;
+    Dgm dgm = readDgmTiles({file}, NoDataPolicy{8}, warnings);
+    EXPECT_EQ(countNoData(dgm.grid), 900u);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0],
+              file.string() +
+                  ": 909 of 1600 DGM nodes had no data: 9 in holes within 8 nodes of a height were "
+                  "filled from their neighbours, 900 in 1 hole reaching farther than 8 nodes from any "
+                  "height are cut, not made up (the terrain leaves out the cells around them; "
+                  "<landscape fill_distance> fills farther)");
 }
 
 // The window of dem.tif that dem_window.xyz and dem_window.asc were cut from (MANIFEST.md).

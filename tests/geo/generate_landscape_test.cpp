@@ -100,6 +100,14 @@ TEST_F(Landscape, ADgmInAnotherCrsIsAnError) {
 TEST_F(Landscape, BadElementsAndAttributesAreErrorsAtTheirPlace) {
     EXPECT_EQ(test::inputErrorOf([&] { scene("<landscape nodata=\"drop\"><dgm file=\"dgm.asc\"/></landscape>\n"); }),
               "test.xml:3:20: nodata is 'fill' or 'cut', not 'drop'");
+    EXPECT_EQ(test::inputErrorOf([&] {
+                  scene("<landscape nodata=\"cut\" fill_distance=\"4\"><dgm file=\"dgm.asc\"/></landscape>\n");
+              }),
+              "test.xml:3:40: fill_distance needs nodata=\"fill\"");
+    EXPECT_EQ(scene("<landscape fill_distance=\"40\"><dgm file=\"dgm.asc\"/></landscape>\n").landscape->fillDistance,
+              40);
+    EXPECT_EQ(scene("<landscape><dgm file=\"dgm.asc\"/></landscape>\n").landscape->fillDistance, kDefaultFillDistance);
+    EXPECT_EQ(scene("<landscape nodata=\"cut\"><dgm file=\"dgm.asc\"/></landscape>\n").landscape->fillDistance, 0);
     EXPECT_EQ(test::inputErrorOf([&] { scene("<landscape/>\n"); }),
               "test.xml:3:1: a <landscape> needs at least one <dgm file=\"...\"/>");
     EXPECT_EQ(test::inputErrorOf([&] { scene("<landscape><osm file=\"x\"/></landscape>\n"); }),
