@@ -117,6 +117,14 @@ std::string_view atkisTypeName(int type) {
 }
 
 LandClass landClass(const AtkisObject &object) {
+    // ALK objects have no ATKIS Objektart (type 0): their Folie says what they are. The two the
+    // EDBS description of LV Sachsen names: Folie 001 Flurstücke, Folie 011 Gebäude.
+    if (object.type == 0 && object.typeName.starts_with("ALK ")) {
+        auto folie = attribute(object, "FOLIE");
+        if (folie == "011") return LandClass::Building;
+        if (folie == "001") return LandClass::Parcel;
+        return LandClass::Other;
+    }
     switch (object.type) {
     case 3101: return LandClass::Road;
     case 3102: return LandClass::Path;
@@ -164,6 +172,8 @@ std::string_view landClassName(LandClass c) {
     case LandClass::TreeRow: return "tree_row";
     case LandClass::Hedge: return "hedge";
     case LandClass::CityStreet: return "city_street";
+    case LandClass::Building: return "building";
+    case LandClass::Parcel: return "parcel";
     }
     return "other";
 }

@@ -33,7 +33,8 @@ struct AtkisData {
 };
 
 // What a renderer makes of an object: the class decides material, draping priority and
-// vegetation. Derived from the Objektart (and for Wald/Gehölz its vegetation attribute).
+// vegetation. Derived from the Objektart (and for Wald/Gehölz its vegetation attribute); for
+// ALK data, whose Objektarten mean other things, from the Folie (docs/atkis.md).
 enum class LandClass {
     Other,
     Road,        // 3101 Straße and the other road codes
@@ -50,6 +51,8 @@ enum class LandClass {
     TreeRow,     // 4202 Baumreihe (a line), 4201 Baum (a point)
     Hedge,       // 4203 Hecke
     CityStreet,  // not ATKIS: a <city>'s streets and sidewalks, cut into the terrain above every area
+    Building,    // ALK Folie 011 Gebäude: a building's footprint, draped as the ground it covers
+    Parcel,      // ALK Folie 001 Flurstücke: cadastral parcels, not land cover; not draped
 };
 
 enum class TreeKind { Broadleaf, Conifer, Mixed };

@@ -501,7 +501,8 @@ void flattenWater(const DrapeGrid &g, const std::vector<DrapeArea> &areas, const
 
 int drapePriority(LandClass landClass) {
     switch (landClass) {
-    case LandClass::CityStreet: return 10;
+    case LandClass::CityStreet: return 11;
+    case LandClass::Building: return 10;
     case LandClass::Water:
     case LandClass::River: return 9;
     case LandClass::Road:
@@ -515,7 +516,8 @@ int drapePriority(LandClass landClass) {
     case LandClass::Hedge: return 4;
     case LandClass::Farmland: return 3;
     case LandClass::Grassland: return 2;
-    case LandClass::Other: return 1;
+    case LandClass::Other:
+    case LandClass::Parcel: return 1;
     }
     return 1;
 }

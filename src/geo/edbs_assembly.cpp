@@ -133,6 +133,7 @@ class Assembler {
         } else {
             a.typeName = fmt::format("ALK {}", object.type);
             a.attributes["OBJART"] = object.type;
+            a.attributes["FOLIE"] = object.folie;  // what ALK objects are classed by (landClass)
         }
         a.geometry = object.geometry == 'P' ? AtkisGeometry::Point
             : object.geometry == 'L'        ? AtkisGeometry::Line

@@ -54,7 +54,9 @@ Material landMaterial(LandClass c) {
         water.reflectivity = Vec3f(0.04f);
         return water;
     }
-    case LandClass::Other: break;
+    case LandClass::Building: return Material::lambertian(name, {0.3f, 0.28f, 0.27f});  // a footprint seen from above
+    case LandClass::Other:
+    case LandClass::Parcel: break;
     }
     return Material::lambertian("land/bare", {0.2f, 0.24f, 0.11f});
 }
@@ -248,7 +250,8 @@ class LandscapeBuilder {
   private:
     // What the landscape makes of an object: an area draped on the terrain, a ribbon, trees.
     static bool drapesAsArea(const AtkisObject &o) {
-        return o.geometry == AtkisGeometry::Area && landClass(o) != LandClass::Other;
+        LandClass c = landClass(o);
+        return o.geometry == AtkisGeometry::Area && c != LandClass::Other && c != LandClass::Parcel;
     }
     static bool drawsAsRibbon(const AtkisObject &o) {
         LandClass c = landClass(o);
@@ -267,6 +270,7 @@ class LandscapeBuilder {
             if (drapesAsArea(o) || drawsAsRibbon(o) || plantsTrees(o)) continue;
             std::string kind = o.type ? std::to_string(o.type) : "no Objektart";
             if (!o.typeName.empty()) kind += " " + o.typeName;
+            if (landClass(o) == LandClass::Parcel) kind += " (parcels: cadastre, not land cover)";
             ++undrawn[kind];
         }
         if (layer.objects.empty()) {

@@ -44,6 +44,21 @@ TEST(Atkis, LandClasses) {
     EXPECT_EQ(landClassName(LandClass::TreeRow), "tree_row");
 }
 
+// ALK Objektarten overlap ATKIS ones (ALK 5101 is no river): the Folie classes ALK objects.
+TEST(Atkis, AlkObjectsAreClassedByTheirFolie) {
+    auto alk = [](const std::string &folie, const std::string &type) {
+        AtkisObject o;
+        o.typeName = "ALK " + type;
+        o.attributes = {{"OBJART", type}, {"FOLIE", folie}};
+        return o;
+    };
+    EXPECT_EQ(landClass(alk("011", "1003")), LandClass::Building);
+    EXPECT_EQ(landClass(alk("001", "0233")), LandClass::Parcel);
+    EXPECT_EQ(landClass(alk("041", "5101")), LandClass::Other);
+    EXPECT_EQ(landClassName(LandClass::Building), "building");
+    EXPECT_EQ(landClassName(LandClass::Parcel), "parcel");
+}
+
 TEST(Atkis, TreeKinds) {
     EXPECT_EQ(treeKind(object(4107, {{"VEG", "1000"}})), TreeKind::Broadleaf);
     EXPECT_EQ(treeKind(object(4107, {{"VEG", "2000"}})), TreeKind::Conifer);
