@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <map>
+#include <optional>
 
 #include <CGAL/Boolean_set_operations_2.h>
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -54,20 +55,73 @@ Polygon joint(Vec2f centre, float radius) {
     return p;
 }
 
+// The triangle that fills the notch on the outside of a bend at `node`, between the ends of
+// the ribbons from `from` and to `to`; nothing when they run straight on.
+std::optional<Polygon> bevel(Vec2f from, Vec2f node, Vec2f to, float halfWidth) {
+    Vec2f in = node - from, out = to - node;
+    float turn = in.x * out.y - in.y * out.x;
+    if (std::abs(turn) <= 1e-6f * std::hypot(in.x, in.y) * std::hypot(out.x, out.y)) return std::nullopt;
+    // The outside of a left turn is on the right.
+    float side = turn > 0 ? -1.0f : 1.0f;
+    auto corner = [&](Vec2f d) {
+        float length = std::hypot(d.x, d.y);
+        return Point(node.x + side * -d.y / length * halfWidth, node.y + side * d.x / length * halfWidth);
+    };
+    Polygon p;
+    p.push_back(Point(node.x, node.y));
+    p.push_back(corner(in));
+    p.push_back(corner(out));
+    if (p.orientation() == CGAL::CLOCKWISE) p.reverse_orientation();
+    return p;
+}
+
+// Streets meet at a node: its ribbons' ends, the widest half width among them, and for the
+// node's bevel the other ends of its (at most two) streets.
+struct NodeStreets {
+    int count = 0;
+    float widestHalf = 0;
+    bool sameWidth = true;
+    uint32_t others[2] = {0, 0};
+};
+
 // Every street's ribbon, then every node's joint, each widened by `extra` on either side.
+// Where a node joins two streets of one width that bend by less than kBevelTurnDegrees, a
+// bevel fills the notch instead of a round joint: the two differ by under 1 − cos(θ/2) of the
+// half width (3.4 % at 30°), and a street of many short segments (a curve, an OSM way) then
+// brings a triangle per node into the union instead of a 16-gon overlapping its neighbours'.
 std::vector<Polygon> streetPieces(const StreetNetwork &network, float extra) {
+    constexpr float kBevelTurnDegrees = 30;
+    const float bevelCos = std::cos(kBevelTurnDegrees * kPi / 180);
     std::vector<Polygon> pieces;
-    std::vector<float> jointRadius(network.nodes.size(), 0.0f);
+    std::vector<NodeStreets> at(network.nodes.size());
+    auto meet = [&](uint32_t node, uint32_t other, float half) {
+        NodeStreets &n = at[node];
+        if (n.count > 0 && n.widestHalf != half) n.sameWidth = false;
+        if (n.count < 2) n.others[n.count] = other;
+        ++n.count;
+        n.widestHalf = std::max(n.widestHalf, half);
+    };
     for (const StreetNetwork::Street &s : network.streets) {
         Vec2f a = network.nodes[s.from], b = network.nodes[s.to];
         if (a.x == b.x && a.y == b.y) continue;
         float half = s.width / 2 + extra;
         pieces.push_back(ribbon(a, b, half));
-        jointRadius[s.from] = std::max(jointRadius[s.from], half);
-        jointRadius[s.to] = std::max(jointRadius[s.to], half);
+        meet(s.from, s.to, half);
+        meet(s.to, s.from, half);
     }
-    for (size_t n = 0; n < network.nodes.size(); ++n)
-        if (jointRadius[n] > 0) pieces.push_back(joint(network.nodes[n], jointRadius[n]));
+    for (size_t n = 0; n < network.nodes.size(); ++n) {
+        const NodeStreets &node = at[n];
+        if (node.count == 0) continue;
+        Vec2f from = network.nodes[node.others[0]], centre = network.nodes[n], to = network.nodes[node.others[1]];
+        Vec2f in = centre - from, out = to - centre;
+        bool gentle = node.count == 2 && node.sameWidth &&
+            in.x * out.x + in.y * out.y >= bevelCos * std::hypot(in.x, in.y) * std::hypot(out.x, out.y);
+        if (!gentle) {
+            pieces.push_back(joint(centre, node.widestHalf));
+        } else if (std::optional<Polygon> b = bevel(from, centre, to, node.widestHalf)) {
+            pieces.push_back(std::move(*b));
+        }
+    }
     return pieces;
 }
 
