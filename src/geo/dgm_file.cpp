@@ -132,18 +132,26 @@ void applyPolicy(Dgm &dgm, NoDataPolicy noData, const std::filesystem::path &fir
 
 }  // namespace
 
-Dgm readDgm(const std::filesystem::path &file) {
+Dgm readDgm(const std::filesystem::path &file, int warpTo) {
     checkInputFile(file);
     if (looksLikeXyz(file)) return Dgm{readXyzGrid(file), 0};
-    return readRasterGrid(file);
+    return readRasterGrid(file, warpTo);
 }
 
 Dgm readDgmTiles(const std::vector<std::filesystem::path> &files, NoDataPolicy noData,
-                 std::vector<std::string> &warnings) {
+                 std::vector<std::string> &warnings, int warpTo) {
     if (files.empty()) throw InputError({}, "no DGM files given");
     std::vector<Tile> tiles;
     tiles.reserve(files.size());
-    for (const auto &file : files) tiles.push_back(Tile{file, readDgm(file), 0, 0});
+    for (const auto &file : files) {
+        tiles.push_back(Tile{file, readDgm(file, warpTo), 0, 0});
+        const Dgm &dgm = tiles.back().dgm;
+        if (dgm.warpedFrom != 0)
+            warnings.push_back(fmt::format(
+                "{}: the DGM is in EPSG:{}, a geographic CRS; GDAL warped it into "
+                "EPSG:{} (bilinear): {} × {} nodes {:.3f} m apart",
+                file.string(), dgm.warpedFrom, dgm.epsg, dgm.grid.columns, dgm.grid.rows, dgm.grid.spacing));
+    }
     Dgm result = tiles.size() == 1 ? std::move(tiles.front().dgm) : mosaic(tiles, warnings);
     applyPolicy(result, noData, files.front(), warnings);
     return result;

@@ -16,6 +16,7 @@ namespace veduta {
 struct Dgm {
     HeightGrid grid;
     int epsg = 0;
+    int warpedFrom = 0;  // the EPSG code of the geographic CRS the file was warped from, or 0
 };
 
 // What to do with nodes that have no data (NaN) after the tiles are put together: the holes
@@ -27,15 +28,18 @@ struct NoDataPolicy {
 
 // One file. XYZ is recognised by its content (the first line that is not blank or a comment
 // holds three numbers: xyz_grid.h); anything else goes to GDAL, whose pixel centres become
-// the nodes. Nodes without data stay NaN. Throws InputError.
-Dgm readDgm(const std::filesystem::path &file);
+// the nodes. Nodes without data stay NaN. A geographic raster is warped into `warpTo` unless
+// it is 0 (raster_grid.h). Throws InputError.
+Dgm readDgm(const std::filesystem::path &file, int warpTo = 0);
 
 // Several tiles of one DGM as one grid over their bounding box. The tiles must have the same
 // spacing and their nodes must line up (an error names both files); where tiles overlap the
 // first in `files` wins, and a warning counts the nodes where a later tile disagrees.
 // Then `noData` decides about the nodes no tile covers or has data for (a warning counts
-// what was filled and what was cut). Tiles with two different EPSG codes are an error; the result has the one named.
+// what was filled and what was cut). Tiles with two different EPSG codes are an error; the
+// result has the one named. Geographic tiles are warped into `warpTo` (unless 0), each with a
+// warning that says so.
 Dgm readDgmTiles(const std::vector<std::filesystem::path> &files, NoDataPolicy noData,
-                 std::vector<std::string> &warnings);
+                 std::vector<std::string> &warnings, int warpTo = 0);
 
 }  // namespace veduta

@@ -71,12 +71,15 @@ int dataEpsg(const DataFileDesc &d, int fileEpsg, int sceneEpsg) {
 HeightGrid readTerrain(const LandscapeDesc &land, int sceneEpsg, std::vector<std::string> &warnings) {
     std::vector<std::filesystem::path> files;
     for (const DataFileDesc &d : land.dgm) files.push_back(d.file);
-    Dgm dgm = readDgmTiles(files, NoDataPolicy{land.fillDistance}, warnings);
+    // A geographic DGM (SRTM, global DEMs) can only be meant to be warped; a projected one in
+    // another CRS than the scene's is more likely a mistake, and resampling would change the
+    // surveyed heights, so it is refused below.
+    Dgm dgm = readDgmTiles(files, NoDataPolicy{land.fillDistance}, warnings, sceneEpsg);
     const DataFileDesc &first = land.dgm.front();
     int epsg = dataEpsg(first, dgm.epsg, sceneEpsg);
     if (epsg != sceneEpsg) {
         throw InputError(first.loc,
-                         fmt::format("the DGM is in EPSG:{} and the scene in EPSG:{}; a DGM is not "
+                         fmt::format("the DGM is in EPSG:{} and the scene in EPSG:{}; a projected DGM is not "
                                      "reprojected: give it in the scene's CRS (gdalwarp does it)",
                                      epsg, sceneEpsg));
     }

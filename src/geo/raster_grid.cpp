@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 #include <gdal_priv.h>
+#include <gdal_utils.h>
 #include <ogr_spatialref.h>
 
 #include "core/error.h"
@@ -86,18 +87,44 @@ void flipRows(HeightGrid &grid) {
     }
 }
 
+// The raster warped into EPSG `epsg` as gdalwarp would (see readRasterGrid), a virtual
+// dataset that reads `source` while it lives.
+GDALDatasetUniquePtr warpedInto(GDALDataset &source, int epsg, const FileLoc &loc, const GdalMessages &messages) {
+    std::string target = fmt::format("EPSG:{}", epsg);
+    const char *arguments[] = {"-of", "VRT",     "-t_srs",     target.c_str(), "-r",   "bilinear",
+                               "-ot", "Float32", "-dstnodata", "nan",          nullptr};
+    GDALWarpAppOptions *options = GDALWarpAppOptionsNew(const_cast<char **>(arguments), nullptr);
+    GDALDatasetH sourceHandle = GDALDataset::ToHandle(&source);
+    int usageError = 0;
+    GDALDatasetH warped = GDALWarp("", nullptr, 1, &sourceHandle, options, &usageError);
+    GDALWarpAppOptionsFree(options);
+    if (!warped) throw InputError(loc, fmt::format("GDAL cannot warp the DGM into {}{}", target, messages.detail()));
+    return GDALDatasetUniquePtr(GDALDataset::FromHandle(warped));
+}
+
+bool isGeographic(const GDALDataset &dataset) {
+    const OGRSpatialReference *crs = dataset.GetSpatialRef();
+    return crs && !crs->IsEmpty() && crs->IsGeographic();
+}
+
 }  // namespace
 
-Dgm readRasterGrid(const std::filesystem::path &path) {
+Dgm readRasterGrid(const std::filesystem::path &path, int warpTo) {
     checkFileForGdal(path);
     registerGdalDrivers();
     FileLoc loc{path.string(), 0, 0};
     GdalMessages messages;
     GdalDeadline deadline(path);
-    GDALDatasetUniquePtr dataset(
+    GDALDatasetUniquePtr file(
         GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
-    if (!dataset) throw InputError(loc, "GDAL cannot read this as a raster" + messages.detail());
-    if (dataset->GetRasterCount() < 1) throw InputError(loc, "the raster has no band");
+    if (!file) throw InputError(loc, "GDAL cannot read this as a raster" + messages.detail());
+    if (file->GetRasterCount() < 1) throw InputError(loc, "the raster has no band");
+    int warpedFrom = warpTo != 0 && isGeographic(*file) ? epsgOf(*file) : 0;
+    if (warpTo != 0 && isGeographic(*file) && warpedFrom == 0)
+        throw InputError(loc, "the DGM is in a geographic CRS without an EPSG code; veduta warps only known CRSs");
+    // Declared after `file`, which it reads, so that it is closed first.
+    GDALDatasetUniquePtr warped = warpedFrom ? warpedInto(*file, warpTo, loc, messages) : nullptr;
+    GDALDataset *dataset = warped ? warped.get() : file.get();
 
     double transform[6] = {0, 1, 0, 0, 0, 1};
     if (dataset->GetGeoTransform(transform) != CE_None)
@@ -141,6 +168,7 @@ Dgm readRasterGrid(const std::filesystem::path &path) {
     }
     checkHeights(grid, loc);
     dgm.epsg = epsgOf(*dataset);
+    dgm.warpedFrom = warpedFrom;
     return dgm;
 }
 

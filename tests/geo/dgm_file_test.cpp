@@ -17,6 +17,7 @@
 #include "core/error.h"
 #include "geo/no_data_fill.h"
 #include "geo/terrain_mesh.h"
+#include "geodesy/crs.h"
 #include "shared_data.h"
 
 namespace veduta {
@@ -377,6 +378,70 @@ TEST_F(DgmFileTest, TheDefaultFillCutsWhatItWouldMakeUp) {
                   "filled from their neighbours, 900 in 1 hole reaching farther than 8 nodes from any "
                   "height are cut, not made up (the terrain leaves out the cells around them; "
                   "<landscape fill_distance> fills farther)");
+}
+
+// A DEM in WGS 84 degrees, as SRTM and most global DEMs come: 60 × 40 pixels of 0.0005°
+// (about 36 × 56 m) near Kaiserslautern, heights a plane in longitude and latitude.
+constexpr double kWest = 7.74, kNorth = 49.45, kStep = 0.0005;
+double planeHeight(double longitude, double latitude) {
+    return 240 + 150 * (longitude - kWest) + 100 * (latitude - kNorth);
+}
+
+TEST_F(DgmFileTest, AGeographicDgmIsWarpedIntoTheScenesCrs) {
+    GDALAllRegister();
+    fs::path file = dir_ / "srtm.tif";
+    {
+        const int columns = 60, rows = 40;
+        GDALDriver *driver = GetGDALDriverManager()->GetDriverByName("GTiff");
+        GDALDatasetUniquePtr out(driver->Create(file.c_str(), columns, rows, 1, GDT_Float32, nullptr));
+        double transform[6] = {kWest, kStep, 0, kNorth, 0, -kStep};
+        out->SetGeoTransform(transform);
+        OGRSpatialReference wgs84;
+        wgs84.importFromEPSG(4326);
+        out->SetSpatialRef(&wgs84);
+        std::vector<float> heights;
+        for (int r = 0; r < rows; ++r)
+            for (int c = 0; c < columns; ++c)
+                heights.push_back(float(planeHeight(kWest + (c + 0.5) * kStep, kNorth - (r + 0.5) * kStep)));
+        ASSERT_EQ(out->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, columns, rows, heights.data(), columns, rows,
+                                                  GDT_Float32, 0, 0, nullptr),
+                  CE_None);
+    }
+    std::vector<std::string> warnings;
+    Dgm dgm = readDgmTiles({file}, NoDataPolicy{0}, warnings, 25832);
+    EXPECT_EQ(dgm.epsg, 25832);
+    EXPECT_EQ(dgm.warpedFrom, 4326);
+    ASSERT_GE(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0].rfind(file.string() +
+                                    ": the DGM is in EPSG:4326, a geographic CRS; GDAL warped it into "
+                                    "EPSG:25832 (bilinear): ",
+                                0),
+              0u)
+        << warnings[0];
+    // The rotated footprint leaves NaN corners in the grid; every node inside holds the plane
+    // at the node's longitude and latitude. Bilinear interpolation is exact on a plane (but
+    // within a pixel of the footprint's edge, where it lacks neighbours: those nodes are left
+    // out); what is left is GDAL's approximate transformer (0.125 px, under 7 m here, times
+    // the slope of 0.0023 m per m) and float32.
+    const Crs &utm = crsByEpsg(25832), &wgs84 = crsByEpsg(4326);
+    size_t valid = 0;
+    double worst = 0;
+    for (int r = 0; r < dgm.grid.rows; ++r)
+        for (int c = 0; c < dgm.grid.columns; ++c) {
+            float h = dgm.grid.node(c, r);
+            if (std::isnan(h)) continue;
+            ++valid;
+            MapPoint p = dgm.grid.nodePoint(c, r);
+            CrsCoordinate geographic = convert(utm, wgs84, {p.easting, p.northing, 0});
+            bool inside = geographic.x > kWest + 1.5 * kStep && geographic.x < kWest + 58.5 * kStep &&
+                geographic.y < kNorth - 1.5 * kStep && geographic.y > kNorth - 38.5 * kStep;
+            if (inside) worst = std::max(worst, std::abs(h - planeHeight(geographic.x, geographic.y)));
+        }
+    EXPECT_LT(worst, 0.02);
+    EXPECT_GT(valid, 0u);
+    EXPECT_LT(valid, dgm.grid.heights.size());
+    // Without a CRS to warp into, the raster is read as it is.
+    EXPECT_EQ(readDgm(file).epsg, 4326);
 }
 
 // The window of dem.tif that dem_window.xyz and dem_window.asc were cut from (MANIFEST.md).
