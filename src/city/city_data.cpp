@@ -10,6 +10,7 @@
 #include "city/footprint.h"
 #include "core/hash.h"
 #include "core/random_streams.h"
+#include "geo/height_grid.h"
 #include "geodesy/map_projection.h"
 #include "io/xml_reader.h"
 
@@ -96,6 +97,7 @@ class CityDataReader {
             point.n = coordinate(p, "n", true);
             point.u = coordinate(p, "u", false);
             if (projection_) placeOnMap(point, p);
+            checkReach(point, p);
             p.checkLeaf();
             auto [it, fresh] = pointIndex_.emplace(point.id, uint32_t(city_.points.size()));
             if (!fresh)
@@ -117,6 +119,19 @@ class CityDataReader {
                      fmt::format("({}, {}) is no point of EPSG:{}: {}", point.e, point.n, projection_->source().epsg,
                                  e.what()));
         }
+    }
+
+    void checkReach(const CityPoint &point, const XmlElement &p) const {
+        if (std::abs(point.e) <= kMaxCityReach && std::abs(point.n) <= kMaxCityReach && std::abs(point.u) <= kMaxHeight)
+            return;
+        // Without a projection, points this far out are mostly map coordinates.
+        std::string origin =
+            projection_ ? "the scene origin" : "0 0 (map coordinates need the scene's <georeference> to be placed)";
+        const char *attribute = std::abs(point.u) > kMaxHeight ? "u" : std::abs(point.e) > kMaxCityReach ? "e" : "n";
+        p.failAt(attribute,
+                 fmt::format("the point lies at ({:g}, {:g}, {:g}) m from {}; a city's points must lie within "
+                             "{:g} km of it (and heights within {:g} km)",
+                             point.e, point.n, point.u, origin, kMaxCityReach / 1000, kMaxHeight / 1000));
     }
 
     static uint32_t requiredId(const XmlElement &e, const char *attribute) {

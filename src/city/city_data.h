@@ -14,6 +14,11 @@
 
 namespace veduta {
 
+// How far from the scene origin a city's points may lie (metres, in each of e and n): its
+// streets, lots and buildings are built in single precision, which holds 8 mm there and a
+// metre at 10,000 km, where street ribbons and Booleans fall apart.
+inline constexpr double kMaxCityReach = 1e5;
+
 struct CityPoint {
     uint32_t id = 0;
     // Metres east, north and up: the file's own, or, read through a MapProjection, metres

@@ -349,7 +349,23 @@ class OsmImporter {
         return classWidth(highway);
     }
 
+    // Whether every point lies within a city's reach of the origin (kMaxCityReach); if not,
+    // a warning that the way is skipped.
+    bool withinReach(const std::vector<GeographicPoint> &points, const FileLoc &loc) {
+        for (const GeographicPoint &p : points) {
+            auto [e, n] = eastNorth(p);
+            if (std::abs(e) <= kMaxCityReach && std::abs(n) <= kMaxCityReach) continue;
+            warn(loc,
+                 fmt::format("its node at {:.7f} {:.7f} lies {:.0f} km from the data's origin, beyond the "
+                             "{:g} km a city reaches; it is skipped",
+                             p.latitude, p.longitude, std::hypot(e, n) / 1000, kMaxCityReach / 1000));
+            return false;
+        }
+        return true;
+    }
+
     void addStreet(const OsmLine &line) {
+        if (!withinReach(line.points, line.loc)) return;
         std::optional<float> width = streetWidth(line);
         float reach = width.value_or(city_.streetWidth) / 2 + float(kStreetEdgeMargin);
         auto way = uint32_t(streetWays_++);
@@ -369,6 +385,7 @@ class OsmImporter {
     // A ring in the local frame, counter-clockwise; nothing (with a warning) when it is no
     // simple polygon.
     std::optional<std::vector<Vec2f>> outline(const GeoRing &ring, const FileLoc &loc) {
+        if (!withinReach(ring, loc)) return std::nullopt;
         std::vector<Vec2f> points;
         for (const GeographicPoint &p : ring) points.push_back(local(p));
         if (points.size() < 3) {

@@ -100,6 +100,15 @@ TEST(CityData, ErrorsAreAtTheirPlace) {
         "city.xml:7:1: the block's outline crosses or touches itself");
     expectError(city(kSquare, "<Points><Point id=\"0\"/><Point id=\"1\"/></Points>\n"),
                 "city.xml:7:1: a block needs at least 3 points, not 2");
+    // Found by fuzz/city_data: a point 7e17 m out broke the street Booleans.
+    expectError(city("<Point id=\"0\" e=\"666666666666666650\" n=\"0\"/>\n", ""),
+                "city.xml:3:18: the point lies at (6.66667e+17, 0, 0) m from 0 0 (map coordinates need the scene's "
+                "<georeference> to be placed); a city's points must lie within "
+                "100 km of it (and heights within 100 km)");
+    expectError(city("<Point id=\"0\" e=\"0\" n=\"-100001\"/>\n", ""),
+                "city.xml:3:24: the point lies at (0, -100001, 0) m");
+    expectError(city("<Point id=\"0\" e=\"0\" n=\"0\" u=\"2e5\"/>\n", ""),
+                "city.xml:3:30: the point lies at (0, 0, 200000) m");
     expectError(city("<Point id=\"0\" e=\"0\" n=\"0\"/><Point id=\"1\" e=\"9\" n=\"0\" u=\"2\"/>"
                      "<Point id=\"2\" e=\"9\" n=\"9\"/>\n",
                      "<Points><Point id=\"0\"/><Point id=\"1\"/><Point id=\"2\"/></Points>\n"),

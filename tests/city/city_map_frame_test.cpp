@@ -11,6 +11,7 @@
 #include "city/city_data.h"
 #include "city/osm_import.h"
 #include "geodesy/map_projection.h"
+#include "input_error.h"
 #include "test_scenes.h"
 
 namespace veduta {
@@ -158,8 +159,14 @@ TEST_F(CityMapFrame, CityDataTakesTheScenesCrsByDefault) {
     EXPECT_NEAR(city.points[0].e, 12.25, 1e-9);
     EXPECT_NEAR(city.points[0].n, -3.5, 1e-9);
     EXPECT_EQ(city.points[0].u, 5);
-    // Without a projection the same numbers are local metres as they stand.
-    EXPECT_EQ(parseCityData(xml, "city.xml", dir_).points[0].e, scene.originEasting + 12.25);
+    // Without a projection the same numbers would be local metres as they stand, hundreds of
+    // kilometres out, where single precision cannot build a city.
+    EXPECT_EQ(
+        test::inputErrorOf([&] { parseCityData(xml, "city.xml", dir_); })
+            .rfind("city.xml:1:36: the point lies at (534512, 5.6842e+06, 5) m from 0 0 (map coordinates need the "
+                   "scene's <georeference> to be placed); a city's points must lie within 100 km of it",
+                   0),
+        0u);
 }
 
 TEST_F(CityMapFrame, Errors) {

@@ -13,6 +13,7 @@
 #include "city/osm_import.h"
 #include "input_error.h"
 #include "test_paths.h"
+#include "test_scenes.h"
 
 namespace veduta {
 namespace {
@@ -228,6 +229,30 @@ TEST(OsmImport, UnusableWaysAreSkippedWithAWarning) {
     EXPECT_EQ(setting(lot, "osm:height"), "tall");
     EXPECT_EQ(setting(lot, "osm:roof:shape"), "onion");
     EXPECT_EQ(setting(lot, "BuildingHeight"), "(unset)");
+}
+
+// Single precision builds a city; far from the origin its streets and Booleans fall apart.
+TEST(OsmImport, AWayReachingBeyondACitysReachIsSkipped) {
+    test::ScratchFolder folder("osm_reach");
+    auto file = folder.write("far.osm", R"(<?xml version="1.0"?>
+<osm version="0.6">
+  <node id="1" lat="49.4400" lon="7.7600"/>
+  <node id="2" lat="49.4410" lon="7.7620"/>
+  <node id="3" lat="49.4420" lon="9.5000"/>
+  <way id="10"><nd ref="1"/><nd ref="2"/><tag k="highway" v="residential"/></way>
+  <way id="11"><nd ref="2"/><nd ref="3"/><tag k="highway" v="residential"/></way>
+</osm>
+)");
+    OsmImportOptions options;
+    options.origin = GeographicPoint{49.44, 7.76};
+    CityData city = importOsm(file, options);
+    ASSERT_EQ(city.warnings.size(), 1u);
+    EXPECT_EQ(city.warnings[0],
+              file.string() +
+                  ": way 11: its node at 49.4420000 9.5000000 lies 126 km from the data's origin, "
+                  "beyond the 100 km a city reaches; it is skipped");
+    ASSERT_EQ(city.streets.size(), 1u);
+    EXPECT_TRUE(fromWay(city.streets[0].loc, 10));
 }
 
 TEST(OsmImport, AFileGdalCannotReadIsAnInputErrorNamingIt) {
