@@ -114,8 +114,15 @@ void BuildingGenerator::emitFacade(const BuildingContext &building, const StartS
                                    Mesh &baked, BuildingStats &stats, std::vector<std::string> &warnings) {
     terminals_.clear();
     if (grammar_.findRule(start.symbol)) {
-        deriveFacade(grammar_, start.symbol, {start.width, start.height}, building.properties, {seed_, building.id},
-                     terminals_, warnings, limits_);
+        try {
+            deriveFacade(grammar_, start.symbol, {start.width, start.height}, building.properties, {seed_, building.id},
+                         terminals_, warnings, limits_);
+        } catch (const InputError &e) {
+            // A limit is mostly hit by a facade's size, not by the rules.
+            throw InputError(e.loc(),
+                             fmt::format("{} (on a facade {:.0f} m wide and {:.0f} m high)", e.message(), start.width,
+                                         start.height));
+        }
     } else {
         // A rule set made for one kind of facade still builds whole buildings: the walls it has
         // no rule for are plain.

@@ -17,6 +17,7 @@
 #include "city/footprint.h"
 #include "city/material_palette.h"
 #include "city/start_shapes.h"
+#include "core/error.h"
 #include "scene/render_scene.h"
 
 namespace veduta {
@@ -44,6 +45,18 @@ struct BuildingStats {
     size_t instances = 0;
     size_t bakedTriangles = 0;
 };
+
+// Runs `build` for the building that the input describes at `loc` (its lot, OSM way or
+// <building>): an InputError from its rules, a derivation limit hit on this building's size,
+// is given the building's place in front, since that is where the user can look.
+template <typename Build>
+void buildAt(const FileLoc &loc, Build &&build) {
+    try {
+        build();
+    } catch (const InputError &e) {
+        throw InputError(loc, std::string("this building cannot be built: ") + e.what());
+    }
+}
 
 class BuildingGenerator {
   public:

@@ -48,7 +48,7 @@ void generateGroup(const BuildingGroupDesc &group, uint32_t seed, const GroundHe
         spec.objectId = desc.objectId;
         spec.footprint = footprintOf(desc, ground, warnings);
         spec.settings = SettingsStack({&desc.settings, &group.settings, &rules.settings, &defaultBuildingSettings()});
-        generator.generate(spec, warnings);
+        buildAt(desc.loc, [&] { generator.generate(spec, warnings); });
         if (!desc.base && ground) addPlinth(spec, builder);
     }
     // The facade frame (right, up, out) standing on the x axis and facing −y.

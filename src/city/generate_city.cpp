@@ -163,7 +163,7 @@ uint32_t buildCity(const CityData &data, uint32_t seed, ObjectId objectId, const
             if (landscape)
                 seatOnGround(spec.footprint, landscape->ground, given ? given->loc : block.loc, id, warnings);
             spec.settings = settingsFor(data, block, given, rules.loaded.rules.settings);
-            rules.generator.generate(spec, warnings);
+            buildAt(given ? given->loc : block.loc, [&] { rules.generator.generate(spec, warnings); });
             if (landscape) addPlinth(spec, builder);
         }
     }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <regex>
 #include <stdexcept>
 #include <string_view>
 #include <unordered_map>
@@ -229,6 +230,24 @@ void addFeature(const std::string &file, std::string_view layer, const OGRFeatur
     }
 }
 
+// GDAL's failure as the user's error: its XML parser's "… at line L, column C" becomes the
+// place in front ("file:L:C: XML parsing of OSM file failed: not well-formed (invalid
+// token)"), and "Failed inserting node N: UNIQUE constraint failed" says what it means (two
+// nodes, ways or relations of one id).
+InputError gdalFailure(const std::filesystem::path &file, const std::string &failure) {
+    static const std::regex place(R"((.*) at line (\d+), column (\d+)$)");
+    static const std::regex repeatedId(R"(Failed inserting (node|way|relation) (-?\d+): UNIQUE constraint failed.*)");
+    std::smatch match;
+    if (std::regex_match(failure, match, place)) {
+        std::string what = std::regex_replace(match[1].str(), std::regex(" : "), ": ");
+        return InputError({file.string(), std::stoi(match[2]), std::stoi(match[3])}, what);
+    }
+    if (std::regex_match(failure, match, repeatedId))
+        return InputError({file.string()},
+                          fmt::format("two {}s have the id {} (GDAL: {})", match[1].str(), match[2].str(), failure));
+    return InputError({file.string()}, failure);
+}
+
 OsmContent readOsmContent(const std::filesystem::path &file, std::vector<std::string> &warnings) {
     FileLoc fileLoc{file.string(), 0, 0};
     checkFileForGdal(file);
@@ -242,7 +261,10 @@ OsmContent readOsmContent(const std::filesystem::path &file, std::vector<std::st
         GdalDeadline deadline(file);
         GDALDatasetUniquePtr dataset(GDALDataset::Open(file.c_str(), GDAL_OF_VECTOR, drivers, openOptions, nullptr));
         if (!dataset) {
-            std::string detail = messages.failures.empty() ? "" : fmt::format(" ({})", messages.failures.front());
+            // Without a message, GDAL's OSM driver did not recognise the file (it looks for
+            // an <osm> element within the file's first bytes).
+            std::string detail = messages.failures.empty() ? " (GDAL finds no <osm> element at its start)"
+                                                           : fmt::format(" ({})", messages.failures.front());
             throw InputError(fileLoc, fmt::format("GDAL cannot read this as an OpenStreetMap XML file{}", detail));
         }
         OGRLayer *layer = nullptr;
@@ -252,7 +274,7 @@ OsmContent readOsmContent(const std::filesystem::path &file, std::vector<std::st
             addFeature(file.string(), layer->GetName(), *feature, content);
         }
     }
-    if (!messages.failures.empty()) throw InputError(fileLoc, messages.failures.front());
+    if (!messages.failures.empty()) throw gdalFailure(file, messages.failures.front());
     for (const std::string &warning : messages.warnings)
         warnings.push_back(fmt::format("{}: GDAL: {}", fileLoc.toString(), warning));
     return content;

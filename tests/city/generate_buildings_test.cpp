@@ -100,6 +100,15 @@ TEST(GenerateBuildings, ErrorsAreAtTheirPlace) {
     EXPECT_NE(errorOf(missing).find("test.xml:1:38: cannot read the rule file"), std::string::npos) << errorOf(missing);
 }
 
+// A derivation limit is hit by a building's size more often than by its rules: the error
+// names the building, the rule and the facade.
+TEST(GenerateBuildings, ABuildingTooLargeForTheDerivationLimitsIsNamed) {
+    std::string error = errorOf(scene("<building footprint=\"0 0 30000 0 30000 12 0 12\"/>\n"));
+    EXPECT_EQ(error.rfind("test.xml:3:1: this building cannot be built: " + rules() + ":", 0), 0u) << error;
+    EXPECT_NE(error.find("makes more than 200000 shapes"), std::string::npos) << error;
+    EXPECT_NE(error.find("(on a facade 30000 m wide and "), std::string::npos) << error;
+}
+
 TEST(GenerateBuildings, ABadRuleFileIsAnErrorInThatFile) {
     std::filesystem::path file =
         std::filesystem::temp_directory_path() / ("veduta_bad_rules_" + std::to_string(::getpid()) + ".xml");
