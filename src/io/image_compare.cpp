@@ -10,9 +10,9 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/rel_mse.h"
+#include "io/output_files.h"
 
 namespace veduta {
 
@@ -268,19 +268,17 @@ void writeDiffImage(const OIIO::ImageBuf &a, const OIIO::ImageBuf &b, const std:
     requireRgb(roles);
     const std::vector<std::string> rgb{"R", "G", "B"};
     ChannelReader ra(roles[0], rgb), rb(roles[1], rgb);
-    OIIO::ImageBuf diff(OIIO::ImageSpec(a.spec().width, a.spec().height, 3, OIIO::TypeFloat));
-    auto *out = static_cast<float *>(diff.localpixels());
     const size_t pixels = size_t(a.spec().width) * size_t(a.spec().height);
+    std::vector<uint8_t> out(pixels * 3);
     for (size_t p = 0; p < pixels; ++p) {
         for (size_t c = 0; c < 3; ++c) {
-            out[p * 3 + c] = float(std::min(valueError(ra.at(p, c), rb.at(p, c)) * kDiffImageScale, 1.0));
+            double v = std::min(valueError(ra.at(p, c), rb.at(p, c)) * kDiffImageScale, 1.0);
+            out[p * 3 + c] = uint8_t(std::lround(v * 255));
         }
     }
-    writeFileAtomically(file, [&](const std::filesystem::path &temporary) {
-        if (!diff.write(temporary.string(), OIIO::TypeUInt8)) {
-            throw std::runtime_error(fmt::format("{}: {}", file.string(), diff.geterror()));
-        }
-    });
+    // Through libpng in memory, every write checked: OpenImageIO's PNG writer misses a full
+    // disk, and would leave a cut file in the older one's place.
+    writeEncodedPng(out, a.spec().width, a.spec().height, 3, file);
 }
 
 }  // namespace veduta

@@ -56,11 +56,16 @@ void writePng(const RgbaImage &film, const std::filesystem::path &file) {
         float v = (i % 4 == 3) ? std::clamp(linear, 0.0f, 1.0f) : linearToSrgb(linear);
         pixels[i] = uint8_t(std::lround(v * 255.0f));
     }
+    writeEncodedPng(pixels, film.width(), film.height(), 4, file);
+}
+
+void writeEncodedPng(const std::vector<uint8_t> &pixels, int width, int height, int channels,
+                     const std::filesystem::path &file) {
     png_image image{};
     image.version = PNG_IMAGE_VERSION;
-    image.width = png_uint_32(film.width());
-    image.height = png_uint_32(film.height());
-    image.format = PNG_FORMAT_RGBA;  // 8-bit sRGB, as libpng's simplified API assumes
+    image.width = png_uint_32(width);
+    image.height = png_uint_32(height);
+    image.format = channels == 4 ? PNG_FORMAT_RGBA : PNG_FORMAT_RGB;
     // Encoded in memory so that every write to the disk is checked (libpng's own file writing
     // does not check the close).
     png_alloc_size_t size = 0;

@@ -3,7 +3,9 @@
 // so a failed or interrupted run never leaves a damaged file or destroys an older good one.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <vector>
 
 #include "core/rgba_image.h"
 
@@ -13,6 +15,10 @@ namespace veduta {
 void writeExr(const RgbaImage &film, const std::filesystem::path &file);
 // Plain sRGB transfer function, clamped to [0, 1]; OCIO display transforms come later.
 void writePng(const RgbaImage &film, const std::filesystem::path &file);
+// 8-bit pixels already encoded (`channels` 3: RGB, 4: RGBA, top row first), written as they
+// are; what writePng and the diff image write through. Throws std::runtime_error naming the file.
+void writeEncodedPng(const std::vector<uint8_t> &pixels, int width, int height, int channels,
+                     const std::filesystem::path &file);
 
 float linearToSrgb(float linear);
 
