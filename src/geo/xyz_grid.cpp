@@ -157,6 +157,10 @@ class GridScan {
     double refinedX_ = 1, refinedY_ = 1;  // the node counts the spacing was last refined over
 };
 
+// An XYZ DGM lists its nodes: a grid may have gaps (water, removed buildings), but not more
+// than a hundred nodes for each point given.
+constexpr double kMaxXyzNodesPerPoint = 100;
+
 HeightGrid emptyGridOver(const GridScan &scan, const std::string &file) {
     if (scan.count() < 2 || scan.spacing() <= 0)
         throw InputError({file, 0, 0}, "fewer than two points a grid step apart along a row or column");
@@ -167,6 +171,13 @@ HeightGrid emptyGridOver(const GridScan &scan, const std::string &file) {
                          fmt::format("the points span {} × {} nodes of {:.6g} m, more than the {:.0e} "
                                      "a DGM may have",
                                      columns, rows, scan.spacing(), kMaxGridNodes));
+    // Checked before the grid is allocated: three points a kilometre apart on a 1 m grid
+    // would otherwise ask for a million empty nodes per point.
+    if (columns * rows > kMaxXyzNodesPerPoint * double(scan.count()))
+        throw InputError({file, 0, 0},
+                         fmt::format("the {} points span {} × {} nodes of {:.6g} m: they cover less than 1 % of "
+                                     "their grid, which is no DGM (a point far off the others?)",
+                                     scan.count(), columns, rows, scan.spacing()));
     HeightGrid grid;
     grid.west = scan.minX();
     grid.south = scan.minY();

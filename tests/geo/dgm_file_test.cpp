@@ -240,6 +240,24 @@ TEST_F(DgmFileTest, XyzNeedsTwoPoints) {
     expectError([&] { readDgm(file); }, "fewer than two points");
 }
 
+// Found by fuzz/xyz: three points 350,000 km apart on a 2 m grid asked for 1.4 GB of empty
+// nodes; a grid must be covered by its points to 1 % at least, checked before allocating.
+TEST_F(DgmFileTest, XyzPointsThatCoverLittleOfTheirGridAreAnError) {
+    fs::path file = write("apart.xyz", "3500000 5500000 100\n3500002 5500000 101\n3502000 5500000 102\n");
+    expectError([&] { readDgm(file); },
+                file.string() +
+                    ": the 3 points span 1001 × 1 nodes of 2 m: they cover less "
+                    "than 1 % of their grid");
+    // A grid with its two middle rows missing is still one.
+    SmallDgm d;
+    for (int r = 1; r < 3; ++r)
+        for (int c = 0; c < d.columns; ++c) d.heights[size_t(r * d.columns + c)] = "";
+    HeightGrid half = readDgm(writeXyz("half.xyz", d)).grid;
+    EXPECT_EQ(half.columns, d.columns);
+    EXPECT_EQ(half.rows, d.rows);
+    EXPECT_EQ(countNoData(half), 10u);
+}
+
 TEST_F(DgmFileTest, NonSquarePixels) {
     SmallDgm d;
     Dgm nearly = readDgm(writeGeoTiff("nearly.tif", d, d.spacing * (1 + 2.5e-10)));
