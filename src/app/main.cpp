@@ -1,13 +1,24 @@
+#include <cstdio>
 #include <cstring>
+#include <stdexcept>
 
 #include <CLI/CLI.hpp>
 
 #include "app/commands.h"
+#include "app/memory_limit.h"
 #include "app/run_guarded.h"
 #include "app/version.h"
 
 int main(int argc, char **argv) {
     if (argc > 1 && std::strcmp(argv[1], "diff") == 0) return veduta::runDiffProgram(argc, argv);
+    // Before anything is allocated: past the budget, allocations fail and the command names
+    // what ran out, where the kernel's OOM killer would end it without a word.
+    try {
+        veduta::limitMemory(veduta::memoryBudget());
+    } catch (const std::invalid_argument &e) {
+        std::fprintf(stderr, "veduta: error: %s\n", e.what());
+        return veduta::kExitBadUsage;
+    }
     CLI::App app{"veduta: an offline renderer for landscape and city stills"};
     app.set_version_flag("--version", std::string("veduta ") + veduta::kVersion);
     app.require_subcommand(1);

@@ -2,8 +2,12 @@
 
 #include <cstdio>
 #include <exception>
+#include <new>
+#include <optional>
+#include <string>
 
 #include "app/commands.h"
+#include "app/memory_limit.h"
 #include "core/error.h"
 
 namespace veduta {
@@ -15,6 +19,14 @@ int runGuarded(const std::function<void()> &body) {
     } catch (const InputError &e) {
         std::fprintf(stderr, "veduta: error: %s\n", e.what());
         return kExitBadInput;
+    } catch (const std::bad_alloc &) {
+        std::optional<uint64_t> limit = memoryLimit();
+        std::fprintf(stderr, "veduta: error: memory ran out%s\n",
+                     limit ? (" at veduta's budget of " + memorySizeText(*limit) +
+                              " (VEDUTA_MAX_MEMORY sets it; docs/reliability.md)")
+                                 .c_str()
+                           : "");
+        return kExitFailure;
     } catch (const std::exception &e) {
         std::fprintf(stderr, "veduta: error: %s\n", e.what());
         return kExitFailure;

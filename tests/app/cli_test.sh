@@ -35,6 +35,18 @@ for bad in "--noise-threshold nan" "--noise-threshold inf" "--time-limit nan" "-
     check "render $bad names the value" err_has "is not a number from"
 done
 
+# The memory budget: past it, the command says so and writes nothing (exit 3); a budget that
+# is no size is a bad command line (exit 2); a render within it runs.
+VEDUTA_MAX_MEMORY=200M run render --res 8000x8000 --spp 1 -q -o "$work/huge.exr"
+check "over the memory budget exits 3" rc_is 3
+check "over the memory budget says so" err_has "memory ran out at veduta's budget of 0.2 GB (VEDUTA_MAX_MEMORY sets it"
+check "over the memory budget writes nothing" test ! -e "$work/huge.exr"
+VEDUTA_MAX_MEMORY=lots run info
+check "a budget that is no size exits 2" rc_is 2
+check "a budget that is no size is named" err_has "VEDUTA_MAX_MEMORY is 'lots', not a size"
+VEDUTA_MAX_MEMORY=1.5G run render --res 64x48 --spp 1 -q -o "$work/small.exr"
+check "a render within the budget runs" rc_is 0
+
 # An output that cannot be written is reported before rendering: exit 3.
 touch "$work/afile"
 run render --res 8x8 --spp 1 -q -o "$work/afile/x.exr"
