@@ -164,7 +164,27 @@ class PlyReader {
             }
         }
         if (!formatGiven) fail("the header gives no format");
+        checkCounts();
         inBody_ = true;
+    }
+
+    // Every item of an element takes a byte of the body at least (an ASCII value two): a
+    // count the file cannot hold, or items without properties, which the body would not even
+    // be read for, are refused before they are looped over.
+    void checkCounts() {
+        std::error_code error;
+        uint64_t bytes = std::filesystem::file_size(file_, error);
+        const int endHeader = line_;
+        for (const PlyElement &e : elements_) {
+            if (e.count == 0) continue;
+            line_ = e.line;  // the message's place
+            if (e.properties.empty())
+                fail(fmt::format("the element '{}' has {} items but no properties", e.name, e.count));
+            if (!error && e.count > bytes)
+                fail(fmt::format("the element '{}' promises {} items, more than the file's {} bytes can hold", e.name,
+                                 e.count, bytes));
+        }
+        line_ = endHeader;
     }
 
     PlyProperty property(const std::vector<std::string> &w) const {

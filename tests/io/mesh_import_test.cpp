@@ -51,6 +51,21 @@ TEST_F(MeshImport, CutPlyIsRefused) {
     EXPECT_EQ(error.rfind(file.string() + ":", 0), 0u) << error;
 }
 
+// Found by fuzz/mesh_ply: items without properties read no bytes, so their count was looped
+// through for ever; a count the file cannot hold is refused as well.
+TEST_F(MeshImport, PlyCountsTheFileCannotHoldAreRefusedAtOnce) {
+    auto empty = folder_.write("empty.ply", "ply\nformat ascii 1.0\nelement face 888888888888\nend_header\n");
+    EXPECT_EQ(test::inputErrorOf([&] { importMesh(empty); }),
+              empty.string() + ":3: the element 'face' has 888888888888 items but no properties");
+    std::string header = kQuadHeader;
+    header.replace(header.find("vertex 4"), 8, "vertex 4000");
+    auto many = folder_.write("many.ply", header + kQuadBody);
+    EXPECT_EQ(test::inputErrorOf([&] {
+                  importMesh(many);
+              }).rfind(many.string() + ":3: the element 'vertex' promises 4000 items, more than the file's ", 0),
+              0u);
+}
+
 TEST_F(MeshImport, PlyVertexBeyondSinglePrecisionIsRefused) {
     std::string body = "0 0 0\n1e39 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n";
     std::string header = kQuadHeader;
