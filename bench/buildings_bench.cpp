@@ -131,18 +131,17 @@ BENCHMARK(BM_Buildings)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond)->U
 }  // namespace veduta
 
 int main(int argc, char **argv) {
-    using namespace veduta;
-    MedianReporter reporter;
-    if (!runBenchmarks(argc, argv, reporter)) return 1;
-    const auto *small = reporter.find("BM_Buildings/1000");
-    const auto *large = reporter.find("BM_Buildings/10000");
-    if (small && large) {
-        double smallMs = small->GetAdjustedRealTime(), largeMs = large->GetAdjustedRealTime();
-        std::printf("\none core: %.0f buildings/s at 1,000, %.0f at 10,000 (target >= 1000)\n", 1000 / (smallMs / 1000),
-                    10000 / (largeMs / 1000));
-        std::printf("heap per building at 10,000: %.1f KB (target <= 100)\n", large->counters.at("KB/building").value);
-        std::printf("time(10,000) / time(1,000) = %.2f (target <= 11)\n", largeMs / smallMs);
-    }
-    benchmark::Shutdown();
-    return 0;
+    return veduta::benchmarkMain(argc, argv, [](const veduta::MedianReporter &reporter) {
+        using namespace veduta;
+        const auto *small = reporter.find("BM_Buildings/1000");
+        const auto *large = reporter.find("BM_Buildings/10000");
+        if (small && large) {
+            double smallMs = small->GetAdjustedRealTime(), largeMs = large->GetAdjustedRealTime();
+            std::printf("\none core: %.0f buildings/s at 1,000, %.0f at 10,000 (target >= 1000)\n",
+                        1000 / (smallMs / 1000), 10000 / (largeMs / 1000));
+            std::printf("heap per building at 10,000: %.1f KB (target <= 100)\n",
+                        large->counters.at("KB/building").value);
+            std::printf("time(10,000) / time(1,000) = %.2f (target <= 11)\n", largeMs / smallMs);
+        }
+    });
 }

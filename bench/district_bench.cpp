@@ -185,22 +185,20 @@ BENCHMARK(BM_Buildings)->Unit(benchmark::kMillisecond)->UseRealTime();
 }  // namespace veduta
 
 int main(int argc, char **argv) {
-    using namespace veduta;
-    MedianReporter reporter;
-    if (!runBenchmarks(argc, argv, reporter)) return 1;
-    const auto *whole = reporter.find("BM_District");
-    if (whole) {
-        double total = whole->GetAdjustedRealTime();
-        std::printf("\n1 km² district: %zu buildings on %zu blocks in %.2f s (target <= 5 s)\n", fixture().buildings(),
-                    fixture().city.blocks.size(), total / 1000);
-        std::printf("phases, each timed alone:");
-        for (const char *phase : {"BM_Streets", "BM_Lots", "BM_Roofs", "BM_Buildings"}) {
-            if (const auto *run = reporter.find(phase))
-                std::printf("  %s %.0f ms (%.0f%%)", phase + 3, run->GetAdjustedRealTime(),
-                            100 * run->GetAdjustedRealTime() / total);
+    return veduta::benchmarkMain(argc, argv, [](const veduta::MedianReporter &reporter) {
+        using namespace veduta;
+        const auto *whole = reporter.find("BM_District");
+        if (whole) {
+            double total = whole->GetAdjustedRealTime();
+            std::printf("\n1 km² district: %zu buildings on %zu blocks in %.2f s (target <= 5 s)\n",
+                        fixture().buildings(), fixture().city.blocks.size(), total / 1000);
+            std::printf("phases, each timed alone:");
+            for (const char *phase : {"BM_Streets", "BM_Lots", "BM_Roofs", "BM_Buildings"}) {
+                if (const auto *run = reporter.find(phase))
+                    std::printf("  %s %.0f ms (%.0f%%)", phase + 3, run->GetAdjustedRealTime(),
+                                100 * run->GetAdjustedRealTime() / total);
+            }
+            std::printf("\n(Buildings includes Roofs; the rest of District is the scene build.)\n");
         }
-        std::printf("\n(Buildings includes Roofs; the rest of District is the scene build.)\n");
-    }
-    benchmark::Shutdown();
-    return 0;
+    });
 }

@@ -99,11 +99,10 @@ BENCHMARK(BM_Street800)->Unit(benchmark::kMillisecond)->UseRealTime()->Iteration
 }  // namespace veduta
 
 int main(int argc, char **argv) {
-    using namespace veduta;
-    MedianReporter reporter;
-    if (!runBenchmarks(argc, argv, reporter)) return 1;
-    for (const char *name : {"BM_RingBlock2000", "BM_Street800"})
-        if (const auto *run = reporter.find(name))
-            std::printf("%s: %.2f s (target <= 2 s)\n", name, run->GetAdjustedRealTime() / 1000);
-    return 0;
+    return veduta::benchmarkMain(argc, argv, [](const veduta::MedianReporter &reporter) {
+        using namespace veduta;
+        for (const char *name : {"BM_RingBlock2000", "BM_Street800"})
+            if (const auto *run = reporter.find(name))
+                std::printf("%s: %.2f s (target <= 2 s)\n", name, run->GetAdjustedRealTime() / 1000);
+    });
 }

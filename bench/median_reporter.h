@@ -45,4 +45,15 @@ inline bool runBenchmarks(int &argc, char **argv, MedianReporter &reporter) {
     return true;
 }
 
+// A benchmark program's whole main: the benchmarks, then `report` prints the figures the
+// program exists for from their medians. Returns main's exit code (1: an unknown option).
+template <typename Report>
+int benchmarkMain(int argc, char **argv, Report &&report) {
+    MedianReporter reporter;
+    if (!runBenchmarks(argc, argv, reporter)) return 1;
+    report(reporter);
+    benchmark::Shutdown();
+    return 0;
+}
+
 }  // namespace veduta

@@ -125,11 +125,10 @@ BENCHMARK(BM_OsmImport)->Unit(benchmark::kMillisecond)->UseRealTime()->Iteration
 }  // namespace veduta
 
 int main(int argc, char **argv) {
-    using namespace veduta;
-    MedianReporter reporter;
-    if (!runBenchmarks(argc, argv, reporter)) return 1;
-    if (const auto *whole = reporter.find("BM_OsmTown"))
-        std::printf("\nOSM town: %d ways, %zu buildings built in %.2f s (target <= 10 s)\n", town().ways, lastBuildings,
-                    whole->GetAdjustedRealTime() / 1000);
-    return 0;
+    return veduta::benchmarkMain(argc, argv, [](const veduta::MedianReporter &reporter) {
+        using namespace veduta;
+        if (const auto *whole = reporter.find("BM_OsmTown"))
+            std::printf("\nOSM town: %d ways, %zu buildings built in %.2f s (target <= 10 s)\n", town().ways,
+                        lastBuildings, whole->GetAdjustedRealTime() / 1000);
+    });
 }

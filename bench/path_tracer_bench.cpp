@@ -122,18 +122,17 @@ BENCHMARK(BM_EmbreeIncoherentIntersect1)->Arg(0)->Arg(1)->Unit(benchmark::kMilli
 }  // namespace veduta
 
 int main(int argc, char **argv) {
-    veduta::MedianReporter reporter;
-    if (!veduta::runBenchmarks(argc, argv, reporter)) return 1;
-    for (const std::string scene : {"0", "1"}) {
-        const auto *traced = reporter.find("BM_PathTracerRays/" + scene);
-        const auto *raw = reporter.find("BM_EmbreeIncoherentIntersect1/" + scene);
-        if (!traced || !raw) continue;
-        double pt = traced->counters.at("rays_per_second"), embree = raw->counters.at("rays_per_second");
-        std::printf(
-            "\nscene %s: path tracer %.3f Mrays/s, raw Embree incoherent rtcIntersect1 %.3f Mrays/s, ratio %.1f %%",
-            scene.c_str(), pt * 1e-6, embree * 1e-6, 100.0 * pt / embree);
-    }
-    std::printf("\n");
-    benchmark::Shutdown();
-    return 0;
+    return veduta::benchmarkMain(argc, argv, [](const veduta::MedianReporter &reporter) {
+        using namespace veduta;
+        for (const std::string scene : {"0", "1"}) {
+            const auto *traced = reporter.find("BM_PathTracerRays/" + scene);
+            const auto *raw = reporter.find("BM_EmbreeIncoherentIntersect1/" + scene);
+            if (!traced || !raw) continue;
+            double pt = traced->counters.at("rays_per_second"), embree = raw->counters.at("rays_per_second");
+            std::printf(
+                "\nscene %s: path tracer %.3f Mrays/s, raw Embree incoherent rtcIntersect1 %.3f Mrays/s, ratio %.1f %%",
+                scene.c_str(), pt * 1e-6, embree * 1e-6, 100.0 * pt / embree);
+        }
+        std::printf("\n");
+    });
 }

@@ -183,23 +183,21 @@ BENCHMARK(BM_RenderReady34x20km)->Apply(maxErrors)->Unit(benchmark::kMillisecond
 }  // namespace veduta
 
 int main(int argc, char **argv) {
-    using namespace veduta;
-    MedianReporter reporter;
-    if (!runBenchmarks(argc, argv, reporter)) return 1;
-    std::printf("\n");
-    for (const char *arg : {"0", "10", "50"}) {
-        const char *what = arg[0] == '0' ? "full resolution" : arg[0] == '1' ? "maxError 0.1 m" : "maxError 0.5 m";
-        if (const auto *run = reporter.find(std::string("BM_RenderReady1km/") + arg))
-            std::printf("1 km² at 1 m, %s: mesh + BVH %.2f s (target <= 1 s)\n", what,
-                        run->GetAdjustedRealTime() / 1000);
-        if (const auto *run = reporter.find(std::string("BM_RenderReady34x20km/") + arg))
-            std::printf("34 × 20 km at 10 m, %s: read + mesh + BVH %.2f s (target <= 10 s)\n", what,
-                        run->GetAdjustedRealTime() / 1000);
-    }
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    std::printf("peak resident memory of this run (all benchmarks, fixture included): %.2f GB (target <= 3 GB)\n",
-                double(usage.ru_maxrss) / 1e6);
-    benchmark::Shutdown();
-    return 0;
+    return veduta::benchmarkMain(argc, argv, [](const veduta::MedianReporter &reporter) {
+        using namespace veduta;
+        std::printf("\n");
+        for (const char *arg : {"0", "10", "50"}) {
+            const char *what = arg[0] == '0' ? "full resolution" : arg[0] == '1' ? "maxError 0.1 m" : "maxError 0.5 m";
+            if (const auto *run = reporter.find(std::string("BM_RenderReady1km/") + arg))
+                std::printf("1 km² at 1 m, %s: mesh + BVH %.2f s (target <= 1 s)\n", what,
+                            run->GetAdjustedRealTime() / 1000);
+            if (const auto *run = reporter.find(std::string("BM_RenderReady34x20km/") + arg))
+                std::printf("34 × 20 km at 10 m, %s: read + mesh + BVH %.2f s (target <= 10 s)\n", what,
+                            run->GetAdjustedRealTime() / 1000);
+        }
+        rusage usage{};
+        getrusage(RUSAGE_SELF, &usage);
+        std::printf("peak resident memory of this run (all benchmarks, fixture included): %.2f GB (target <= 3 GB)\n",
+                    double(usage.ru_maxrss) / 1e6);
+    });
 }
