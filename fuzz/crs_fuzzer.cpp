@@ -18,10 +18,13 @@ std::string_view nextLine(std::string_view &text) {
     return line;
 }
 
+// The next number of `text` into `value`, which stays as it was unless it is a finite number.
 bool readNumber(std::string_view &text, double &value) {
     while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
-    auto [stop, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (error != std::errc() || !std::isfinite(value)) return false;
+    double read = 0;
+    auto [stop, error] = std::from_chars(text.data(), text.data() + text.size(), read);
+    if (error != std::errc() || !std::isfinite(read)) return false;
+    value = read;
     text.remove_prefix(size_t(stop - text.data()));
     return true;
 }
