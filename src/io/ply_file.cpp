@@ -242,7 +242,9 @@ class PlyReader {
                 for (double k = 0; k < count; ++k) {
                     double index = value(property.type);
                     if (corners) {
-                        if (index < 0) fail(fmt::format("face {} refers to vertex {}", item, index));
+                        // NaN fails this too; a float index may be any number.
+                        if (!(index >= 0 && index < 4294967296.0))
+                            fail(fmt::format("face {} refers to vertex {}", item, index));
                         polygon.push_back(uint32_t(index));
                     }
                 }

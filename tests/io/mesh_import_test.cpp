@@ -66,6 +66,14 @@ TEST_F(MeshImport, PlyCountsTheFileCannotHoldAreRefusedAtOnce) {
               0u);
 }
 
+// Found by fuzz/mesh_ply: a face index beyond 32 bits was converted to one (undefined).
+TEST_F(MeshImport, PlyFaceIndexBeyondAnyVertexIsRefused) {
+    std::string body = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 6.7e62\n";
+    auto file = folder_.write("far_index.ply", kQuadHeader + body);
+    std::string error = test::inputErrorOf([&] { importMesh(file); });
+    EXPECT_EQ(error.rfind(file.string() + ":14: face 0 refers to vertex 6.7e+62", 0), 0u) << error;
+}
+
 TEST_F(MeshImport, PlyVertexBeyondSinglePrecisionIsRefused) {
     std::string body = "0 0 0\n1e39 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n";
     std::string header = kQuadHeader;
