@@ -67,11 +67,18 @@ std::optional<Polygon> bevel(Vec2f from, Vec2f node, Vec2f to, float halfWidth) 
         float length = std::hypot(d.x, d.y);
         return Point(node.x + side * -d.y / length * halfWidth, node.y + side * d.x / length * halfWidth);
     };
+    // In float the corners may fall onto the node or onto one line with it (a tiny width, far
+    // coordinates): such a bevel covers nothing, and is no polygon CGAL takes.
+    Point apex(node.x, node.y), a = corner(in), b = corner(out);
+    switch (CGAL::orientation(apex, a, b)) {
+    case CGAL::COLLINEAR: return std::nullopt;
+    case CGAL::CLOCKWISE: std::swap(a, b); break;
+    default: break;
+    }
     Polygon p;
-    p.push_back(Point(node.x, node.y));
-    p.push_back(corner(in));
-    p.push_back(corner(out));
-    if (p.orientation() == CGAL::CLOCKWISE) p.reverse_orientation();
+    p.push_back(apex);
+    p.push_back(a);
+    p.push_back(b);
     return p;
 }
 

@@ -5,7 +5,10 @@
 #include <cmath>
 #include <random>
 
+#include "city/generate_city.h"
+#include "city/osm_import.h"
 #include "city/street_geometry.h"
+#include "test_paths.h"
 
 namespace veduta {
 namespace {
@@ -154,6 +157,14 @@ TEST(StreetGeometry, DiagonalAndCrossingStreetsGiveWholeSurfaces) {
         SCOPED_TRACE(n);
         expectWholeSurface(network, streetGeometry(network));
     }
+}
+
+// Found by fuzz/osm: at a gentle bend the bevel's corners, rounded to float, fell onto one line
+// with the node, and CGAL refused the degenerate triangle.
+TEST(StreetGeometry, ADegenerateBevelIsLeftOut) {
+    CityData city = importOsm(test::sourceFile("fuzz/regressions/osm/degenerate_bevel_triangle.osm"), {});
+    Mesh mesh = streetGeometry(streetNetworkOf(city));
+    EXPECT_GT(mesh.triangleCount(), 0u);
 }
 
 }  // namespace
