@@ -8,6 +8,7 @@
 #include "app/memory_limit.h"
 #include "app/run_guarded.h"
 #include "app/version.h"
+#include "io/gdal_guard.h"
 
 int main(int argc, char **argv) {
     if (argc > 1 && std::strcmp(argv[1], "diff") == 0) return veduta::runDiffProgram(argc, argv);
@@ -15,6 +16,7 @@ int main(int argc, char **argv) {
     // what ran out, where the kernel's OOM killer would end it without a word.
     try {
         veduta::limitMemory(veduta::memoryBudget());
+        veduta::gdalTimeLimit();  // a limit that does not read is an error now, not at the first GDAL file
     } catch (const std::invalid_argument &e) {
         std::fprintf(stderr, "veduta: error: %s\n", e.what());
         return veduta::kExitBadUsage;

@@ -332,18 +332,12 @@ class OsmImporter {
         return {e, n};
     }
 
-    Vec2f local(const GeographicPoint &p) const {
-        auto [e, n] = eastNorth(p);
-        return {float(e), float(n)};
-    }
-
     void warn(const FileLoc &loc, const std::string &message) {
         city_.warnings.push_back(fmt::format("{}: {}", loc.toString(), message));
     }
 
-    // The index of the street point at `p`, a new one unless one lies within kMergeDistance.
-    uint32_t streetPoint(const GeographicPoint &p, const FileLoc &loc) {
-        auto [e, n] = eastNorth(p);
+    // The index of the street point at (e, n), a new one unless one lies within kMergeDistance.
+    uint32_t streetPoint(double e, double n, const FileLoc &loc) {
         int64_t cellE = std::llround(e / kMergeDistance), cellN = std::llround(n / kMergeDistance);
         for (int64_t de = -1; de <= 1; ++de)
             for (int64_t dn = -1; dn <= 1; ++dn) {
@@ -371,29 +365,35 @@ class OsmImporter {
         return classWidth(highway);
     }
 
-    // Whether every point lies within a city's reach of the origin (kMaxCityReach); if not,
-    // a warning that the way is skipped.
-    bool withinReach(const std::vector<GeographicPoint> &points, const FileLoc &loc) {
+    // The points east and north of the origin, each projected once; nothing (with a warning
+    // that the way is skipped) when one lies beyond a city's reach of the origin (kMaxCityReach).
+    std::optional<std::vector<std::pair<double, double>>> projected(const std::vector<GeographicPoint> &points,
+                                                                    const FileLoc &loc) {
+        std::vector<std::pair<double, double>> result;
+        result.reserve(points.size());
         for (const GeographicPoint &p : points) {
             auto [e, n] = eastNorth(p);
-            if (std::abs(e) <= kMaxCityReach && std::abs(n) <= kMaxCityReach) continue;
-            warn(loc,
-                 fmt::format("its node at {:.7f} {:.7f} lies {:.0f} km from the data's origin, beyond the "
-                             "{:g} km a city reaches; it is skipped",
-                             p.latitude, p.longitude, std::hypot(e, n) / 1000, kMaxCityReach / 1000));
-            return false;
+            if (!(std::abs(e) <= kMaxCityReach && std::abs(n) <= kMaxCityReach)) {
+                warn(loc,
+                     fmt::format("its node at {:.7f} {:.7f} lies {:.0f} km from the data's origin, beyond the "
+                                 "{:g} km a city reaches; it is skipped",
+                                 p.latitude, p.longitude, std::hypot(e, n) / 1000, kMaxCityReach / 1000));
+                return std::nullopt;
+            }
+            result.emplace_back(e, n);
         }
-        return true;
+        return result;
     }
 
     void addStreet(const OsmLine &line) {
-        if (!withinReach(line.points, line.loc)) return;
+        std::optional<std::vector<std::pair<double, double>>> points = projected(line.points, line.loc);
+        if (!points) return;
         std::optional<float> width = streetWidth(line);
         float reach = width.value_or(city_.streetWidth) / 2 + float(kStreetEdgeMargin);
         auto way = uint32_t(streetWays_++);
         uint32_t previous = 0;
-        for (size_t i = 0; i < line.points.size(); ++i) {
-            uint32_t point = streetPoint(line.points[i], line.loc);
+        for (size_t i = 0; i < points->size(); ++i) {
+            uint32_t point = streetPoint((*points)[i].first, (*points)[i].second, line.loc);
             if (i > 0) {
                 const CityPoint &p = city_.points[previous], &q = city_.points[point];
                 streetSegments_.add({{float(p.e), float(p.n)}, {float(q.e), float(q.n)}, reach, way});
@@ -407,9 +407,10 @@ class OsmImporter {
     // A ring in the local frame, counter-clockwise; nothing (with a warning) when it is no
     // simple polygon.
     std::optional<std::vector<Vec2f>> outline(const GeoRing &ring, const FileLoc &loc) {
-        if (!withinReach(ring, loc)) return std::nullopt;
+        std::optional<std::vector<std::pair<double, double>>> projectedRing = projected(ring, loc);
+        if (!projectedRing) return std::nullopt;
         std::vector<Vec2f> points;
-        for (const GeographicPoint &p : ring) points.push_back(local(p));
+        for (auto [e, n] : *projectedRing) points.push_back({float(e), float(n)});
         if (points.size() < 3) {
             warn(loc, fmt::format("an outline of {} points is no polygon; it is skipped", points.size()));
             return std::nullopt;

@@ -119,9 +119,12 @@ Dgm readRasterGrid(const std::filesystem::path &path, int warpTo) {
         GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
     if (!file) throw InputError(loc, "GDAL cannot read this as a raster" + messages.detail());
     if (file->GetRasterCount() < 1) throw InputError(loc, "the raster has no band");
-    int warpedFrom = warpTo != 0 && isGeographic(*file) ? epsgOf(*file) : 0;
-    if (warpTo != 0 && isGeographic(*file) && warpedFrom == 0)
-        throw InputError(loc, "the DGM is in a geographic CRS without an EPSG code; veduta warps only known CRSs");
+    int warpedFrom = 0;
+    if (warpTo != 0 && isGeographic(*file)) {
+        warpedFrom = epsgOf(*file);
+        if (warpedFrom == 0)
+            throw InputError(loc, "the DGM is in a geographic CRS without an EPSG code; veduta warps only known CRSs");
+    }
     // Declared after `file`, which it reads, so that it is closed first.
     GDALDatasetUniquePtr warped = warpedFrom ? warpedInto(*file, warpTo, loc, messages) : nullptr;
     GDALDataset *dataset = warped ? warped.get() : file.get();

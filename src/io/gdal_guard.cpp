@@ -3,8 +3,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 #include <string_view>
+
+#include <fmt/format.h>
 
 #include "core/error.h"
 #include "core/input_file.h"
@@ -87,6 +90,8 @@ std::chrono::milliseconds gdalTimeLimit() {
         double seconds = std::strtod(text, &end);
         if (end != text && *end == '\0' && seconds > 0 && seconds < 1e9)
             return std::chrono::milliseconds(int64_t(seconds * 1000));
+        throw std::invalid_argument(
+            fmt::format("VEDUTA_GDAL_TIME_LIMIT is '{}', not a positive number of seconds such as 600", text));
     }
     return std::chrono::seconds(300);
 }

@@ -18,8 +18,9 @@ namespace veduta {
 // like XML pass: their drivers do not parse DTDs.
 void checkFileForGdal(const std::filesystem::path &file);
 
-// How long GDAL may read one file: VEDUTA_GDAL_TIME_LIMIT seconds if that is set (a positive
-// number), else 300 s, far more than any real file of veduta's formats has needed.
+// How long GDAL may read one file: VEDUTA_GDAL_TIME_LIMIT seconds if that is set, else 300 s,
+// far more than any real file of veduta's formats has needed. Throws std::invalid_argument
+// when the variable is no positive number.
 std::chrono::milliseconds gdalTimeLimit();
 
 // Held while GDAL opens and reads `file`. A read that outlasts the limit cannot be stopped

@@ -44,6 +44,9 @@ check "over the memory budget writes nothing" test ! -e "$work/huge.exr"
 VEDUTA_MAX_MEMORY=lots run info
 check "a budget that is no size exits 2" rc_is 2
 check "a budget that is no size is named" err_has "VEDUTA_MAX_MEMORY is 'lots', not a size"
+VEDUTA_GDAL_TIME_LIMIT=soon run info
+check "a GDAL time limit that is no number exits 2" rc_is 2
+check "a GDAL time limit that is no number is named" err_has "VEDUTA_GDAL_TIME_LIMIT is 'soon', not a positive number"
 VEDUTA_MAX_MEMORY=1.5G run render --res 64x48 --spp 1 -q -o "$work/small.exr"
 check "a render within the budget runs" rc_is 0
 
