@@ -17,7 +17,7 @@ if [ $# -lt 1 ] || ! [[ $1 =~ ^[0-9]+$ ]]; then
 fi
 seconds=$1
 shift
-all_targets=(scene material rules city_data osm edbs xyz asc mesh_obj mesh_ply mesh_gltf checkpoint crs)
+all_targets=(scene material rules city_data osm citygml edbs xyz asc mesh_obj mesh_ply mesh_gltf checkpoint crs)
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=("${all_targets[@]}")
 
@@ -33,6 +33,7 @@ seed_files() {
         rules) ls rules/*/*.xml | grep -v materials.xml ;;
         city_data) ls cities/*.xml ;;
         osm) ls data/*/*.osm tests/data/osm/*.osm "$shared"/osm/*.osm ;;
+        citygml) ls "$shared"/citygml/*.gml "$shared"/citygml/*.xml ;;
         edbs) ls "$shared"/edbs/*.edbs ;;
         xyz) ls "$shared"/dgm/*.xyz ;;
         asc) ls data/*/*.asc "$shared"/dgm/*.asc ;;

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "assembly/build_environment.h"
+#include "city/citygml_buildings.h"
 #include "city/generate_buildings.h"
 #include "city/generate_city.h"
 #include "geo/generate_landscape.h"
@@ -84,6 +85,8 @@ class SceneAssembler {
             within(group.loc, "<buildings>",
                    [&] { generateBuildings(group, seedOf(group.seed), ground, builder_, warnings_); });
         }
+        for (const CityGmlDesc &gml : d_.cityGml)
+            within(gml.loc, "<citygml>", [&] { generateCityGml(gml, d_.georeference, builder_, warnings_); });
         for (size_t i = 0; i < d_.cities.size(); ++i) {
             within(d_.cities[i].loc, "<city>", [&] {
                 generateCity(d_.cities[i], cities[i], seedOf(d_.cities[i].seed), landscape ? &*landscape : nullptr,

@@ -30,7 +30,11 @@ class CityDataReader {
     CityData read() {
         XmlElement root(doc_, doc_.root());
         if (root.name() != "CityData")
-            root.fail(fmt::format("the root element is <{}>, expected <CityData>", root.name()));
+            root.fail(root.name().ends_with("CityModel")
+                          ? fmt::format("the root element is <{}>: this is CityGML, which a scene reads with "
+                                        "<citygml file=\"…\"/> (docs/citygml.md), not as a <city>",
+                                        root.name())
+                          : fmt::format("the root element is <{}>, expected <CityData>", root.name()));
         root.string("xmlns:xsi", "");  // Bilke's files name their schema; nothing to check
         root.string("xsi:noNamespaceSchemaLocation", "");
         root.checkAllRead();

@@ -149,6 +149,20 @@ struct CityDesc {
     uint32_t objectId = 0;
 };
 
+// A <citygml> element: the buildings of a CityGML file (docs/citygml.md), placed at their map
+// coordinates through the scene's georeference.
+struct CityGmlDesc {
+    FileLoc loc;
+    std::filesystem::path file;  // resolved against the scene's folder
+    FileLoc fileLoc;
+    // The CRS of the file's coordinates when the file names none (srsName); 0: none given.
+    int epsg = 0;
+    FileLoc crsLoc;
+    // The LoDs read: each building at the highest of them it has.
+    unsigned minLod = 1, maxLod = 2;
+    uint32_t objectId = 0;
+};
+
 // A data file a <landscape> reads, with the CRS of its coordinates.
 struct DataFileDesc {
     std::filesystem::path file;  // resolved against the scene's folder
@@ -196,6 +210,7 @@ struct SceneDescription {
     std::vector<InstanceDesc> instances;
     std::vector<BuildingGroupDesc> buildingGroups;
     std::vector<CityDesc> cities;
+    std::vector<CityGmlDesc> cityGml;
     std::optional<LandscapeDesc> landscape;
 };
 

@@ -69,6 +69,8 @@ class SceneFileReader {
             readBuildings(e);
         } else if (n == "city") {
             readCity(e);
+        } else if (n == "citygml") {
+            readCityGml(e);
         } else if (n == "landscape") {
             readLandscape(e);
         } else if (isGeometry(n)) {
@@ -359,6 +361,23 @@ class SceneFileReader {
         scene_.cities.push_back(std::move(city));
     }
 
+    void readCityGml(const XmlElement &e) {
+        CityGmlDesc gml;
+        gml.loc = e.loc();
+        gml.file = pathAttribute(e, "file");
+        gml.fileLoc = e.attributeLoc("file");
+        if (e.has("crs")) {
+            gml.epsg = supportedCrsAttribute(e, "crs");
+            gml.crsLoc = e.attributeLoc("crs");
+        }
+        if (e.has("lod")) {
+            gml.minLod = gml.maxLod = unsigned(e.integer("lod", 2, 0, 4));
+        }
+        readObjectId(e, gml.loc);
+        e.checkLeaf();
+        scene_.cityGml.push_back(std::move(gml));
+    }
+
     void readLandscape(const XmlElement &e) {
         if (scene_.landscape) e.fail("the scene has a <landscape> already; give several <dgm> tiles inside one");
         LandscapeDesc land;
@@ -574,6 +593,7 @@ class SceneFileReader {
             for (FacadeDesc &f : group.facades) byPlace[{f.loc.line, f.loc.column}] = &f.objectId;
         }
         for (CityDesc &c : scene_.cities) byPlace[{c.loc.line, c.loc.column}] = &c.objectId;
+        for (CityGmlDesc &c : scene_.cityGml) byPlace[{c.loc.line, c.loc.column}] = &c.objectId;
         if (scene_.landscape)
             byPlace[{scene_.landscape->loc.line, scene_.landscape->loc.column}] = &scene_.landscape->objectId;
         uint32_t next = 1;

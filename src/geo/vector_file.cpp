@@ -310,8 +310,9 @@ AtkisData readVectorFile(const std::filesystem::path &path, std::vector<std::str
     if (driverName == "GML" &&
         std::string_view(copy->bytes()).substr(0, 1 << 20).find("www.opengis.net/citygml") != std::string_view::npos)
         throw InputError(loc,
-                         "is CityGML (3D city models), not an ATKIS file; an ATKIS layer is NAS, EDBS, a "
-                         "Shapefile or a GeoPackage of the Basis-DLM");
+                         "is CityGML (3D city models), not an ATKIS file: a scene reads it with <citygml "
+                         "file=\"…\"/> (docs/citygml.md); an ATKIS layer is NAS, EDBS, a Shapefile or a "
+                         "GeoPackage of the Basis-DLM");
     std::string openName = copy ? copy->name() : path.string();
     AtkisData data;
     {

@@ -14,8 +14,8 @@
 namespace veduta {
 
 // Throws InputError naming the file when it is not a regular file, or when it is XML whose
-// prolog holds a <!DOCTYPE> (the message gives its line and column). Files that do not start
-// like XML pass: their drivers do not parse DTDs.
+// prolog holds a <!DOCTYPE> (io/xml_prolog.h; the message gives its line and column). Files
+// that do not start like XML pass: their drivers do not parse DTDs.
 void checkFileForGdal(const std::filesystem::path &file);
 
 // How long GDAL may read one file: VEDUTA_GDAL_TIME_LIMIT seconds if that is set, else 300 s,

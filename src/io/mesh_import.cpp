@@ -87,6 +87,10 @@ Mesh importMesh(const std::filesystem::path &file) {
     // Assimp's PLY reader loops for ever on a malformed header line ("elemen 0") or a cut
     // body; veduta's own reader (io/ply_file.h) names the line instead.
     if (lowercaseExtension(file) == ".ply") return toMesh(readPlyFile(file), file);
+    if (lowercaseExtension(file) == ".gml")
+        throw InputError({file.string()},
+                         "a .gml file is no mesh; CityGML buildings come into a scene with "
+                         "<citygml file=\"…\"/> (docs/citygml.md)");
     Assimp::Importer importer;
     // Normals are the file's own; we do not invent smooth normals for faceted models. Assimp
     // checks what its reader built (face indices, counts) before the other steps use it.

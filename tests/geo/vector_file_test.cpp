@@ -291,9 +291,9 @@ TEST(VectorFile, CityGmlIsNoAtkisLayer) {
     } catch (const InputError &e) {
         EXPECT_EQ(std::string(e.what()),
                   file.string() +
-                      ": is CityGML (3D city models), not an ATKIS file; an ATKIS "
-                      "layer is NAS, EDBS, a Shapefile or a GeoPackage of the "
-                      "Basis-DLM");
+                      ": is CityGML (3D city models), not an ATKIS file: a scene reads it with "
+                      "<citygml file=\"…\"/> (docs/citygml.md); an ATKIS layer is NAS, EDBS, a "
+                      "Shapefile or a GeoPackage of the Basis-DLM");
     }
 }
 

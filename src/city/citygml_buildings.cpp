@@ -1,0 +1,121 @@
+#include "city/citygml_buildings.h"
+
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "core/error.h"
+#include "core/hash.h"
+#include "geodesy/map_projection.h"
+
+namespace veduta {
+
+namespace {
+
+// A file's colours as materials: one per distinct colour, named by it.
+Material appearanceMaterial(const Vec3f &diffuse) {
+    return Material::lambertian(fmt::format("citygml/x3d/{:.3f},{:.3f},{:.3f}", diffuse.x, diffuse.y, diffuse.z),
+                                diffuse);
+}
+
+std::string envelopeCentre(const CityGmlModel &model) {
+    if (!model.envelopeLow || !model.envelopeHigh) return "the file's centre";
+    return fmt::format("{:.0f} {:.0f}", (model.envelopeLow->x + model.envelopeHigh->x) / 2,
+                       (model.envelopeLow->y + model.envelopeHigh->y) / 2);
+}
+
+Mesh buildingMesh(const CityGmlBuilding &building, const MapProjection &projection, const FileLoc &loc,
+                  RenderSceneBuilder &builder) {
+    Mesh mesh;
+    for (const CityGmlPolygon &polygon : building.polygons) {
+        auto first = uint32_t(mesh.positions.size());
+        for (const auto &ring : polygon.rings)
+            for (const CrsCoordinate &p : ring) {
+                try {
+                    mesh.positions.push_back(projection.toRender(p));
+                } catch (const std::out_of_range &e) {
+                    throw InputError(loc,
+                                     fmt::format("building {}, polygon {}: {}", building.id, polygon.id, e.what()));
+                }
+            }
+        for (uint32_t index : polygon.triangles) mesh.indices.push_back(first + index);
+        MaterialId material = builder.findOrAddMaterial(polygon.diffuse ? appearanceMaterial(*polygon.diffuse)
+                                                                        : cityGmlMaterial(polygon.kind));
+        mesh.triangleMaterials.insert(mesh.triangleMaterials.end(), polygon.triangles.size() / 3, material);
+    }
+    return mesh;
+}
+
+}  // namespace
+
+Material cityGmlMaterial(SurfaceKind kind) {
+    switch (kind) {
+    case SurfaceKind::Wall: return Material::lambertian("citygml/wall", {0.72f, 0.69f, 0.63f});
+    case SurfaceKind::Roof: return Material::lambertian("citygml/roof", {0.48f, 0.21f, 0.15f});
+    case SurfaceKind::Ground: return Material::lambertian("citygml/ground", {0.35f, 0.34f, 0.32f});
+    case SurfaceKind::Closure: return Material::lambertian("citygml/closure", {0.6f, 0.6f, 0.6f});
+    case SurfaceKind::Other: break;
+    }
+    return Material::lambertian("citygml/other", {0.6f, 0.58f, 0.55f});
+}
+
+uint32_t cityGmlBuildingId(const std::string &gmlId) {
+    constexpr uint32_t kIds = (1u << 24) - 1;  // what the float IndexBuilding pass holds exactly
+    return 1 + hashString(gmlId) % kIds;
+}
+
+int cityGmlEpsg(const CityGmlDesc &desc, const CityGmlModel &model) {
+    if (!model.srsName.empty() && model.epsg == 0)
+        throw InputError(desc.fileLoc,
+                         fmt::format("the file's srsName '{}' names no CRS veduta knows "
+                                     "(docs/coordinates.md lists them)",
+                                     model.srsName));
+    if (model.epsg != 0) {
+        try {
+            crsByEpsg(model.epsg);
+        } catch (const std::invalid_argument &e) {
+            throw InputError(desc.fileLoc, fmt::format("the file's srsName '{}': {}", model.srsName, e.what()));
+        }
+        if (desc.epsg != 0 && desc.epsg != model.epsg)
+            throw InputError(desc.crsLoc,
+                             fmt::format("crs EPSG:{} disagrees with the file's srsName '{}' (EPSG:{}); "
+                                         "leave crs out, or correct the file",
+                                         desc.epsg, model.srsName, model.epsg));
+        return model.epsg;
+    }
+    if (desc.epsg == 0)
+        throw InputError(desc.fileLoc,
+                         "the file names no CRS (no srsName on its model or envelope); give the "
+                         "<citygml> a crs=\"EPSG:…\"");
+    return desc.epsg;
+}
+
+uint32_t generateCityGml(const CityGmlDesc &desc, const std::optional<Georeference> &georeference,
+                         RenderSceneBuilder &builder, std::vector<std::string> &warnings) {
+    CityGmlModel model;
+    try {
+        model = readCityGml(desc.file, {desc.minLod, desc.maxLod});
+    } catch (const InputError &e) {  // it names the file; add where the scene names it
+        throw InputError(desc.fileLoc, e.what());
+    }
+    warnings.insert(warnings.end(), model.warnings.begin(), model.warnings.end());
+    int epsg = cityGmlEpsg(desc, model);
+    if (!georeference)
+        throw InputError(desc.loc,
+                         fmt::format("a <citygml> needs the scene's <georeference>, such as "
+                                     "<georeference crs=\"EPSG:{}\" origin=\"{}\"/>",
+                                     epsg, envelopeCentre(model)));
+    MapProjection projection(crsByEpsg(epsg), *georeference);
+    for (const CityGmlBuilding &building : model.buildings)
+        builder.addWorldMesh(buildingMesh(building, projection, desc.loc, builder), desc.objectId,
+                             cityGmlBuildingId(building.id));
+    if (model.buildings.empty())
+        warnings.push_back(fmt::format(
+            "{}: {} draws nothing: it holds {} building(s) with no polygon of LoD {} to {} and {} other city "
+            "object(s), which veduta does not draw",
+            desc.loc.toString(), desc.file.string(), model.buildingsWithoutGeometry, desc.minLod, desc.maxLod,
+            model.otherObjects));
+    return uint32_t(model.buildings.size());
+}
+
+}  // namespace veduta

@@ -1,0 +1,39 @@
+// The generator of a scene's <citygml>: the buildings of a CityGML file (city/citygml_file.h)
+// as meshes in the scene's frame, one object per building (docs/citygml.md).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "city/citygml_file.h"
+#include "description/scene_description.h"
+#include "geodesy/georeference.h"
+#include "scene/render_scene.h"
+
+namespace veduta {
+
+// The materials of surfaces without an appearance in the file, by kind; a scene's material of
+// the same name restyles them.
+Material cityGmlMaterial(SurfaceKind kind);
+
+// The building id (the IndexBuilding pass) of a CityGML building: a hash of its gml:id, from 1
+// to 2²⁴ − 1, which the float pass holds exactly.
+uint32_t cityGmlBuildingId(const std::string &gmlId);
+
+// The CRS of the model's coordinates: the file's srsName, else the element's crs=. Throws
+// InputError when neither names one, when srsName names a CRS veduta does not know, or when
+// the two disagree.
+int cityGmlEpsg(const CityGmlDesc &desc, const CityGmlModel &model);
+
+// Reads the element's file and adds each building as a world mesh with the element's object
+// id and cityGmlBuildingId, its coordinates placed through the georeference in double
+// (geodesy/map_projection.h). Polygons take the file's X3DMaterial colour when it gives one,
+// else cityGmlMaterial of their kind. The reader's warnings, and one when the file holds no
+// building to draw (saying how many objects it read and why), are appended. Returns how many
+// buildings it added. Throws InputError (the scene needs a georeference).
+uint32_t generateCityGml(const CityGmlDesc &desc, const std::optional<Georeference> &georeference,
+                         RenderSceneBuilder &builder, std::vector<std::string> &warnings);
+
+}  // namespace veduta

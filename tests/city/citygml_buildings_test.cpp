@@ -1,0 +1,115 @@
+// The <citygml> element: CityGML buildings placed in the scene's frame at their true size and
+// place, one object per building, and the errors a scene gets for what it lacks.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <limits>
+#include <set>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "assembly/build_scene.h"
+#include "city/citygml_buildings.h"
+#include "input_error.h"
+#include "shared_data.h"
+#include "test_paths.h"
+
+namespace veduta {
+namespace {
+
+RenderScene build(const std::string &xml, std::vector<std::string> *warnings = nullptr) {
+    return buildRenderScene(readSceneText(xml, "test.xml", test::sourceFile("scenes")), warnings);
+}
+
+std::string fzkScene(const std::string &file, const std::string &extra = "") {
+    return fmt::format(
+        "<scene version=\"1\"><georeference crs=\"EPSG:25832\" origin=\"458883 5438358\"/>"
+        "<citygml file=\"{}\"{}/></scene>",
+        file, extra);
+}
+
+TEST(CityGmlBuildings, TheFzkHouseStandsAtItsTrueSizeAndPlace) {
+    std::optional<std::filesystem::path> file = test::sharedDataFile("citygml/FZK-House-LoD2-KIT-IAI-KHH-V2.gml");
+    if (!file) GTEST_SKIP() << "../shared/data/citygml is not there";
+    RenderScene scene = build(fzkScene(file->string()));
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    const BakedMesh &house = scene.meshes[0];
+    EXPECT_EQ(house.buildingId, cityGmlBuildingId("UUID_d281adfc-4901-0f52-540b-4cc1a9325f82"));
+    Vec3f low(std::numeric_limits<float>::max()), high(-std::numeric_limits<float>::max());
+    for (const Vec3f &p : house.mesh.positions) {
+        low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
+        high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
+    }
+    // The file's envelope, 458877 5438353 −0.2 to 458889 5438363 6.3177, about the origin; the
+    // ridge where the file puts it, within 1 cm.
+    EXPECT_NEAR(low.x, -6, 1e-4);
+    EXPECT_NEAR(high.x, 6, 1e-4);
+    EXPECT_NEAR(low.y, -5, 1e-4);
+    EXPECT_NEAR(high.y, 5, 1e-4);
+    EXPECT_NEAR(low.z, -0.2, 1e-4);
+    EXPECT_NEAR(high.z, 6.31769145362398, 0.01);
+    // The north roof in the file's X3DMaterial (diffuse 0.996 0 0), the rest in the materials of
+    // their kinds.
+    std::set<std::string> materials;
+    for (MaterialId m : house.mesh.triangleMaterials) materials.insert(scene.materials[m].name);
+    EXPECT_EQ(
+        materials,
+        (std::set<std::string>{"citygml/x3d/0.996,0.000,0.000", "citygml/roof", "citygml/wall", "citygml/ground"}))
+        << fmt::format("{}", fmt::join(materials, ", "));
+}
+
+TEST(CityGmlBuildings, EachBavarianBuildingIsAnObjectOfItsOwnId) {
+    std::optional<std::filesystem::path> file = test::sharedDataFile("citygml/citygml_lod2_713_5322.xml");
+    if (!file) GTEST_SKIP() << "../shared/data/citygml is not there";
+    std::vector<std::string> warnings;
+    RenderScene scene = build(fmt::format("<scene version=\"1\"><georeference crs=\"EPSG:25832\" "
+                                          "origin=\"713500 5322750\"/><citygml file=\"{}\"/></scene>",
+                                          file->string()),
+                              &warnings);
+    ASSERT_EQ(scene.meshes.size(), 2u);
+    EXPECT_NE(scene.meshes[0].buildingId, scene.meshes[1].buildingId);
+    EXPECT_EQ(scene.meshes[0].objectId, scene.meshes[1].objectId);
+    EXPECT_FALSE(warnings.empty());  // libcitygml's, about the AdV externalReference
+}
+
+TEST(CityGmlBuildings, WhatTheSceneLacksIsSaid) {
+    std::string box = test::sourceFile("fuzz/corpus/citygml/lod1-box.gml");
+    std::string noGeoreference =
+        test::inputErrorOf([&] { build(fmt::format("<scene version=\"1\"><citygml file=\"{}\"/></scene>", box)); });
+    EXPECT_NE(noGeoreference.find("test.xml:1:20: a <citygml> needs the scene's <georeference>, such as "
+                                  "<georeference crs=\"EPSG:25832\" origin=\"500005 5400004\"/>"),
+              std::string::npos)
+        << noGeoreference;
+    std::string disagree = test::inputErrorOf([&] { build(fzkScene(box, " crs=\"EPSG:25833\"")); });
+    EXPECT_NE(disagree.find("crs EPSG:25833 disagrees with the file's srsName 'urn:ogc:def:crs:EPSG::25832'"),
+              std::string::npos)
+        << disagree;
+    std::vector<std::string> warnings;
+    RenderScene none = build(fzkScene(box, " lod=\"2\""), &warnings);
+    EXPECT_TRUE(none.meshes.empty());
+    ASSERT_FALSE(warnings.empty());
+    EXPECT_NE(warnings.back().find("draws nothing: it holds 1 building(s) with no polygon of LoD 2 to 2"),
+              std::string::npos)
+        << warnings.back();
+}
+
+TEST(CityGmlBuildings, CityGmlInTheWrongElementSaysWhereItBelongs) {
+    std::string box = test::sourceFile("fuzz/corpus/citygml/lod1-box.gml");
+    std::string asCity = test::inputErrorOf([&] {
+        build(
+            fmt::format("<scene version=\"1\"><city file=\"{}\" rules=\"../rules/gruenderzeit/FacadeStructure.xml\"/>"
+                        "</scene>",
+                        box));
+    });
+    EXPECT_NE(asCity.find("this is CityGML, which a scene reads with <citygml file=\"…\"/>"), std::string::npos)
+        << asCity;
+    std::string asMesh =
+        test::inputErrorOf([&] { build(fmt::format("<scene version=\"1\"><mesh file=\"{}\"/></scene>", box)); });
+    EXPECT_NE(asMesh.find("a .gml file is no mesh; CityGML buildings come into a scene with <citygml"),
+              std::string::npos)
+        << asMesh;
+}
+
+}  // namespace
+}  // namespace veduta
