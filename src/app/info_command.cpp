@@ -1,6 +1,7 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <unordered_set>
 
 #include "app/command_options.h"
 #include "app/commands.h"
@@ -18,6 +19,12 @@ void runInfo(const std::string &path) {
     uint64_t stored = 0;
     for (const BakedMesh &m : scene.meshes) stored += m.mesh.triangleCount();
     for (const Mesh &p : scene.prototypes) stored += p.triangleCount();
+    // Every generator (buildings, cities, CityGML) gives each building an id of its own.
+    std::unordered_set<uint32_t> buildings;
+    for (const BakedMesh &m : scene.meshes)
+        if (m.buildingId != 0) buildings.insert(m.buildingId);
+    for (const Instance &i : scene.instances)
+        if (i.buildingId != 0) buildings.insert(i.buildingId);
     Bvh bvh(scene);
 
     std::printf("scene: %s\n", path.empty() ? "<built-in default scene>" : path.c_str());
@@ -27,6 +34,7 @@ void runInfo(const std::string &path) {
     std::printf("meshes: %zu\n", scene.meshes.size());
     std::printf("prototypes: %zu\n", scene.prototypes.size());
     std::printf("instances: %zu\n", scene.instances.size());
+    std::printf("buildings: %zu\n", buildings.size());
     std::printf("stored_triangles: %llu\n", (unsigned long long)stored);
     std::printf("effective_triangles: %llu\n", (unsigned long long)scene.effectiveTriangleCount());
     std::printf("bvh_build_seconds: %.3f\n", bvh.stats().buildSeconds);

@@ -120,6 +120,18 @@ run info "$source/scenes/bench/instances-10k.xml"
 check "10k instances" out_has "instances: 10000"
 check "10k effective triangles" out_has "effective_triangles: 100000002"
 
+# A CityGML file: its building counted by info; given to atkis info, pointed to <citygml>.
+cat >"$work/citygml.xml" <<XML
+<scene version="1"><georeference crs="EPSG:25832" origin="500005 5400004"/>
+<citygml file="$source/fuzz/corpus/citygml/lod1-box.gml"/></scene>
+XML
+run info "$work/citygml.xml"
+check "info on CityGML exits 0" rc_is 0
+check "info counts the CityGML building" out_line "buildings: 1"
+run atkis info "$source/fuzz/corpus/citygml/lod1-box.gml"
+check "CityGML as ATKIS exits 1" rc_is 1
+check "CityGML as ATKIS points to <citygml>" err_has "is CityGML (3D city models), not an ATKIS file: a scene reads it with <citygml"
+
 # A scene with a mesh file renders.
 cat >"$work/meshes.xml" <<XML
 <scene>
