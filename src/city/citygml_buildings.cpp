@@ -1,5 +1,6 @@
 #include "city/citygml_buildings.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -22,6 +23,25 @@ std::string envelopeCentre(const CityGmlModel &model) {
     if (!model.envelopeLow || !model.envelopeHigh) return "the file's centre";
     return fmt::format("{:.0f} {:.0f}", (model.envelopeLow->x + model.envelopeHigh->x) / 2,
                        (model.envelopeLow->y + model.envelopeHigh->y) / 2);
+}
+
+// Whether the centre of the building's bounding box lies in `box` (E0 N0 E1 N1 of the scene's CRS).
+bool centreWithin(const CityGmlBuilding &building, const MapProjection &projection, const std::array<double, 4> &box,
+                  const FileLoc &loc) {
+    double low[2] = {1e300, 1e300}, high[2] = {-1e300, -1e300};
+    for (const CityGmlPolygon &polygon : building.polygons)
+        for (const CrsCoordinate &p : polygon.rings.front()) {
+            low[0] = std::min(low[0], p.x), high[0] = std::max(high[0], p.x);
+            low[1] = std::min(low[1], p.y), high[1] = std::max(high[1], p.y);
+        }
+    MapPoint centre;
+    try {
+        centre = projection.toScene({(low[0] + high[0]) / 2, (low[1] + high[1]) / 2});
+    } catch (const std::out_of_range &e) {
+        throw InputError(loc, fmt::format("building {}: {}", building.id, e.what()));
+    }
+    return centre.easting >= box[0] && centre.easting <= box[2] && centre.northing >= box[1] &&
+        centre.northing <= box[3];
 }
 
 Mesh buildingMesh(const CityGmlBuilding &building, const MapProjection &projection, const FileLoc &loc,
@@ -106,16 +126,23 @@ uint32_t generateCityGml(const CityGmlDesc &desc, const std::optional<Georeferen
                                      "<georeference crs=\"EPSG:{}\" origin=\"{}\"/>",
                                      epsg, envelopeCentre(model)));
     MapProjection projection(crsByEpsg(epsg), *georeference);
-    for (const CityGmlBuilding &building : model.buildings)
+    uint32_t placed = 0;
+    for (const CityGmlBuilding &building : model.buildings) {
+        if (desc.bbox && !centreWithin(building, projection, *desc.bbox, desc.loc)) continue;
         builder.addWorldMesh(buildingMesh(building, projection, desc.loc, builder), desc.objectId,
                              cityGmlBuildingId(building.id));
+        ++placed;
+    }
+    if (desc.bbox)
+        warnings.push_back(fmt::format("{}: the bbox keeps {} of the file's {} buildings", desc.bboxLoc.toString(),
+                                       placed, model.buildings.size()));
     if (model.buildings.empty())
         warnings.push_back(fmt::format(
             "{}: {} draws nothing: it holds {} building(s) with no polygon of LoD {} to {} and {} other city "
             "object(s), which veduta does not draw",
             desc.loc.toString(), desc.file.string(), model.buildingsWithoutGeometry, desc.minLod, desc.maxLod,
             model.otherObjects));
-    return uint32_t(model.buildings.size());
+    return placed;
 }
 
 }  // namespace veduta

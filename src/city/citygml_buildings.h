@@ -27,7 +27,8 @@ uint32_t cityGmlBuildingId(const std::string &gmlId);
 // the two disagree.
 int cityGmlEpsg(const CityGmlDesc &desc, const CityGmlModel &model);
 
-// Reads the element's file and adds each building as a world mesh with the element's object
+// Reads the element's file and adds each building (within the element's bbox, when it has
+// one: a warning says how many it keeps) as a world mesh with the element's object
 // id and cityGmlBuildingId, its coordinates placed through the georeference in double
 // (geodesy/map_projection.h). Polygons take the file's X3DMaterial colour when it gives one,
 // else cityGmlMaterial of their kind. The reader's warnings, and one when the file holds no

@@ -2,6 +2,7 @@
 // geometry. docs/scene-format.md documents the XML it comes from.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -160,6 +161,10 @@ struct CityGmlDesc {
     FileLoc crsLoc;
     // The LoDs read: each building at the highest of them it has.
     unsigned minLod = 1, maxLod = 2;
+    // bbox="E0 N0 E1 N1": only the buildings whose bounding box's centre lies in this rectangle
+    // of the scene's CRS are placed; unset: all.
+    std::optional<std::array<double, 4>> bbox;
+    FileLoc bboxLoc;
     uint32_t objectId = 0;
 };
 

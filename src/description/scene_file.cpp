@@ -370,8 +370,13 @@ class SceneFileReader {
             gml.epsg = supportedCrsAttribute(e, "crs");
             gml.crsLoc = e.attributeLoc("crs");
         }
-        if (e.has("lod")) {
-            gml.minLod = gml.maxLod = unsigned(e.integer("lod", 2, 0, 4));
+        if (e.has("lod")) gml.minLod = gml.maxLod = unsigned(e.integer("lod", 2, 0, 4));
+        if (e.has("bbox")) {
+            std::vector<double> box = e.doubles("bbox");
+            if (box.size() != 4 || !(box[0] < box[2]) || !(box[1] < box[3]))
+                e.failAt("bbox", "bbox takes four numbers, E0 N0 E1 N1 with E0 < E1 and N0 < N1");
+            gml.bbox = std::array<double, 4>{box[0], box[1], box[2], box[3]};
+            gml.bboxLoc = e.attributeLoc("bbox");
         }
         readObjectId(e, gml.loc);
         e.checkLeaf();

@@ -73,6 +73,24 @@ TEST(CityGmlBuildings, EachBavarianBuildingIsAnObjectOfItsOwnId) {
     EXPECT_FALSE(warnings.empty());  // libcitygml's, about the AdV externalReference
 }
 
+TEST(CityGmlBuildings, TheBoundingBoxKeepsTheBuildingsCentredInIt) {
+    std::optional<std::filesystem::path> file = test::sharedDataFile("citygml/citygml_lod2_713_5322.xml");
+    if (!file) GTEST_SKIP() << "../shared/data/citygml is not there";
+    auto scene = [&](const std::string &bbox, std::vector<std::string> &warnings) {
+        return build(fmt::format("<scene version=\"1\"><georeference crs=\"EPSG:25832\" origin=\"713500 5322750\"/>"
+                                 "<citygml file=\"{}\" bbox=\"{}\"/></scene>",
+                                 file->string(), bbox),
+                     &warnings);
+    };
+    std::vector<std::string> all, west, none;
+    EXPECT_EQ(scene("713000 5322000 714000 5323000", all).meshes.size(), 2u);
+    EXPECT_NE(all.back().find("the bbox keeps 2 of the file's 2 buildings"), std::string::npos) << all.back();
+    // The envelope spans 713229 to 713795: the west half holds one of the two.
+    EXPECT_EQ(scene("713000 5322000 713500 5323000", west).meshes.size(), 1u);
+    EXPECT_EQ(scene("0 0 1 1", none).meshes.size(), 0u);
+    EXPECT_NE(test::inputErrorOf([&] { scene("1 2 0 3", none); }).find("bbox takes four numbers"), std::string::npos);
+}
+
 TEST(CityGmlBuildings, WhatTheSceneLacksIsSaid) {
     std::string box = test::sourceFile("fuzz/corpus/citygml/lod1-box.gml");
     std::string noGeoreference =
