@@ -212,6 +212,13 @@ class SceneFileReader {
         return epsg;
     }
 
+    // An optional crs="EPSG:…" of a file element: its code (left 0 when absent) and place.
+    static void readFileCrs(const XmlElement &e, int &epsg, FileLoc &loc) {
+        if (!e.has("crs")) return;
+        epsg = supportedCrsAttribute(e, "crs");
+        loc = e.attributeLoc("crs");
+    }
+
     void readEnvironment(const XmlElement &e) {
         EnvironmentDesc &env = scene_.environment;
         env.loc = e.loc();
@@ -351,10 +358,7 @@ class SceneFileReader {
             city.rules = pathAttribute(e, "rules");
             city.rulesLoc = e.attributeLoc("rules");
         }
-        if (e.has("crs")) {
-            city.epsg = supportedCrsAttribute(e, "crs");
-            city.crsLoc = e.attributeLoc("crs");
-        }
+        readFileCrs(e, city.epsg, city.crsLoc);
         city.seed = seedOverride(e);
         readObjectId(e, city.loc);
         e.checkLeaf();
@@ -366,10 +370,7 @@ class SceneFileReader {
         gml.loc = e.loc();
         gml.file = pathAttribute(e, "file");
         gml.fileLoc = e.attributeLoc("file");
-        if (e.has("crs")) {
-            gml.epsg = supportedCrsAttribute(e, "crs");
-            gml.crsLoc = e.attributeLoc("crs");
-        }
+        readFileCrs(e, gml.epsg, gml.crsLoc);
         if (e.has("lod")) gml.minLod = gml.maxLod = unsigned(e.integer("lod", 2, 0, 4));
         if (e.has("bbox")) {
             std::vector<double> box = e.doubles("bbox");
@@ -495,10 +496,7 @@ class SceneFileReader {
         if (e.name() == "mesh") {
             g.meshFile = pathAttribute(e, "file");
             g.meshFileLoc = e.attributeLoc("file");
-            if (e.has("crs")) {
-                g.meshEpsg = supportedCrsAttribute(e, "crs");
-                g.meshCrsLoc = e.attributeLoc("crs");
-            }
+            readFileCrs(e, g.meshEpsg, g.meshCrsLoc);
         } else {
             g.shape = readShape(e);
         }
