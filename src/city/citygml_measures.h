@@ -1,0 +1,37 @@
+// What a CityGML building measures, as the procedural twin and `veduta compare` need it
+// (issue 18): its ground, eaves and ridge heights, its volume when its surfaces close, its
+// footprint, and its roof type from the AdV or CityGML code list.
+#pragma once
+
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "city/citygml_file.h"
+#include "city/roof_shapes.h"
+
+namespace veduta {
+
+struct BuildingMeasures {
+    double ground = 0;  // the lowest point of its ground surfaces (of every surface if it has none)
+    double eaves = 0;   // the lowest point of its roof surfaces (the top of its walls if it has none)
+    double ridge = 0;   // its highest point
+    // By the divergence theorem, when the building's triangles close (their vector area is
+    // below 10⁻⁶ of their area); unset for an open model, whose volume has no meaning.
+    std::optional<double> volume;
+    // The outlines of its ground surfaces in map coordinates, each counter-clockwise seen from
+    // above; a LoD1 solid's bottom face counts as its ground.
+    std::vector<std::vector<CrsCoordinate>> footprint;
+    std::optional<RoofType> roofType;  // from the roofType code; unset when there is none veduta builds
+};
+
+BuildingMeasures measureBuilding(const CityGmlBuilding &building);
+
+// The roof type of a roofType code: the AdV list of the German LoD2 buildings (1000 flat, 2100
+// shed, 3100 gable, 3200 hip, 3300 half-hip, 3400 mansard, 3500 pyramid …) and CityGML's
+// (SIG 3D) list (1000 flat, 1010 shed, 1030 gable, 1040 hip, 1050 half-hip, 1060 mansard,
+// 1070 pyramid …). Unset for a code of a roof veduta does not build (domes, arches, mixed) or
+// one it does not know.
+std::optional<RoofType> roofTypeOfCode(std::string_view code);
+
+}  // namespace veduta
