@@ -71,13 +71,14 @@ run_target() {
     local options=(-timeout=10 -rss_limit_mb=2560 -print_final_stats=1
         "-artifact_prefix=$work/artifacts/$target/")
     mkdir -p "$work/logs"
+    : >"$log"
     if [ ! -x "$fuzzer" ]; then
         echo "$target: $fuzzer is missing: cmake --preset fuzz && cmake --build --preset fuzz"
         return 1
     fi
     prepare_seeds "$target"
     local regressions=(fuzz/regressions/"$target"/*)
-    if [ -e "${regressions[0]}" ] && ! "$fuzzer" "${options[@]}" "${regressions[@]}" >"$log" 2>&1; then
+    if [ -e "${regressions[0]}" ] && ! "$fuzzer" "${options[@]}" "${regressions[@]}" >>"$log" 2>&1; then
         echo "$target: FAILED on a regression file (log: $log)"
         return 1
     fi
