@@ -230,7 +230,12 @@ class Reader {
             for (unsigned i = 0; i < geometry.getPolygonsCount(); ++i) {
                 std::shared_ptr<const citygml::Polygon> polygon = geometry.getPolygon(i);
                 if (!seen_.insert(polygon.get()).second) continue;
-                if (!polygon->getId().empty() && !seenIds_.insert(polygon->getId()).second) continue;
+                if (!polygon->getId().empty() && !seenIds_.insert(polygon->getId()).second) {
+                    ++model_.skippedPolygons;
+                    warn(fmt::format("building {}: a second polygon of gml:id {} is left out (gml:ids are unique)",
+                                     building.id, polygon->getId()));
+                    continue;
+                }
                 readPolygon(*polygon, kind, building);
             }
         }
@@ -307,7 +312,8 @@ class Reader {
     std::vector<std::string> themes_;  // the appearance themes, whose first material a polygon takes
     CityGmlModel &model_;
     // The polygons of the building read so far: a solid names its thematic surfaces' polygons
-    // through xlink:href, which libcitygml resolves to the same object (or one of the same id).
+    // through xlink:href, which libcitygml resolves to the same object. A file that gives two
+    // polygons one gml:id is broken; the second is left out with a warning.
     std::unordered_set<const citygml::Polygon *> seen_;
     std::unordered_set<std::string> seenIds_;
 };

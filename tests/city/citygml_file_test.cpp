@@ -3,6 +3,7 @@
 // a LoD1 box, a wall with a window hole, and hostile ones.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -10,6 +11,7 @@
 #include <string>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "city/citygml_file.h"
 #include "input_error.h"
@@ -173,6 +175,19 @@ TEST(CityGml, ALod1SolidTakesItsKindsFromItsNormals) {
     Sums s = sumsOf(box, {500000, 5400000, 0});
     EXPECT_NEAR(s.volume, 480, 1e-9);
     EXPECT_NEAR(s.area, 2 * (80 + 60 + 48), 1e-9);
+}
+
+TEST(CityGml, ASecondPolygonOfOneIdIsLeftOutWithAWarning) {
+    std::string box = lod1Box();
+    box.replace(box.find("gml:id=\"F1\""), 11, "gml:id=\"F0\"");
+    CityGmlModel model = readCityGml(writeFile("twice.gml", box));
+    ASSERT_EQ(model.buildings.size(), 1u);
+    EXPECT_EQ(model.buildings[0].polygons.size(), 5u);
+    EXPECT_EQ(model.skippedPolygons, 1u);
+    // libcitygml warns of the repeated id too; veduta says what it left out.
+    EXPECT_TRUE(std::any_of(model.warnings.begin(), model.warnings.end(), [](const std::string &w) {
+        return w.find("building BOX: a second polygon of gml:id F0 is left out") != std::string::npos;
+    })) << fmt::format("{}", fmt::join(model.warnings, "\n"));
 }
 
 TEST(CityGml, TheLodRangeChoosesWhatIsRead) {
