@@ -96,10 +96,10 @@ run_target() {
     echo "$target: ok, ${execs:-0} executions in $seconds s, coverage ${cov:-0} edges (${ft:-0} features), corpus $corpus files"
 }
 
-# libFuzzer's own leak check stays on, but for the library leaks fuzz/lsan_suppressions.txt
+# libFuzzer's own leak check stays on, but for the library leaks tests/lsan_suppressions.txt
 # names; the rest as the sanitize preset has it.
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1}
-export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$PWD/fuzz/lsan_suppressions.txt:print_suppressions=0}
+export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$PWD/tests/lsan_suppressions.txt:print_suppressions=0}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 export -f run_target prepare_seeds seed_files
 export seconds bin work shared
