@@ -8,13 +8,14 @@
 
 namespace veduta {
 
-namespace {
-
-// The triangles' signed volume about `o` and their vector and scalar areas.
-struct SurfaceSums {
-    double volume = 0, area = 0;
-    double vx = 0, vy = 0, vz = 0;
-};
+double groundArea(const std::vector<CrsCoordinate> &ring) {
+    double sum = 0;
+    for (size_t i = 0; i < ring.size(); ++i) {
+        const CrsCoordinate &a = ring[i], &b = ring[(i + 1) % ring.size()];
+        sum += (a.x - ring[0].x) * (b.y - ring[0].y) - (b.x - ring[0].x) * (a.y - ring[0].y);
+    }
+    return sum / 2;
+}
 
 SurfaceSums sumSurfaces(const CityGmlBuilding &building, const CrsCoordinate &o) {
     SurfaceSums s;
@@ -36,18 +37,6 @@ SurfaceSums sumSurfaces(const CityGmlBuilding &building, const CrsCoordinate &o)
     }
     return s;
 }
-
-// Twice the signed area of a ring's projection onto the ground.
-double groundArea2(const std::vector<CrsCoordinate> &ring) {
-    double sum = 0;
-    for (size_t i = 0; i < ring.size(); ++i) {
-        const CrsCoordinate &a = ring[i], &b = ring[(i + 1) % ring.size()];
-        sum += (a.x - ring[0].x) * (b.y - ring[0].y) - (b.x - ring[0].x) * (a.y - ring[0].y);
-    }
-    return sum;
-}
-
-}  // namespace
 
 BuildingMeasures measureBuilding(const CityGmlBuilding &building) {
     BuildingMeasures m;
@@ -72,7 +61,7 @@ BuildingMeasures measureBuilding(const CityGmlBuilding &building) {
     for (const CityGmlPolygon &polygon : building.polygons) {
         if (polygon.kind != SurfaceKind::Ground) continue;
         std::vector<CrsCoordinate> outline = polygon.rings.front();
-        if (groundArea2(outline) < 0) std::reverse(outline.begin(), outline.end());  // ground faces down
+        if (groundArea(outline) < 0) std::reverse(outline.begin(), outline.end());  // ground faces down
         m.footprint.push_back(std::move(outline));
     }
     m.roofType = roofTypeOfCode(building.roofType);

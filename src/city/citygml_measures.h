@@ -27,6 +27,18 @@ struct BuildingMeasures {
 
 BuildingMeasures measureBuilding(const CityGmlBuilding &building);
 
+// Sums over a building's triangles, taken about `o` so that map magnitudes cost no precision.
+struct SurfaceSums {
+    double volume = 0;              // by the divergence theorem: positive when the faces face out
+    double area = 0;                // of all triangles
+    double vx = 0, vy = 0, vz = 0;  // the vector area: zero for a closed surface
+};
+SurfaceSums sumSurfaces(const CityGmlBuilding &building, const CrsCoordinate &o);
+
+// The area of a ring's projection onto the ground, positive when it runs counter-clockwise
+// seen from above; about its first point, in double.
+double groundArea(const std::vector<CrsCoordinate> &ring);
+
 // The roof type of a roofType code: the AdV list of the German LoD2 buildings (1000 flat, 2100
 // shed, 3100 gable, 3200 hip, 3300 half-hip, 3400 mansard, 3500 pyramid …) and CityGML's
 // (SIG 3D) list (1000 flat, 1010 shed, 1030 gable, 1040 hip, 1050 half-hip, 1060 mansard,

@@ -14,38 +14,12 @@
 #include <fmt/ranges.h>
 
 #include "city/citygml_file.h"
+#include "city/citygml_measures.h"
 #include "input_error.h"
 #include "shared_data.h"
 
 namespace veduta {
 namespace {
-
-struct Sums {
-    double volume = 0;              // by the divergence theorem: positive when the faces face out
-    double area = 0;                // of all triangles
-    double vx = 0, vy = 0, vz = 0;  // the vector area: zero for a closed surface
-};
-
-// Sums over a building's triangles, about `o` so that map magnitudes cost no precision.
-Sums sumsOf(const CityGmlBuilding &building, const CrsCoordinate &o) {
-    Sums s;
-    for (const CityGmlPolygon &polygon : building.polygons) {
-        std::vector<CrsCoordinate> points;
-        for (const auto &ring : polygon.rings) points.insert(points.end(), ring.begin(), ring.end());
-        for (size_t t = 0; t + 2 < polygon.triangles.size(); t += 3) {
-            const CrsCoordinate &a = points[polygon.triangles[t]], &b = points[polygon.triangles[t + 1]],
-                                &c = points[polygon.triangles[t + 2]];
-            double ax = a.x - o.x, ay = a.y - o.y, az = a.z - o.z, bx = b.x - o.x, by = b.y - o.y, bz = b.z - o.z,
-                   cx = c.x - o.x, cy = c.y - o.y, cz = c.z - o.z;
-            double ux = bx - ax, uy = by - ay, uz = bz - az, wx = cx - ax, wy = cy - ay, wz = cz - az;
-            double nx = uy * wz - uz * wy, ny = uz * wx - ux * wz, nz = ux * wy - uy * wx;
-            s.vx += nx / 2, s.vy += ny / 2, s.vz += nz / 2;
-            s.area += std::sqrt(nx * nx + ny * ny + nz * nz) / 2;
-            s.volume += (ax * (by * cz - bz * cy) - ay * (bx * cz - bz * cx) + az * (bx * cy - by * cx)) / 6;
-        }
-    }
-    return s;
-}
 
 std::map<SurfaceKind, int> kindsOf(const CityGmlBuilding &building) {
     std::map<SurfaceKind, int> kinds;
@@ -133,7 +107,7 @@ TEST(CityGml, TheFzkHouseHasItsSevenSurfacesClosedAtItsTruePlace) {
     EXPECT_EQ(ridge, 6.31769145362398);  // the file's ridge, to the last digit it writes
 
     // A 12 × 10 m box from −0.2 m to the eaves at 3.431 m and a gable roof 2.887 m high on it.
-    Sums s = sumsOf(house, *model.envelopeLow);
+    SurfaceSums s = sumSurfaces(house, *model.envelopeLow);
     double eaves = 3.43094010767585, rise = 6.31769145362398 - eaves;
     EXPECT_NEAR(s.volume, 120 * (eaves + 0.2) + 0.5 * 10 * rise * 12, 1e-6);
     EXPECT_NEAR(std::hypot(s.vx, s.vy, s.vz), 0, 1e-6 * s.area);
@@ -149,7 +123,7 @@ TEST(CityGml, TheBavarianBuildingsCloseTheirSolidsFromXlinkSurfaces) {
     for (const CityGmlBuilding &building : model.buildings) {
         EXPECT_TRUE(building.id.starts_with("DEBY_LOD2_")) << building.id;
         EXPECT_EQ(building.lod, 2u);
-        Sums s = sumsOf(building, *model.envelopeLow);
+        SurfaceSums s = sumSurfaces(building, *model.envelopeLow);
         EXPECT_GT(s.volume, 10) << building.id;
         EXPECT_NEAR(std::hypot(s.vx, s.vy, s.vz), 0, 1e-6 * s.area) << building.id << ": the solid is not closed";
         for (auto [kind, n] : kindsOf(building)) surfaces += n;
@@ -172,7 +146,7 @@ TEST(CityGml, ALod1SolidTakesItsKindsFromItsNormals) {
               (std::map<SurfaceKind, int>{{SurfaceKind::Wall, 4}, {SurfaceKind::Roof, 1}, {SurfaceKind::Ground, 1}}));
     EXPECT_EQ(box.measuredHeight, 6);
     EXPECT_EQ(box.storeysAboveGround, 2);
-    Sums s = sumsOf(box, {500000, 5400000, 0});
+    SurfaceSums s = sumSurfaces(box, {500000, 5400000, 0});
     EXPECT_NEAR(s.volume, 480, 1e-9);
     EXPECT_NEAR(s.area, 2 * (80 + 60 + 48), 1e-9);
 }
@@ -207,7 +181,7 @@ TEST(CityGml, AHoleIsLeftOpen) {
     const CityGmlPolygon &wall = model.buildings[0].polygons[0];
     EXPECT_EQ(wall.kind, SurfaceKind::Wall);
     EXPECT_EQ(wall.rings.size(), 2u);
-    Sums s = sumsOf(model.buildings[0], {500000, 5400000, 0});
+    SurfaceSums s = sumSurfaces(model.buildings[0], {500000, 5400000, 0});
     EXPECT_NEAR(s.area, 60 - 4, 1e-9);
     EXPECT_NEAR(s.vy, -(60 - 4), 1e-9);  // facing south, as its outline runs
 }

@@ -9,15 +9,6 @@
 namespace veduta {
 namespace {
 
-double groundArea(const std::vector<CrsCoordinate> &ring) {
-    double sum = 0;
-    for (size_t i = 0; i < ring.size(); ++i) {
-        const CrsCoordinate &a = ring[i], &b = ring[(i + 1) % ring.size()];
-        sum += (a.x - ring[0].x) * (b.y - ring[0].y) - (b.x - ring[0].x) * (a.y - ring[0].y);
-    }
-    return sum / 2;
-}
-
 TEST(CityGmlMeasures, TheFzkHouse) {
     std::optional<std::filesystem::path> file = test::sharedDataFile("citygml/FZK-House-LoD2-KIT-IAI-KHH-V2.gml");
     if (!file) GTEST_SKIP() << "../shared/data/citygml is not there";
