@@ -115,16 +115,16 @@ SurfaceKind kindByNormal(const Vec3d &n) {
     return SurfaceKind::Wall;
 }
 
+bool samePoint(const CrsCoordinate &a, const CrsCoordinate &b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+
+// A ring's points without repeats in a row and without the closing repeat of the first.
 std::vector<CrsCoordinate> ringPoints(const citygml::LinearRing &ring) {
     std::vector<CrsCoordinate> points;
     for (const TVec3d &v : ring.getVertices()) {
         CrsCoordinate p{v.x, v.y, v.z};
-        if (!points.empty() && p.x == points.back().x && p.y == points.back().y && p.z == points.back().z) continue;
-        points.push_back(p);
+        if (points.empty() || !samePoint(p, points.back())) points.push_back(p);
     }
-    if (points.size() > 1 && points.front().x == points.back().x && points.front().y == points.back().y &&
-        points.front().z == points.back().z)
-        points.pop_back();
+    if (points.size() > 1 && samePoint(points.front(), points.back())) points.pop_back();
     return points;
 }
 
@@ -255,12 +255,13 @@ class Reader {
                              fmt::format("polygon {} of building {} has {} points, more than the {} "
                                          "veduta reads in one CityGML polygon",
                                          result.id, building.id, points, kMaxCityGmlPolygonPoints));
-        if (auto why = triangulate(result)) {
+        Vec3d normal;
+        if (auto why = triangulate(result, normal)) {
             ++model_.skippedPolygons;
             warn(fmt::format("building {}: polygon {} {}; it is left out", building.id, result.id, *why));
             return;
         }
-        result.kind = kind ? *kind : kindByNormal(newellNormal(result.rings.front()));
+        result.kind = kind ? *kind : kindByNormal(normal);
         for (const std::string &theme : themes_)
             if (std::shared_ptr<const citygml::Material> material = polygon.getMaterialFor(theme)) {
                 TVec3f d = material->getDiffuse();
@@ -272,8 +273,9 @@ class Reader {
         building.polygons.push_back(std::move(result));
     }
 
-    // Triangles of the polygon in the plane of its outline; why not, when it has none.
-    static std::optional<std::string> triangulate(CityGmlPolygon &polygon) {
+    // Triangles of the polygon in the plane of its outline, whose unit normal goes to `normal`;
+    // why not, when it has none.
+    static std::optional<std::string> triangulate(CityGmlPolygon &polygon, Vec3d &normal) {
         if (polygon.rings.empty() || polygon.rings.front().size() < 3) return "has no outline of three points";
         for (const auto &ring : polygon.rings)
             for (const CrsCoordinate &p : ring)
@@ -282,6 +284,7 @@ class Reader {
         double length = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
         if (!(length > 0)) return "has no area";
         n = {n.x / length, n.y / length, n.z / length};
+        normal = n;
         // A right-handed frame (u, v, n) in the plane, so the outline runs counter-clockwise in (u, v).
         Vec3d helper = std::abs(n.z) < 0.9 ? Vec3d{0, 0, 1} : Vec3d{1, 0, 0};
         Vec3d u{helper.y * n.z - helper.z * n.y, helper.z * n.x - helper.x * n.z, helper.x * n.y - helper.y * n.x};
