@@ -26,5 +26,7 @@ void addBuildingCommand(CLI::App &app, int &exitCode);
 void addExportCommand(CLI::App &app, int &exitCode);
 void addAtkisCommand(CLI::App &app, int &exitCode);
 void addCrsCommand(CLI::App &app, int &exitCode);
+void addTwinCommand(CLI::App &app, int &exitCode);
+void addCompareCommand(CLI::App &app, int &exitCode);
 
 }  // namespace veduta

@@ -37,5 +37,7 @@ int main(int argc, char **argv) {
     veduta::addExportCommand(app, exitCode);
     veduta::addAtkisCommand(app, exitCode);
     veduta::addCrsCommand(app, exitCode);
+    veduta::addTwinCommand(app, exitCode);
+    veduta::addCompareCommand(app, exitCode);
     return veduta::runApp(app, argc, argv, exitCode);
 }

@@ -1,5 +1,6 @@
 #include "city/building_generator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -88,6 +89,14 @@ void BuildingGenerator::addRoof(const BuildingSpec &building, const BuildingCont
         warnings.push_back(
             fmt::format("building {}: {} roof: {}", building.id, roofTypeName(roof.built), *roof.fallback));
     }
+    float ridge = footprint.base + context.heights.building;
+    for (const Vec3f &p : roof.mesh.positions) ridge = std::max(ridge, p.z);
+    builder_.recordBuilding({building.id,
+                             footprint.base,
+                             footprint.base + context.heights.building,
+                             ridge,
+                             std::string(roofTypeName(roof.built)),
+                             {footprint.points}});
     for (MaterialId &m : roof.mesh.triangleMaterials)
         m = m == RoofGableWall ? context.materials[MaterialCategory::Wall] : context.materials[MaterialCategory::Roof];
     baked.append(roof.mesh, Transform{});

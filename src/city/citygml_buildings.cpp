@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "city/citygml_measures.h"
 #include "core/error.h"
 #include "core/hash.h"
 #include "geodesy/map_projection.h"
@@ -64,6 +65,32 @@ Mesh buildingMesh(const CityGmlBuilding &building, const MapProjection &projecti
         mesh.triangleMaterials.insert(mesh.triangleMaterials.end(), polygon.triangles.size() / 3, material);
     }
     return mesh;
+}
+
+BuildingRecord recordOf(const CityGmlBuilding &building, const MapProjection &projection) {
+    BuildingMeasures m = measureBuilding(building);
+    BuildingRecord record{cityGmlBuildingId(building.id),
+                          float(m.ground),
+                          float(m.eaves),
+                          float(m.ridge),
+                          m.roofType ? std::string(roofTypeName(*m.roofType)) : std::string(),
+                          {}};
+    for (const auto &outline : m.footprint) {
+        std::vector<Vec2f> &points = record.footprint.emplace_back();
+        for (const CrsCoordinate &p : outline) {
+            MapPoint local = projection.toLocal({p.x, p.y});
+            points.push_back({float(local.easting), float(local.northing)});
+        }
+    }
+    return record;
+}
+
+ModelEffort effortOf(const CityGmlBuilding &building) {
+    ModelEffort effort;
+    effort.surfaces = building.polygons.size();
+    for (const CityGmlPolygon &polygon : building.polygons)
+        for (const auto &ring : polygon.rings) effort.vertices += ring.size();
+    return effort;
 }
 
 }  // namespace
@@ -131,6 +158,8 @@ uint32_t generateCityGml(const CityGmlDesc &desc, const std::optional<Georeferen
         if (desc.bbox && !centreWithin(building, projection, *desc.bbox, desc.loc)) continue;
         builder.addWorldMesh(buildingMesh(building, projection, desc.loc, builder), desc.objectId,
                              cityGmlBuildingId(building.id));
+        builder.recordBuilding(recordOf(building, projection));
+        builder.addEffort(effortOf(building));
         ++placed;
     }
     if (desc.bbox)

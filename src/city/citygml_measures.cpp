@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <utility>
 
 namespace veduta {
@@ -65,7 +66,79 @@ BuildingMeasures measureBuilding(const CityGmlBuilding &building) {
         m.footprint.push_back(std::move(outline));
     }
     m.roofType = roofTypeOfCode(building.roofType);
+    if (!m.roofType) m.roofType = roofTypeFromSlopes(building);
     return m;
+}
+
+namespace {
+
+// A roof surface's normal and area, from Newell's vector area of its outline.
+struct RoofFace {
+    double azimuth = 0;  // radians, of the direction it faces, seen from above
+    double tilt = 0;     // radians from horizontal
+    double area = 0;
+};
+
+std::optional<RoofFace> roofFace(const std::vector<CrsCoordinate> &ring) {
+    double nx = 0, ny = 0, nz = 0;
+    for (size_t i = 0; i < ring.size(); ++i) {
+        const CrsCoordinate &a = ring[i], &b = ring[(i + 1) % ring.size()];
+        double ay = a.y - ring[0].y, az = a.z - ring[0].z, ax = a.x - ring[0].x;
+        double by = b.y - ring[0].y, bz = b.z - ring[0].z, bx = b.x - ring[0].x;
+        nx += ay * bz - az * by, ny += az * bx - ax * bz, nz += ax * by - ay * bx;
+    }
+    double length = std::sqrt(nx * nx + ny * ny + nz * nz);
+    if (length == 0 || nz <= 0) return std::nullopt;  // a roof faces up
+    return RoofFace{std::atan2(ny, nx), std::acos(std::min(1.0, nz / length)), length / 2};
+}
+
+double angleBetween(double a, double b) {
+    double d = std::fmod(std::abs(a - b), 2 * std::numbers::pi);
+    return std::min(d, 2 * std::numbers::pi - d);
+}
+
+}  // namespace
+
+std::optional<RoofType> roofTypeFromSlopes(const CityGmlBuilding &building) {
+    constexpr double kFlat = 5 * std::numbers::pi / 180, kSameSide = 20 * std::numbers::pi / 180;
+    std::vector<RoofFace> faces;
+    double roofArea = 0;
+    for (const CityGmlPolygon &polygon : building.polygons)
+        if (polygon.kind == SurfaceKind::Roof)
+            if (auto face = roofFace(polygon.rings.front())) {
+                roofArea += face->area;
+                faces.push_back(*face);
+            }
+    if (faces.empty()) return std::nullopt;
+    // The sides of the roof: sloped faces grouped by the direction they face, largest first.
+    std::sort(faces.begin(), faces.end(), [](const RoofFace &a, const RoofFace &b) { return a.area > b.area; });
+    struct Side {
+        double azimuth, area, minTilt, maxTilt;
+    };
+    std::vector<Side> sides;
+    double sloped = 0;
+    for (const RoofFace &face : faces) {
+        if (face.tilt < kFlat) continue;
+        sloped += face.area;
+        auto side = std::find_if(sides.begin(), sides.end(),
+                                 [&](const Side &s) { return angleBetween(s.azimuth, face.azimuth) < kSameSide; });
+        if (side == sides.end()) {
+            sides.push_back({face.azimuth, face.area, face.tilt, face.tilt});
+        } else {
+            side->area += face.area;
+            side->minTilt = std::min(side->minTilt, face.tilt), side->maxTilt = std::max(side->maxTilt, face.tilt);
+        }
+    }
+    if (sloped < 0.1 * roofArea) return RoofType::Flat;
+    // Dormers and bits of other roofs are not sides of it.
+    std::erase_if(sides, [&](const Side &s) { return s.area < 0.05 * sloped; });
+    bool twoPitches =
+        std::any_of(sides.begin(), sides.end(), [&](const Side &s) { return s.maxTilt - s.minTilt > 3 * kFlat; });
+    if (sides.size() == 1) return RoofType::Shed;
+    if (sides.size() == 2 && angleBetween(sides[0].azimuth, sides[1].azimuth) > std::numbers::pi - kSameSide)
+        return twoPitches ? RoofType::Mansard : RoofType::Gable;
+    if (sides.size() >= 3) return twoPitches ? RoofType::Mansard : RoofType::Hip;
+    return std::nullopt;
 }
 
 std::optional<RoofType> roofTypeOfCode(std::string_view code) {

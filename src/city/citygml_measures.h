@@ -22,7 +22,9 @@ struct BuildingMeasures {
     // The outlines of its ground surfaces in map coordinates, each counter-clockwise seen from
     // above; a LoD1 solid's bottom face counts as its ground.
     std::vector<std::vector<CrsCoordinate>> footprint;
-    std::optional<RoofType> roofType;  // from the roofType code; unset when there is none veduta builds
+    // From the roofType code, else from the slopes of its roof surfaces (roofTypeFromSlopes);
+    // unset when neither gives a roof veduta builds.
+    std::optional<RoofType> roofType;
 };
 
 BuildingMeasures measureBuilding(const CityGmlBuilding &building);
@@ -45,5 +47,12 @@ double groundArea(const std::vector<CrsCoordinate> &ring);
 // 1070 pyramid …). Unset for a code of a roof veduta does not build (domes, arches, mixed) or
 // one it does not know.
 std::optional<RoofType> roofTypeOfCode(std::string_view code);
+
+// The roof type the roof surfaces' slopes show: flat when under a tenth of the roof area slopes
+// by 5° or more; else the sloped faces grouped into sides by the direction they face (within
+// 20°, a side under 5 % of the sloped area left out as a dormer): one side a shed, two opposite
+// ones a gable, three or more a hip — a mansard where a side's faces differ in pitch by more
+// than 15°. A half-hip reads as a hip; unset for two sides that are not opposite.
+std::optional<RoofType> roofTypeFromSlopes(const CityGmlBuilding &building);
 
 }  // namespace veduta

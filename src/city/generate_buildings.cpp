@@ -1,6 +1,8 @@
 #include "city/generate_buildings.h"
 
 #include <filesystem>
+#include <fstream>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -33,6 +35,20 @@ Footprint footprintOf(const BuildingDesc &building, const GroundHeight &ground, 
     return footprint;
 }
 
+// What the group costs its author: the rule file's lines, and the numbers the scene gives its
+// buildings (settings, footprint coordinates, bases).
+ModelEffort effortOf(const BuildingGroupDesc &group) {
+    ModelEffort effort;
+    std::ifstream in(group.rules);
+    for (std::string line; std::getline(in, line);)
+        if (line.find_first_not_of(" \t\r") != std::string::npos) ++effort.ruleLines;
+    effort.parameters = group.settings.size();
+    for (const BuildingDesc &building : group.buildings)
+        effort.parameters += building.settings.size() + 2 * building.footprint.size() + (building.base ? 1 : 0);
+    for (const FacadeDesc &facade : group.facades) effort.parameters += facade.settings.size() + 2;
+    return effort;
+}
+
 void generateGroup(const BuildingGroupDesc &group, uint32_t seed, const GroundHeight &ground,
                    RenderSceneBuilder &builder, std::vector<std::string> &warnings) {
     if (!std::filesystem::is_regular_file(group.rules))
@@ -42,6 +58,7 @@ void generateGroup(const BuildingGroupDesc &group, uint32_t seed, const GroundHe
     const Grammar &grammar = loaded.grammar;
     warnings.insert(warnings.end(), rules.warnings.begin(), rules.warnings.end());
     BuildingGenerator generator(grammar, AssetLibrary::builtIn(), builder, seed);
+    builder.addEffort(effortOf(group));
     for (const BuildingDesc &desc : group.buildings) {
         BuildingSpec spec;
         spec.id = desc.buildingId;

@@ -49,34 +49,47 @@ void writeExr(const RgbaImage &film, const std::filesystem::path &file) {
     writeExr(image, file);
 }
 
-void writePng(const RgbaImage &film, const std::filesystem::path &file) {
+std::vector<uint8_t> srgbPixels(const RgbaImage &film) {
     std::vector<uint8_t> pixels(film.pixels().size());
     for (size_t i = 0; i < pixels.size(); ++i) {
         float linear = std::isfinite(film.pixels()[i]) ? film.pixels()[i] : 0.0f;
         float v = (i % 4 == 3) ? std::clamp(linear, 0.0f, 1.0f) : linearToSrgb(linear);
         pixels[i] = uint8_t(std::lround(v * 255.0f));
     }
-    writeEncodedPng(pixels, film.width(), film.height(), 4, file);
+    return pixels;
 }
 
-void writeEncodedPng(const std::vector<uint8_t> &pixels, int width, int height, int channels,
-                     const std::filesystem::path &file) {
+void writePng(const RgbaImage &film, const std::filesystem::path &file) {
+    writeEncodedPng(srgbPixels(film), film.width(), film.height(), 4, file);
+}
+
+std::vector<unsigned char> encodePng(const std::vector<uint8_t> &pixels, int width, int height, int channels) {
     png_image image{};
     image.version = PNG_IMAGE_VERSION;
     image.width = png_uint_32(width);
     image.height = png_uint_32(height);
     image.format = channels == 4 ? PNG_FORMAT_RGBA : PNG_FORMAT_RGB;
+    png_alloc_size_t size = 0;
+    if (!png_image_write_to_memory(&image, nullptr, &size, 0, pixels.data(), 0, nullptr))
+        throw std::runtime_error(image.message);
+    std::vector<unsigned char> bytes(size);
+    if (!png_image_write_to_memory(&image, bytes.data(), &size, 0, pixels.data(), 0, nullptr))
+        throw std::runtime_error(image.message);
+    bytes.resize(size);
+    return bytes;
+}
+
+void writeEncodedPng(const std::vector<uint8_t> &pixels, int width, int height, int channels,
+                     const std::filesystem::path &file) {
     // Encoded in memory so that every write to the disk is checked (libpng's own file writing
     // does not check the close).
-    png_alloc_size_t size = 0;
-    if (!png_image_write_to_memory(&image, nullptr, &size, 0, pixels.data(), 0, nullptr)) {
-        throw std::runtime_error(fmt::format("{}: {}", file.string(), image.message));
+    std::vector<unsigned char> bytes;
+    try {
+        bytes = encodePng(pixels, width, height, channels);
+    } catch (const std::runtime_error &e) {
+        throw std::runtime_error(fmt::format("{}: {}", file.string(), e.what()));
     }
-    std::vector<unsigned char> bytes(size);
-    if (!png_image_write_to_memory(&image, bytes.data(), &size, 0, pixels.data(), 0, nullptr)) {
-        throw std::runtime_error(fmt::format("{}: {}", file.string(), image.message));
-    }
-    writeBytesAtomically(file, bytes.data(), size);
+    writeBytesAtomically(file, bytes.data(), bytes.size());
 }
 
 }  // namespace veduta

@@ -19,6 +19,11 @@ void writePng(const RgbaImage &film, const std::filesystem::path &file);
 // are; what writePng and the diff image write through. Throws std::runtime_error naming the file.
 void writeEncodedPng(const std::vector<uint8_t> &pixels, int width, int height, int channels,
                      const std::filesystem::path &file);
+// The same, as the bytes of a PNG file in memory (for reports that carry their images).
+// Throws std::runtime_error with libpng's message.
+std::vector<unsigned char> encodePng(const std::vector<uint8_t> &pixels, int width, int height, int channels);
+// The image's 8-bit sRGB RGBA pixels, as writePng writes them.
+std::vector<uint8_t> srgbPixels(const RgbaImage &film);
 
 float linearToSrgb(float linear);
 

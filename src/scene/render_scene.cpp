@@ -49,6 +49,14 @@ void RenderSceneBuilder::addWorldMesh(Mesh mesh, ObjectId objectId, uint32_t bui
     scene_.meshes.push_back(std::move(baked));
 }
 
+void RenderSceneBuilder::addEffort(const ModelEffort &effort) {
+    ModelEffort &sum = scene_.effort;
+    sum.ruleLines += effort.ruleLines;
+    sum.parameters += effort.parameters;
+    sum.surfaces += effort.surfaces;
+    sum.vertices += effort.vertices;
+}
+
 PrototypeId RenderSceneBuilder::addPrototype(Mesh mesh) {
     scene_.prototypes.push_back(std::move(mesh));
     return PrototypeId(scene_.prototypes.size() - 1);

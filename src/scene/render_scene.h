@@ -39,6 +39,28 @@ struct Instance {
     uint32_t instanceId = 0;  // 1 + the index of its <instance> element; 0: shared geometry
 };
 
+// What a generator knows of a building it made, in the scene frame: `veduta compare` measures
+// buildings by it (docs/compare.md); the renderer ignores it.
+struct BuildingRecord {
+    uint32_t id = 0;   // the building id (IndexBuilding pass)
+    float base = 0;    // where it stands
+    float eaves = 0;   // the top of its walls
+    float ridge = 0;   // its highest point
+    std::string roof;  // the roof type it has (roofTypeName), empty when none veduta knows
+    // Its ground plan: outlines in scene x/y (counter-clockwise seen from above) whose union it
+    // stands on; empty when the generator does not know it.
+    std::vector<std::vector<Vec2f>> footprint;
+};
+
+// What the scene's models cost their makers: rule-file lines and the parameters a scene gives
+// procedural buildings, against the surfaces and vertices of modelled ones.
+struct ModelEffort {
+    uint64_t ruleLines = 0;
+    uint64_t parameters = 0;
+    uint64_t surfaces = 0;
+    uint64_t vertices = 0;
+};
+
 struct RenderScene {
     std::vector<BakedMesh> meshes;
     std::vector<Mesh> prototypes;
@@ -49,6 +71,8 @@ struct RenderScene {
     Environment environment;
     RenderSettings settings;
     std::shared_ptr<const Textures> textures;  // null when no material has maps
+    std::vector<BuildingRecord> buildings;     // one per building a generator made
+    ModelEffort effort;
 
     uint64_t effectiveTriangleCount() const;  // counting every instance's triangles
 };
@@ -72,6 +96,9 @@ class RenderSceneBuilder {
     void addWorldMesh(Mesh mesh, ObjectId objectId, uint32_t buildingId = 0);
     PrototypeId addPrototype(Mesh mesh);
     void addInstance(const Instance &instance);
+
+    void recordBuilding(BuildingRecord record) { scene_.buildings.push_back(std::move(record)); }
+    void addEffort(const ModelEffort &effort);
 
     void setCamera(const Camera &camera) { scene_.camera = camera; }
     void setSun(const Sun &sun) { scene_.sun = sun; }

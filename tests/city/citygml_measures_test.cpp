@@ -34,7 +34,34 @@ TEST(CityGmlMeasures, ALod1Box) {
     EXPECT_NEAR(*m.volume, 480, 1e-9);
     ASSERT_EQ(m.footprint.size(), 1u);
     EXPECT_NEAR(groundArea(m.footprint[0]), 80, 1e-9);
-    EXPECT_FALSE(m.roofType);  // the file gives no roofType
+    EXPECT_EQ(m.roofType, RoofType::Flat);  // no roofType in the file: its level top, by the slopes
+}
+
+TEST(CityGmlMeasures, RoofTypeFromTheSlopes) {
+    std::optional<std::filesystem::path> file = test::sharedDataFile("citygml/FZK-House-LoD2-KIT-IAI-KHH-V2.gml");
+    if (!file) GTEST_SKIP() << "../shared/data/citygml is not there";
+    EXPECT_EQ(roofTypeFromSlopes(readCityGml(*file).buildings.at(0)), RoofType::Gable);  // two opposite slopes
+}
+
+TEST(CityGmlMeasures, RoofTypeOfFourSlopesIsAHip) {
+    // A 10 × 8 m hip roof from eaves at 6 m to a ridge at 9 m from (3, 4) to (7, 4).
+    CityGmlBuilding building;
+    auto face = [&](std::vector<CrsCoordinate> ring) {
+        CityGmlPolygon polygon;
+        polygon.kind = SurfaceKind::Roof;
+        polygon.rings = {std::move(ring)};
+        building.polygons.push_back(polygon);
+    };
+    face({{0, 0, 6}, {10, 0, 6}, {7, 4, 9}, {3, 4, 9}});
+    face({{10, 0, 6}, {10, 8, 6}, {7, 4, 9}});
+    face({{10, 8, 6}, {0, 8, 6}, {3, 4, 9}, {7, 4, 9}});
+    face({{0, 8, 6}, {0, 0, 6}, {3, 4, 9}});
+    EXPECT_EQ(roofTypeFromSlopes(building), RoofType::Hip);
+    building.polygons.erase(building.polygons.begin() + 3);
+    building.polygons.erase(building.polygons.begin() + 1);
+    EXPECT_EQ(roofTypeFromSlopes(building), RoofType::Gable);
+    building.polygons.pop_back();
+    EXPECT_EQ(roofTypeFromSlopes(building), RoofType::Shed);
 }
 
 TEST(CityGmlMeasures, AnOpenModelHasNoVolume) {
