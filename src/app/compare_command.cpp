@@ -109,10 +109,11 @@ Camera cameraOption(const std::string &text, const Camera &size) {
     std::vector<float> v;
     std::istringstream in(text);
     for (float x; in >> x;) v.push_back(x);
-    if (!in.eof() || (v.size() != 6 && v.size() != 7) || (v[0] == v[3] && v[1] == v[4] && v[2] == v[5]))
+    if (!in.eof() || (v.size() != 6 && v.size() != 7) || (v[0] == v[3] && v[1] == v[4] && v[2] == v[5]) ||
+        (v.size() == 7 && !(v[6] > 0 && v[6] < 180)))
         throw InputError(FileLoc{"--camera"},
                          fmt::format("'{}' is no camera: give 'X Y Z  LX LY LZ' (position, a different look-at point) "
-                                     "and optionally the vertical field of view in degrees",
+                                     "and optionally the vertical field of view, degrees between 0 and 180",
                                      text));
     Camera camera = size;
     camera.position = {v[0], v[1], v[2]};

@@ -38,6 +38,13 @@ run compare "$work/twin.xml" "$work/twin.xml" -o "$work/self.html" --res 64x36 -
 check "a scene against itself" rc_is 0
 check "itself: relMSE 0 and SSIM 1" out_has "overview: relMSE 0, PSNR inf dB, SSIM 1.0000, silhouette IoU 1.0000"
 
+# Cameras from the command line replace the automatic views.
+run compare "$box" "$work/twin.xml" -o "$work/cams.html" --camera "0 -20 5  0 0 3" --camera "20 0 5  0 0 3  50" \
+    --res 64x36 --spp 1 -q
+check "two --camera views" rc_is 0
+check "the first --camera view" out_has "camera 1: relMSE"
+check "the second --camera view" out_has "camera 2: relMSE"
+
 # What must fail, and leave no report behind.
 run compare "$box" "$box" -o "$work/bad1.html" -q
 check "two CityGML files exit 1" rc_is 1
@@ -45,6 +52,9 @@ check "two CityGML files say why" err_has "one must be a scene"
 run compare "$box" "$work/twin.xml" -o "$work/bad2.html" --camera "1 2 3" -q
 check "a camera of three numbers exits 1" rc_is 1
 check "the camera is named" err_has "--camera: '1 2 3' is no camera"
+run compare "$box" "$work/twin.xml" -o "$work/bad2.html" --camera "0 -20 5  0 0 3  180" -q
+check "a field of view of 180° exits 1" rc_is 1
+check "the field of view is said" err_has "degrees between 0 and 180"
 run compare "$box" "$work/twin.xml" -o "$work/bad3.pdf" -q
 check "a report that is no .html exits 2" rc_is 2
 run twin "$work/none.gml" -o "$work/bad4.xml"
