@@ -43,6 +43,12 @@ void addBuildings(const RenderScene &scene, Box &box) {
     }
 }
 
+// The first and last cell (of `count`) whose centre lies at or after / at or before `at`, in
+// cells from the grid's edge; clamped in double first, since a scene's plane may reach far
+// beyond the buildings.
+int firstCell(double at, int count) { return int(std::clamp(std::ceil(at - 0.5), 0.0, double(count))); }
+int lastCell(double at, int count) { return int(std::clamp(std::floor(at - 0.5), -1.0, double(count - 1))); }
+
 // Draws one triangle: each cell centre inside it (edges included) takes its height there when
 // that is higher than what the cell has.
 void drawTriangle(const Vec3f &a, const Vec3f &b, const Vec3f &c, uint32_t buildingId, HeightMap &map) {
@@ -52,10 +58,8 @@ void drawTriangle(const Vec3f &a, const Vec3f &b, const Vec3f &c, uint32_t build
     double cx = (c.x - g.x0) / g.cell, cy = (c.y - g.y0) / g.cell;
     double area = (bx - ax) * (cy - ay) - (cx - ax) * (by - ay);
     if (std::abs(area) < 1e-12) return;
-    int i0 = std::max(0, int(std::ceil(std::min({ax, bx, cx}) - 0.5)));
-    int i1 = std::min(g.width - 1, int(std::floor(std::max({ax, bx, cx}) - 0.5)));
-    int j0 = std::max(0, int(std::ceil(std::min({ay, by, cy}) - 0.5)));
-    int j1 = std::min(g.height - 1, int(std::floor(std::max({ay, by, cy}) - 0.5)));
+    int i0 = firstCell(std::min({ax, bx, cx}), g.width), i1 = lastCell(std::max({ax, bx, cx}), g.width);
+    int j0 = firstCell(std::min({ay, by, cy}), g.height), j1 = lastCell(std::max({ay, by, cy}), g.height);
     for (int j = j0; j <= j1; ++j)
         for (int i = i0; i <= i1; ++i) {
             double px = i + 0.5, py = j + 0.5;
@@ -91,10 +95,8 @@ void drawPlan(const std::vector<Vec2f> &outline, uint32_t buildingId, HeightMap 
     for (const Vec2f &p : outline)
         x0 = std::min(x0, double(p.x)), y0 = std::min(y0, double(p.y)), x1 = std::max(x1, double(p.x)),
         y1 = std::max(y1, double(p.y));
-    int i0 = std::max(0, int(std::ceil((x0 - g.x0) / g.cell - 0.5)));
-    int i1 = std::min(g.width - 1, int(std::floor((x1 - g.x0) / g.cell - 0.5)));
-    int j0 = std::max(0, int(std::ceil((y0 - g.y0) / g.cell - 0.5)));
-    int j1 = std::min(g.height - 1, int(std::floor((y1 - g.y0) / g.cell - 0.5)));
+    int i0 = firstCell((x0 - g.x0) / g.cell, g.width), i1 = lastCell((x1 - g.x0) / g.cell, g.width);
+    int j0 = firstCell((y0 - g.y0) / g.cell, g.height), j1 = lastCell((y1 - g.y0) / g.cell, g.height);
     for (int j = j0; j <= j1; ++j) {
         double y = g.y0 + (j + 0.5) * g.cell;
         for (int i = i0; i <= i1; ++i) {
