@@ -3,6 +3,7 @@
 // the rules.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 
 #include "city/derivation.h"
@@ -20,5 +21,9 @@ struct BuildingRules {
     RuleSet rules;
     Grammar grammar;
 };
+
+// The lines of a rule file that hold anything: what a rule set costs its author to write
+// (`veduta compare`'s effort, docs/compare.md). 0 for a file that cannot be read.
+uint64_t ruleFileLines(const std::filesystem::path &file);
 
 }  // namespace veduta

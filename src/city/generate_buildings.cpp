@@ -1,8 +1,6 @@
 #include "city/generate_buildings.h"
 
 #include <filesystem>
-#include <fstream>
-#include <string>
 
 #include <fmt/format.h>
 
@@ -39,9 +37,7 @@ Footprint footprintOf(const BuildingDesc &building, const GroundHeight &ground, 
 // buildings (settings, footprint coordinates, bases).
 ModelEffort effortOf(const BuildingGroupDesc &group) {
     ModelEffort effort;
-    std::ifstream in(group.rules);
-    for (std::string line; std::getline(in, line);)
-        if (line.find_first_not_of(" \t\r") != std::string::npos) ++effort.ruleLines;
+    effort.ruleLines = ruleFileLines(group.rules);
     effort.parameters = group.settings.size();
     for (const BuildingDesc &building : group.buildings)
         effort.parameters += building.settings.size() + 2 * building.footprint.size() + (building.base ? 1 : 0);

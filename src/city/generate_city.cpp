@@ -40,6 +40,7 @@ std::vector<std::unique_ptr<RuleFileBuilder>> readRuleFiles(const FileLoc &fileL
     std::vector<std::unique_ptr<RuleFileBuilder>> builders;
     for (const std::filesystem::path &file : data.ruleFiles) {
         builders.push_back(std::make_unique<RuleFileBuilder>(file, builder, seed));
+        builder.addEffort({ruleFileLines(file), 0, 0, 0});
         const std::vector<std::string> &said = builders.back()->loaded.rules.warnings;
         warnings.insert(warnings.end(), said.begin(), said.end());
     }

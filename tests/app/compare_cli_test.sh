@@ -32,6 +32,10 @@ check "same footprint and heights" out_has "mean footprint IoU 1.0000, mean |eav
 check "two views" out_has "overview: relMSE"
 check "json figure" grep -qF '"mean_footprint_iou": 1,' "$reports/box.json"
 check "self-contained page" grep -qF 'src="data:image/png;base64,' "$reports/box.html"
+# Effort: the box's 6 faces of 4 corners; the twin's rule file, line for line.
+check "the model's surfaces and vertices" grep -qF '"rule_lines": 0, "parameters": 0, "surfaces": 6, "vertices": 24' "$reports/box.json"
+lines=$(grep -c '[^[:space:]]' "$source/rules/gruenderzeit/FacadeStructure.xml")
+check "the twin's rule-file lines" grep -qF "\"rule_lines\": $lines," "$reports/box.json"
 
 # A scene against itself: every figure says equal.
 run compare "$work/twin.xml" "$work/twin.xml" -o "$work/self.html" --res 64x36 --spp 1 --views 1 -q
