@@ -5,7 +5,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -28,6 +27,7 @@
 #include "core/error.h"
 #include "film/passes.h"
 #include "io/output_files.h"
+#include "io/xml_prolog.h"
 #include "preview/preview.h"
 #include "render/bvh.h"
 #include "render/renderer.h"
@@ -63,19 +63,7 @@ int64_t peakMemoryBytes() {
 }
 
 // Whether the file is a CityGML model: its root element is a CityModel.
-bool isCityGml(const fs::path &file) {
-    std::ifstream in(file, std::ios::binary);
-    std::string head(65536, '\0');
-    in.read(head.data(), std::streamsize(head.size()));
-    head.resize(size_t(in.gcount()));
-    for (size_t at = head.find('<'); at != std::string::npos; at = head.find('<', at + 1)) {
-        if (at + 1 < head.size() && (head[at + 1] == '?' || head[at + 1] == '!')) continue;
-        size_t end = head.find_first_of(" \t\r\n>/", at + 1);
-        std::string name = head.substr(at + 1, end == std::string::npos ? std::string::npos : end - at - 1);
-        return name.ends_with("CityModel");
-    }
-    return false;
-}
+bool isCityGml(const fs::path &file) { return rootElementName(file).ends_with("CityModel"); }
 
 // A CityGML file as a scene: the other scene's with its buildings replaced by the file's.
 SceneDescription cityGmlScene(const fs::path &file, SceneDescription other) {

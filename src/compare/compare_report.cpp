@@ -80,23 +80,23 @@ std::string base64(const std::vector<unsigned char> &bytes) {
     return out;
 }
 
-std::string dataUri(const RgbaImage &image) {
-    return "data:image/png;base64," + base64(encodePng(srgbPixels(image), image.width(), image.height(), 4));
+std::string dataUri(const std::vector<uint8_t> &pixels, int width, int height, int channels) {
+    return "data:image/png;base64," + base64(encodePng(pixels, width, height, channels));
 }
 
-// |A − B| of the display images, brighter where they differ more (×4, black → red → yellow).
-RgbaImage differenceImage(const RgbaImage &a, const RgbaImage &b) {
-    RgbaImage diff(a.width(), a.height());
+std::string dataUri(const RgbaImage &image) { return dataUri(srgbPixels(image), image.width(), image.height(), 4); }
+
+// |A − B| of the display images' luma as 8-bit RGB, brighter where they differ more (×4,
+// black → red → yellow).
+std::string differenceUri(const RgbaImage &a, const RgbaImage &b) {
     std::vector<float> la = displayLuma(a), lb = displayLuma(b);
-    for (int y = 0; y < a.height(); ++y)
-        for (int x = 0; x < a.width(); ++x) {
-            size_t i = size_t(y) * size_t(a.width()) + size_t(x);
-            float d = std::min(1.0f, 4 * std::abs(la[i] - lb[i]));
-            // Linear values whose sRGB encoding is the ramp.
-            auto lin = [](float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); };
-            diff.set(x, y, {lin(std::min(1.0f, 2 * d)), lin(std::max(0.0f, 2 * d - 1)), 0});
-        }
-    return diff;
+    std::vector<uint8_t> pixels(la.size() * 3, 0);
+    for (size_t i = 0; i < la.size(); ++i) {
+        float d = std::min(1.0f, 4 * std::abs(la[i] - lb[i]));
+        pixels[3 * i] = uint8_t(std::lround(255 * std::min(1.0f, 2 * d)));
+        pixels[3 * i + 1] = uint8_t(std::lround(255 * std::max(0.0f, 2 * d - 1)));
+    }
+    return dataUri(pixels, a.width(), a.height(), 3);
 }
 
 Vec3f iouColour(double iou) {
@@ -191,7 +191,7 @@ std::string viewSection(const ViewResult &v, size_t index, const CompareReport &
         v.view.camera.lookAt.x, v.view.camera.lookAt.y, v.view.camera.lookAt.z, v.view.camera.width,
         v.view.camera.height, v.view.camera.verticalFovDegrees, v.rendered.relMse, v.rendered.psnr, v.rendered.ssim,
         v.previewed.relMse, v.previewed.psnr, v.previewed.ssim, v.silhouetteIou, a, escapeXml(r.a.name), b,
-        escapeXml(r.b.name), dataUri(differenceImage(v.renderA, v.renderB)), dataUri(v.previewA), dataUri(v.previewB));
+        escapeXml(r.b.name), differenceUri(v.renderA, v.renderB), dataUri(v.previewA), dataUri(v.previewB));
 }
 
 // The buildings whose footprints agree least, at most `limit` of them.

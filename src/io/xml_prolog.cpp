@@ -34,9 +34,10 @@ FileLoc locationOf(const std::filesystem::path &file, std::string_view text, siz
     return loc;
 }
 
-// Where the prolog's DOCTYPE starts, npos if the prolog has none. Throws when the prolog
-// does not end within the text.
-size_t doctypeOffset(const std::filesystem::path &file, std::string_view text, std::string_view reader) {
+// Where the first markup after the prolog's comments and processing instructions starts (a
+// DOCTYPE or the root element), npos if nothing follows them. Throws when the prolog does
+// not end within the text.
+size_t prologEnd(const std::filesystem::path &file, std::string_view text, std::string_view reader) {
     size_t at = text.starts_with("\xEF\xBB\xBF") ? 3 : 0;
     auto skipTo = [&](std::string_view end) {
         size_t found = text.find(end, at);
@@ -55,26 +56,39 @@ size_t doctypeOffset(const std::filesystem::path &file, std::string_view text, s
             skipTo("?>");
         } else if (rest.starts_with("<!--")) {
             skipTo("-->");
-        } else if (rest.starts_with("<!DOCTYPE")) {
-            return at;
         } else {
-            return std::string_view::npos;  // the root element, or not XML after all
+            return at;
         }
     }
+}
+
+// Whether the text starts like XML: its first character after a byte-order mark and
+// whitespace is '<'.
+bool looksLikeXml(std::string_view text) {
+    size_t start = text.find_first_not_of(" \t\r\n", text.starts_with("\xEF\xBB\xBF") ? 3 : 0);
+    return start != std::string_view::npos && text[start] == '<';
 }
 
 }  // namespace
 
 void refuseDocumentType(const std::filesystem::path &file, std::string_view reader) {
     std::string text = head(file, kMaxProlog);
-    size_t start = text.find_first_not_of(" \t\r\n", text.starts_with("\xEF\xBB\xBF") ? 3 : 0);
-    if (start == std::string::npos || text[start] != '<') return;
-    size_t doctype = doctypeOffset(file, text, reader);
-    if (doctype == std::string::npos) return;
+    if (!looksLikeXml(text)) return;
+    size_t doctype = prologEnd(file, text, reader);
+    if (doctype == std::string::npos || !std::string_view(text).substr(doctype).starts_with("<!DOCTYPE")) return;
     throw InputError(locationOf(file, text, doctype),
                      "the XML file has a document type declaration (<!DOCTYPE>); its entities could expand "
                      "without bound, so veduta does not give it to " +
                          std::string(reader) + " (NAS, GML, CityGML and OSM files have none: remove it)");
+}
+
+std::string rootElementName(const std::filesystem::path &file) {
+    std::string text = head(file, kMaxProlog);
+    if (!looksLikeXml(text)) return {};
+    size_t at = prologEnd(file, text, "an XML parser");
+    if (at == std::string::npos || text.compare(at, 2, "<!") == 0) return {};
+    size_t end = text.find_first_of(" \t\r\n/>", at + 1);
+    return text.substr(at + 1, end == std::string::npos ? std::string::npos : end - at - 1);
 }
 
 }  // namespace veduta

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <string_view>
 
 namespace veduta {
@@ -14,5 +15,10 @@ namespace veduta {
 // processing instruction of the prolog does not end there. `reader` names the parser the
 // file was meant for, in the message. Files that do not start like XML pass.
 void refuseDocumentType(const std::filesystem::path &file, std::string_view reader);
+
+// The qualified name of the file's root element ("core:CityModel"), from its first MiB; empty
+// when the file does not start like XML or a DOCTYPE comes first. Throws InputError as
+// refuseDocumentType does for a prolog that does not end.
+std::string rootElementName(const std::filesystem::path &file);
 
 }  // namespace veduta
