@@ -1,5 +1,6 @@
 // The CityGML reader (docs/citygml.md) on any file, with its result checked: every point
-// finite, every triangle index within its polygon's points.
+// finite, every triangle index within its polygon's points, and a textured polygon's texture
+// coordinates finite and one per point.
 #include <cmath>
 #include <cstdlib>
 
@@ -22,6 +23,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
                 if (polygon.triangles.empty() || polygon.triangles.size() % 3 != 0) std::abort();
                 for (uint32_t index : polygon.triangles)
                     if (index >= points) std::abort();
+                if (polygon.texture.empty() != polygon.uvs.empty()) std::abort();
+                if (!polygon.uvs.empty() && polygon.uvs.size() != points) std::abort();
+                for (const Vec2f &uv : polygon.uvs)
+                    if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) std::abort();
             }
     });
     return 0;

@@ -33,7 +33,7 @@ seed_files() {
         rules) ls rules/*/*.xml | grep -v materials.xml ;;
         city_data) ls cities/*.xml ;;
         osm) ls data/*/*.osm tests/data/osm/*.osm "$shared"/osm/*.osm ;;
-        citygml) ls "$shared"/citygml/*.gml "$shared"/citygml/*.xml ;;
+        citygml) ls tests/data/citygml/*.gml "$shared"/citygml/*.gml "$shared"/citygml/*.xml ;;
         edbs) ls "$shared"/edbs/*.edbs ;;
         xyz) ls "$shared"/dgm/*.xyz ;;
         asc) ls data/*/*.asc "$shared"/dgm/*.asc ;;

@@ -38,7 +38,6 @@ class SceneAssembler {
         // Material 0 is for geometry that names none; a scene may redefine "default".
         builder_.addMaterial(Material::lambertian("default", Vec3f(0.8f)));
         for (const MaterialDesc &m : d_.materials) builder_.addMaterial(withTextures(m));
-        if (textures_) builder_.setTextures(textures_);
         defaultMaterial_ = builder_.findMaterial("default");
 
         // Geometry repeated at the top level (the same mesh file or shape with the same
@@ -86,13 +85,21 @@ class SceneAssembler {
                    [&] { generateBuildings(group, seedOf(group.seed), ground, builder_, warnings_); });
         }
         for (const CityGmlDesc &gml : d_.cityGml)
-            within(gml.loc, "<citygml>", [&] { generateCityGml(gml, d_.georeference, builder_, warnings_); });
+            within(gml.loc, "<citygml>", [&] {
+                generateCityGml(
+                    gml, d_.georeference, builder_,
+                    [&](const std::filesystem::path &image) {
+                        return texture({image, "", gml.fileLoc});
+                    },
+                    warnings_);
+            });
         for (size_t i = 0; i < d_.cities.size(); ++i) {
             within(d_.cities[i].loc, "<city>", [&] {
                 generateCity(d_.cities[i], cities[i], seedOf(d_.cities[i].seed), landscape ? &*landscape : nullptr,
                              builder_, warnings_);
             });
         }
+        if (textures_) builder_.setTextures(textures_);
         return std::move(builder_).build();
     }
 

@@ -1,7 +1,9 @@
 #include "city/citygml_buildings.h"
 
 #include <algorithm>
+#include <map>
 #include <stdexcept>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -14,11 +16,59 @@ namespace veduta {
 
 namespace {
 
-// A file's colours as materials: one per distinct colour, named by it.
-Material appearanceMaterial(const Vec3f &diffuse) {
-    return Material::lambertian(fmt::format("citygml/x3d/{:.3f},{:.3f},{:.3f}", diffuse.x, diffuse.y, diffuse.z),
-                                diffuse);
-}
+// The materials of a file's appearances: one per colour and one per texture image, each named
+// by it. An image that cannot be read is said once; its polygons take their colour or kind.
+class AppearanceMaterials {
+  public:
+    AppearanceMaterials(RenderSceneBuilder &builder, const AddTexture &addTexture) :
+        builder_(builder), addTexture_(addTexture) {}
+
+    // The polygon's material, and whether it is its texture's.
+    std::pair<MaterialId, bool> of(const CityGmlPolygon &polygon) {
+        if (!polygon.texture.empty())
+            if (std::optional<MaterialId> textured = texture(polygon.texture)) return {*textured, true};
+        if (polygon.diffuse) return {builder_.findOrAddMaterial(colour(*polygon.diffuse)), false};
+        return {builder_.findOrAddMaterial(cityGmlMaterial(polygon.kind)), false};
+    }
+
+    void warnUnread(std::vector<std::string> &warnings) const {
+        for (const auto &[file, image] : images_)
+            if (!image.material)
+                warnings.push_back(fmt::format("{}; {} polygon(s) are drawn without it", image.why, image.polygons));
+    }
+
+  private:
+    struct Image {
+        std::optional<MaterialId> material;
+        std::string why;  // it has no material
+        uint32_t polygons = 0;
+    };
+
+    std::optional<MaterialId> texture(const std::filesystem::path &file) {
+        auto [it, fresh] = images_.try_emplace(file);
+        Image &image = it->second;
+        if (fresh) {
+            try {
+                Material m = Material::lambertian("citygml/texture/" + file.generic_string(), Vec3f(1.0f));
+                m.diffuseMap = addTexture_(file);
+                image.material = builder_.findOrAddMaterial(std::move(m));
+            } catch (const InputError &e) {
+                image.why = e.what();
+            }
+        }
+        ++image.polygons;
+        return image.material;
+    }
+
+    static Material colour(const Vec3f &diffuse) {
+        return Material::lambertian(fmt::format("citygml/x3d/{:.3f},{:.3f},{:.3f}", diffuse.x, diffuse.y, diffuse.z),
+                                    diffuse);
+    }
+
+    RenderSceneBuilder &builder_;
+    const AddTexture &addTexture_;
+    std::map<std::filesystem::path, Image> images_;
+};
 
 std::string envelopeCentre(const CityGmlModel &model) {
     if (!model.envelopeLow || !model.envelopeHigh) return "the file's centre";
@@ -46,7 +96,7 @@ bool centreWithin(const CityGmlBuilding &building, const MapProjection &projecti
 }
 
 Mesh buildingMesh(const CityGmlBuilding &building, const MapProjection &projection, const FileLoc &loc,
-                  RenderSceneBuilder &builder) {
+                  AppearanceMaterials &materials) {
     Mesh mesh;
     for (const CityGmlPolygon &polygon : building.polygons) {
         auto first = uint32_t(mesh.positions.size());
@@ -59,11 +109,15 @@ Mesh buildingMesh(const CityGmlBuilding &building, const MapProjection &projecti
                                      fmt::format("building {}, polygon {}: {}", building.id, polygon.id, e.what()));
                 }
             }
+        auto [material, textured] = materials.of(polygon);
+        if (textured) {
+            mesh.uvs.resize(first, Vec2f{});  // the untextured polygons before this one
+            mesh.uvs.insert(mesh.uvs.end(), polygon.uvs.begin(), polygon.uvs.end());
+        }
         for (uint32_t index : polygon.triangles) mesh.indices.push_back(first + index);
-        MaterialId material = builder.findOrAddMaterial(polygon.diffuse ? appearanceMaterial(*polygon.diffuse)
-                                                                        : cityGmlMaterial(polygon.kind));
         mesh.triangleMaterials.insert(mesh.triangleMaterials.end(), polygon.triangles.size() / 3, material);
     }
+    if (!mesh.uvs.empty()) mesh.uvs.resize(mesh.positions.size(), Vec2f{});
     return mesh;
 }
 
@@ -138,7 +192,8 @@ int cityGmlEpsg(const CityGmlDesc &desc, const CityGmlModel &model) {
 }
 
 uint32_t generateCityGml(const CityGmlDesc &desc, const std::optional<Georeference> &georeference,
-                         RenderSceneBuilder &builder, std::vector<std::string> &warnings) {
+                         RenderSceneBuilder &builder, const AddTexture &addTexture,
+                         std::vector<std::string> &warnings) {
     CityGmlModel model;
     try {
         model = readCityGml(desc.file, {desc.minLod, desc.maxLod});
@@ -153,15 +208,17 @@ uint32_t generateCityGml(const CityGmlDesc &desc, const std::optional<Georeferen
                                      "<georeference crs=\"EPSG:{}\" origin=\"{}\"/>",
                                      epsg, envelopeCentre(model)));
     MapProjection projection(crsByEpsg(epsg), *georeference);
+    AppearanceMaterials materials(builder, addTexture);
     uint32_t placed = 0;
     for (const CityGmlBuilding &building : model.buildings) {
         if (desc.bbox && !centreWithin(building, projection, *desc.bbox, desc.loc)) continue;
-        builder.addWorldMesh(buildingMesh(building, projection, desc.loc, builder), desc.objectId,
+        builder.addWorldMesh(buildingMesh(building, projection, desc.loc, materials), desc.objectId,
                              cityGmlBuildingId(building.id));
         builder.recordBuilding(recordOf(building, projection));
         builder.addEffort(effortOf(building));
         ++placed;
     }
+    materials.warnUnread(warnings);
     if (desc.bbox)
         warnings.push_back(fmt::format("{}: the bbox keeps {} of the file's {} buildings", desc.bboxLoc.toString(),
                                        placed, model.buildings.size()));

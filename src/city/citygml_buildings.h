@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,14 +29,19 @@ uint32_t cityGmlBuildingId(const std::string &gmlId);
 // the two disagree.
 int cityGmlEpsg(const CityGmlDesc &desc, const CityGmlModel &model);
 
+// Makes an image file ready for texture lookups (scene/textures.h) and gives its id; throws
+// InputError naming the file when it cannot be read.
+using AddTexture = std::function<TextureId(const std::filesystem::path &image)>;
+
 // Reads the element's file and adds each building (within the element's bbox, when it has
 // one: a warning says how many it keeps) as a world mesh with the element's object
 // id and cityGmlBuildingId, its coordinates placed through the georeference in double
-// (geodesy/map_projection.h). Polygons take the file's X3DMaterial colour when it gives one,
-// else cityGmlMaterial of their kind. The reader's warnings, and one when the file holds no
-// building to draw (saying how many objects it read and why), are appended. Returns how many
-// buildings it added. Throws InputError (the scene needs a georeference).
+// (geodesy/map_projection.h). Polygons take the file's ParameterizedTexture (its image through
+// `addTexture`) or X3DMaterial colour when it gives one, else cityGmlMaterial of their kind; an
+// image that cannot be read is said once, with how many polygons go without it. The reader's warnings, and one when the
+// file holds no building to draw (saying how many objects it read and why), are appended. Returns how many buildings it
+// added. Throws InputError (the scene needs a georeference).
 uint32_t generateCityGml(const CityGmlDesc &desc, const std::optional<Georeference> &georeference,
-                         RenderSceneBuilder &builder, std::vector<std::string> &warnings);
+                         RenderSceneBuilder &builder, const AddTexture &addTexture, std::vector<std::string> &warnings);
 
 }  // namespace veduta

@@ -9,6 +9,9 @@
 #include <citygml/linearring.h>
 #include <citygml/material.h>
 #include <citygml/polygon.h>
+#include <citygml/texture.h>
+#include <citygml/texturecoordinates.h>
+#include <citygml/texturetargetdefinition.h>
 #include <xercesc/sax/SAXParseException.hpp>
 #include <xercesc/util/XMLException.hpp>
 #include <xercesc/util/XMLString.hpp>
@@ -115,17 +118,32 @@ SurfaceKind kindByNormal(const Vec3d &n) {
     return SurfaceKind::Wall;
 }
 
-bool samePoint(const CrsCoordinate &a, const CrsCoordinate &b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+// The indices of a ring's points without repeats in a row and without the closing repeat of
+// the first.
+std::vector<size_t> distinctPoints(const std::vector<TVec3d> &vertices) {
+    std::vector<size_t> kept;
+    auto same = [&](size_t a, size_t b) {
+        return vertices[a].x == vertices[b].x && vertices[a].y == vertices[b].y && vertices[a].z == vertices[b].z;
+    };
+    for (size_t i = 0; i < vertices.size(); ++i)
+        if (kept.empty() || !same(i, kept.back())) kept.push_back(i);
+    if (kept.size() > 1 && same(kept.front(), kept.back())) kept.pop_back();
+    return kept;
+}
 
-// A ring's points without repeats in a row and without the closing repeat of the first.
 std::vector<CrsCoordinate> ringPoints(const citygml::LinearRing &ring) {
     std::vector<CrsCoordinate> points;
-    for (const TVec3d &v : ring.getVertices()) {
-        CrsCoordinate p{v.x, v.y, v.z};
-        if (points.empty() || !samePoint(p, points.back())) points.push_back(p);
-    }
-    if (points.size() > 1 && samePoint(points.front(), points.back())) points.pop_back();
+    const std::vector<TVec3d> &vertices = ring.getVertices();
+    for (size_t i : distinctPoints(vertices)) points.push_back({vertices[i].x, vertices[i].y, vertices[i].z});
     return points;
+}
+
+// An imageURI as a path: against the CityGML file's folder unless absolute, with the
+// backslashes of files written on Windows read as folder separators.
+std::filesystem::path texturePath(const std::filesystem::path &folder, std::string uri) {
+    std::replace(uri.begin(), uri.end(), '\\', '/');
+    std::filesystem::path path(uri);
+    return path.is_absolute() ? path : folder / path;
 }
 
 bool isFinite(const CrsCoordinate &p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
@@ -134,7 +152,11 @@ class Reader {
   public:
     Reader(const std::filesystem::path &file, const CityGmlOptions &options, std::vector<std::string> themes,
            CityGmlModel &model) :
-        file_(file.string()), options_(options), themes_(std::move(themes)), model_(model) {}
+        file_(file.string()),
+        folder_(file.parent_path()),
+        options_(options),
+        themes_(std::move(themes)),
+        model_(model) {}
 
     void readBuilding(const CityObject &building) {
         // The highest LoD in range that has polygons, over the building and its parts.
@@ -262,15 +284,62 @@ class Reader {
             return;
         }
         result.kind = kind ? *kind : kindByNormal(normal);
-        for (const std::string &theme : themes_)
+        readAppearance(polygon, building, result);
+        building.polygons.push_back(std::move(result));
+    }
+
+    // The appearance of the first theme that gives the polygon one: its texture, else its
+    // material's colour. A texture whose coordinates do not fit the rings is left out with
+    // a warning, and the theme's material (or the next theme) is taken instead.
+    void readAppearance(const citygml::Polygon &polygon, const CityGmlBuilding &building, CityGmlPolygon &result) {
+        for (const std::string &theme : themes_) {
+            if (polygon.getTextureFor(theme) && readTexture(polygon, theme, building, result)) return;
             if (std::shared_ptr<const citygml::Material> material = polygon.getMaterialFor(theme)) {
                 TVec3f d = material->getDiffuse();
                 if (std::isfinite(d.x) && std::isfinite(d.y) && std::isfinite(d.z))
                     result.diffuse =
                         Vec3f{std::clamp(d.x, 0.0f, 1.0f), std::clamp(d.y, 0.0f, 1.0f), std::clamp(d.z, 0.0f, 1.0f)};
-                break;
+                return;
             }
-        building.polygons.push_back(std::move(result));
+        }
+    }
+
+    bool readTexture(const citygml::Polygon &polygon, const std::string &theme, const CityGmlBuilding &building,
+                     CityGmlPolygon &result) {
+        bool front = polygon.getTextureFor(theme, true) != nullptr;
+        std::shared_ptr<const citygml::Texture> texture = polygon.getTextureFor(theme, front);
+        std::shared_ptr<const citygml::TextureTargetDefinition> target =
+            polygon.getTextureTargetDefinitionForTheme(theme, front);
+        auto refuse = [&](const std::string &why) {
+            ++model_.untexturedPolygons;
+            warn(fmt::format("building {}: polygon {} {}; it is drawn without its texture", building.id, result.id,
+                             why));
+            return false;
+        };
+        if (!texture || !target) return refuse("has a texture but no texture target");
+        if (texture->getUrl().empty()) return refuse(fmt::format("has texture {} with no imageURI", texture->getId()));
+        std::vector<std::shared_ptr<const citygml::LinearRing>> rings;
+        if (polygon.exteriorRing()) rings.push_back(polygon.exteriorRing());
+        rings.insert(rings.end(), polygon.interiorRings().begin(), polygon.interiorRings().end());
+        std::vector<Vec2f> uvs;
+        for (const auto &ring : rings) {
+            std::shared_ptr<const citygml::TextureCoordinates> coords =
+                ring->getId().empty() ? nullptr : target->getTextureCoordinatesForID(ring->getId());
+            if (!coords) return refuse(fmt::format("has no texture coordinates for ring '{}'", ring->getId()));
+            const std::vector<TVec2f> &uv = coords->getCoords();
+            const std::vector<TVec3d> &vertices = ring->getVertices();
+            if (uv.size() != vertices.size())
+                return refuse(fmt::format("has {} texture coordinates for the {} points of ring {}", uv.size(),
+                                          vertices.size(), ring->getId()));
+            for (size_t i : distinctPoints(vertices)) {
+                if (!std::isfinite(uv[i].x) || !std::isfinite(uv[i].y))
+                    return refuse(fmt::format("has a texture coordinate of ring {} that is no number", ring->getId()));
+                uvs.push_back({uv[i].x, uv[i].y});
+            }
+        }
+        result.texture = texturePath(folder_, texture->getUrl());
+        result.uvs = std::move(uvs);
+        return true;
     }
 
     // Triangles of the polygon in the plane of its outline, whose unit normal goes to `normal`;
@@ -311,8 +380,9 @@ class Reader {
     }
 
     std::string file_;
+    std::filesystem::path folder_;  // where the file's texture images are found
     const CityGmlOptions &options_;
-    std::vector<std::string> themes_;  // the appearance themes, whose first material a polygon takes
+    std::vector<std::string> themes_;  // the appearance themes, in the file's order
     CityGmlModel &model_;
     // The polygons of the building read so far: a solid names its thematic surfaces' polygons
     // through xlink:href, which libcitygml resolves to the same object. A file that gives two

@@ -3,7 +3,9 @@
 // polygons of map coordinates in double, each with its surface kind and triangulated (CGAL,
 // holes kept). The polygons of a lod2Solid that its thematic surfaces (WallSurface, RoofSurface
 // …) name through xlink:href are taken once, with the kind of their thematic surface; those
-// no surface names (LoD1 solids) get a kind from their normal. Nothing is placed in a scene
+// no surface names (LoD1 solids) get a kind from their normal. Each polygon keeps the
+// appearance of the first theme that gives it one: a ParameterizedTexture's image and
+// coordinates, else an X3DMaterial's colour. Nothing is placed in a scene
 // here: the coordinates are the file's, its CRS named by `epsg` (docs/citygml.md).
 #pragma once
 
@@ -33,6 +35,11 @@ struct CityGmlPolygon {
     // counter-clockwise seen from the side the polygon faces.
     std::vector<uint32_t> triangles;
     std::optional<Vec3f> diffuse;  // the X3DMaterial's diffuse colour, when the file gives one
+    // The ParameterizedTexture's image (the imageURI against the file's folder) and the
+    // texture coordinates of the rings' points in their order, v up from the image's bottom
+    // row; both empty when the polygon has none.
+    std::filesystem::path texture;
+    std::vector<Vec2f> uvs;
 };
 
 struct CityGmlBuilding {
@@ -57,6 +64,7 @@ struct CityGmlModel {
     uint32_t buildingsWithoutGeometry = 0;   // Buildings with no polygon at the chosen LoD
     uint32_t otherObjects = 0;               // top-level city objects that are no Building
     uint32_t skippedPolygons = 0;            // polygons left out (each has a warning)
+    uint32_t untexturedPolygons = 0;         // textured polygons read without it (each has a warning)
     // Messages from libcitygml and from veduta, "file:line:col: message" where the place is known.
     std::vector<std::string> warnings;
 };

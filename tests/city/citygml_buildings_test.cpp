@@ -91,6 +91,51 @@ TEST(CityGmlBuildings, TheBoundingBoxKeepsTheBuildingsCentredInIt) {
     EXPECT_NE(test::inputErrorOf([&] { scene("1 2 0 3", none); }).find("bbox takes four numbers"), std::string::npos);
 }
 
+TEST(CityGmlBuildings, TexturedSurfacesShowTheirImage) {
+    std::filesystem::path file = test::sourceFile("tests/data/citygml/textured-house.gml");
+    std::vector<std::string> warnings;
+    RenderScene scene =
+        build(fmt::format("<scene version=\"1\"><georeference crs=\"EPSG:25832\" origin=\"500005 5400004\"/>"
+                          "<citygml file=\"{}\"/></scene>",
+                          file.string()),
+              &warnings);
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    const Mesh &house = scene.meshes[0].mesh;
+    ASSERT_EQ(house.uvs.size(), house.positions.size());
+    ASSERT_TRUE(scene.textures);
+    std::string facade = "citygml/texture/" + (file.parent_path() / "appearance/facade.png").generic_string();
+    // The facade image is red left of u = 0.5, blue right of it; the south wall's triangles show
+    // it where their texture coordinates say.
+    int red = 0, blue = 0;
+    for (size_t t = 0; t < house.triangleMaterials.size(); ++t) {
+        const Material &m = scene.materials[house.triangleMaterials[t]];
+        if (m.name != facade) continue;
+        ASSERT_NE(m.diffuseMap, kNoTexture);
+        Vec2f centre{0, 0};
+        for (int k = 0; k < 3; ++k) {
+            Vec2f uv = house.uvs[house.indices[3 * t + k]];
+            centre = {centre.x + uv.x / 3, centre.y + uv.y / 3};
+        }
+        float rgb[3];
+        scene.textures->lookup(m.diffuseMap, centre, 0.01f, rgb, 3);
+        if (centre.x < 0.45f) red += rgb[0] > 3 * rgb[2];
+        if (centre.x > 0.55f) blue += rgb[2] > 3 * rgb[0];
+    }
+    EXPECT_GT(red, 0);
+    EXPECT_GT(blue, 0);
+    // The east wall's image is not there: said once, and the wall takes the wall material, as does
+    // the north wall whose coordinates do not fit.
+    std::string said = fmt::format("{}", fmt::join(warnings, "\n"));
+    EXPECT_NE(said.find("missing.jpg"), std::string::npos) << said;
+    EXPECT_NE(said.find("; 1 polygon(s) are drawn without it"), std::string::npos) << said;
+    std::set<std::string> materials;
+    for (MaterialId m : house.triangleMaterials) materials.insert(scene.materials[m].name);
+    EXPECT_EQ(materials,
+              (std::set<std::string>{facade, "citygml/wall", "citygml/x3d/0.200,0.600,0.200", "citygml/roof",
+                                     "citygml/ground"}))
+        << fmt::format("{}", fmt::join(materials, ", "));
+}
+
 TEST(CityGmlBuildings, WhatTheSceneLacksIsSaid) {
     std::string box = test::sourceFile("fuzz/corpus/citygml/lod1-box.gml");
     std::string noGeoreference =

@@ -17,6 +17,7 @@
 #include "city/citygml_measures.h"
 #include "input_error.h"
 #include "shared_data.h"
+#include "test_paths.h"
 
 namespace veduta {
 namespace {
@@ -184,6 +185,53 @@ TEST(CityGml, AHoleIsLeftOpen) {
     SurfaceSums s = sumSurfaces(model.buildings[0], {500000, 5400000, 0});
     EXPECT_NEAR(s.area, 60 - 4, 1e-9);
     EXPECT_NEAR(s.vy, -(60 - 4), 1e-9);  // facing south, as its outline runs
+}
+
+const CityGmlPolygon &polygonOf(const CityGmlBuilding &building, const std::string &id) {
+    auto it = std::find_if(building.polygons.begin(), building.polygons.end(),
+                           [&](const CityGmlPolygon &p) { return p.id == id; });
+    if (it == building.polygons.end()) throw std::runtime_error("no polygon " + id);
+    return *it;
+}
+
+TEST(CityGml, ATextureGivesItsImageAndTheCoordinatesOfEveryRingPoint) {
+    std::filesystem::path file = test::sourceFile("tests/data/citygml/textured-house.gml");
+    CityGmlModel model = readCityGml(file);
+    ASSERT_EQ(model.buildings.size(), 1u);
+    const CityGmlBuilding &house = model.buildings[0];
+    ASSERT_EQ(house.polygons.size(), 6u);
+
+    // The south wall and its window hole: u = x / 10, v = z / 6, through "appearance\facade.png".
+    const CityGmlPolygon &south = polygonOf(house, "S");
+    EXPECT_EQ(south.texture, file.parent_path() / "appearance/facade.png");
+    ASSERT_EQ(south.uvs.size(), 8u);
+    size_t k = 0;
+    for (const auto &ring : south.rings)
+        for (const CrsCoordinate &p : ring) {
+            EXPECT_NEAR(south.uvs[k].x, (p.x - 500000) / 10, 1e-6) << k;
+            EXPECT_NEAR(south.uvs[k].y, p.z / 6, 1e-6) << k;
+            ++k;
+        }
+    // The image of the east wall is not there; the reader does not look (the scene does).
+    EXPECT_EQ(polygonOf(house, "E").texture, file.parent_path() / "appearance/missing.jpg");
+    EXPECT_EQ(polygonOf(house, "E").uvs.size(), 4u);
+    // Three texture coordinates for a ring of five positions (four points, closed): the wall is kept, without its
+    // texture.
+    const CityGmlPolygon &north = polygonOf(house, "N");
+    EXPECT_TRUE(north.texture.empty());
+    EXPECT_TRUE(north.uvs.empty());
+    EXPECT_EQ(model.untexturedPolygons, 1u);
+    std::string said = fmt::format("{}", fmt::join(model.warnings, "\n"));
+    EXPECT_NE(said.find("building TEXHOUSE: polygon N has 3 texture coordinates for the 5 points of ring N_0; it "
+                        "is drawn without its texture"),
+              std::string::npos)
+        << said;
+    // The west wall's X3DMaterial, of the same theme.
+    const CityGmlPolygon &west = polygonOf(house, "W");
+    EXPECT_TRUE(west.texture.empty());
+    ASSERT_TRUE(west.diffuse.has_value());
+    EXPECT_NEAR(west.diffuse->y, 0.6f, 1e-6);
+    EXPECT_FALSE(polygonOf(house, "R").diffuse.has_value());
 }
 
 TEST(CityGml, SrsNamesGiveTheirEpsgCode) {
