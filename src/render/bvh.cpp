@@ -2,7 +2,9 @@
 
 #include "render/embree_util.h"
 
+#include <algorithm>
 #include <chrono>
+#include <deque>
 #include <limits>
 #include <mutex>
 #include <stdexcept>
@@ -49,11 +51,69 @@ void *newBuffer(RTCGeometry geometry, RTCBufferType type, RTCFormat format, size
     return buffer;
 }
 
+// What the occlusion filter of a geometry with surfaces that pass light needs to know.
+struct FilterGeometry {
+    const Mesh *mesh = nullptr;
+    const std::vector<uint8_t> *passesLight = nullptr;   // by material
+    const std::vector<MaterialId> *overrides = nullptr;  // by instance; null for a baked mesh
+    uint32_t meshCount = 0;                              // instance geometry ids start here
+};
+
+// Embree hands the filter the query's context; ours follows Embree's in one struct.
+struct ShadowContext {
+    RTCIntersectContext embree;
+    PassedSurfaces *passed = nullptr;  // null: every surface stops the ray
+};
+
+bool sameSurface(const Hit &a, const Hit &b) {
+    return a.instanced == b.instanced && a.index == b.index && a.primitive == b.primitive;
+}
+
+// The occlusion filter: a surface whose material passes light is noted and the ray goes on;
+// any other hit stands, and ends the query. Embree may report a triangle twice (it can sit in
+// two leaves); it is noted once.
+void passLight(const RTCFilterFunctionNArguments *args) {
+    if (args->N != 1 || args->valid[0] == 0) return;
+    const auto *context = reinterpret_cast<const ShadowContext *>(args->context);
+    if (!context->passed) return;
+    const auto *geometry = static_cast<const FilterGeometry *>(args->geometryUserPtr);
+    uint32_t primitive = RTCHitN_primID(args->hit, 1, 0);
+    uint32_t instance = RTCHitN_instID(args->hit, 1, 0, 0);
+    MaterialId material = geometry->mesh->triangleMaterials[primitive];
+    Hit hit;
+    hit.instanced = instance != RTC_INVALID_GEOMETRY_ID;
+    if (hit.instanced) {
+        hit.index = instance - geometry->meshCount;
+        MaterialId override = (*geometry->overrides)[hit.index];
+        if (override != kNoMaterial) material = override;
+    } else {
+        hit.index = RTCHitN_geomID(args->hit, 1, 0);
+    }
+    if (!(*geometry->passesLight)[material]) return;
+    hit.t = RTCRayN_tfar(args->ray, 1, 0);
+    hit.primitive = primitive;
+    hit.u = RTCHitN_u(args->hit, 1, 0);
+    hit.v = RTCHitN_v(args->hit, 1, 0);
+    PassedSurfaces &passed = *context->passed;
+    for (uint32_t i = 0; i < passed.count; ++i)
+        if (sameSurface(passed.hits[i], hit)) {
+            args->valid[0] = 0;
+            return;
+        }
+    if (passed.count == PassedSurfaces::kCapacity) {
+        passed.overflow = true;  // the hit stands: the caller traces the ray again, surface by surface
+        return;
+    }
+    passed.hits[passed.count++] = hit;
+    args->valid[0] = 0;
+}
+
 // The mesh's own arrays are handed to Embree, not copied (a 13.6-million-triangle terrain
 // would otherwise hold 250 MB twice): the RenderScene outlives the Bvh (bvh.h). Embree reads
 // vertices with 16-byte loads, so a float3 buffer needs 4 readable bytes after its last
-// vertex; spare capacity in `positions` gives them, else the vertices are copied.
-RTCGeometry makeTriangles(RTCDevice device, const Mesh &mesh) {
+// vertex; spare capacity in `positions` gives them, else the vertices are copied. A mesh with
+// surfaces that pass light gets the occlusion filter.
+RTCGeometry makeTriangles(RTCDevice device, const Mesh &mesh, const FilterGeometry *filter) {
     RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
     static_assert(sizeof(Vec3f) == 3 * sizeof(float));
     if (mesh.positions.capacity() > mesh.positions.size()) {
@@ -74,8 +134,17 @@ RTCGeometry makeTriangles(RTCDevice device, const Mesh &mesh) {
         rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, mesh.indices.data(), 0,
                                    3 * sizeof(uint32_t), mesh.triangleCount());
     }
+    if (filter) {
+        rtcSetGeometryUserData(geometry, const_cast<FilterGeometry *>(filter));
+        rtcSetGeometryOccludedFilterFunction(geometry, passLight);
+    }
     rtcCommitGeometry(geometry);
     return geometry;
+}
+
+bool anyPasses(const Mesh &mesh, const std::vector<uint8_t> &passesLight) {
+    return std::any_of(mesh.triangleMaterials.begin(), mesh.triangleMaterials.end(),
+                       [&](MaterialId m) { return passesLight[m] != 0; });
 }
 
 }  // namespace
@@ -87,6 +156,9 @@ struct Bvh::Impl {
     std::vector<RTCScene> prototypes;
     RTCScene top = nullptr;
     uint32_t meshCount = 0;
+    std::vector<uint8_t> passesLight;    // by material
+    std::vector<MaterialId> overrides;   // by instance
+    std::deque<FilterGeometry> filters;  // the geometries' filter data, at fixed addresses
 
     ~Impl() {
         if (top) rtcReleaseScene(top);
@@ -102,9 +174,25 @@ Bvh::Bvh(const RenderScene &scene) : impl_(std::make_unique<Impl>()) {
     rtcSetDeviceErrorFunction(impl_->device, recordError, &impl_->error);
     rtcSetDeviceMemoryMonitorFunction(impl_->device, countMemory, &impl_->memory);
 
-    for (const Mesh &prototype : scene.prototypes) {
+    for (const Material &m : scene.materials) impl_->passesLight.push_back(m.passesLight());
+    impl_->meshCount = uint32_t(scene.meshes.size());
+    // A prototype needs the filter when a triangle of it passes light, or an instance makes it.
+    std::vector<uint8_t> prototypePasses(scene.prototypes.size(), 0);
+    for (const Instance &instance : scene.instances) {
+        impl_->overrides.push_back(instance.materialOverride);
+        if (instance.materialOverride != kNoMaterial && impl_->passesLight[instance.materialOverride])
+            prototypePasses[instance.prototype] = 1;
+    }
+    auto filterFor = [&](const Mesh &mesh, bool instanced, bool passes) -> const FilterGeometry * {
+        if (!passes && !anyPasses(mesh, impl_->passesLight)) return nullptr;
+        return &impl_->filters.emplace_back(
+            FilterGeometry{&mesh, &impl_->passesLight, instanced ? &impl_->overrides : nullptr, impl_->meshCount});
+    };
+
+    for (size_t p = 0; p < scene.prototypes.size(); ++p) {
+        const Mesh &prototype = scene.prototypes[p];
         RTCScene s = rtcNewScene(impl_->device);
-        RTCGeometry g = makeTriangles(impl_->device, prototype);
+        RTCGeometry g = makeTriangles(impl_->device, prototype, filterFor(prototype, true, prototypePasses[p]));
         rtcAttachGeometryByID(s, g, 0);
         rtcReleaseGeometry(g);
         rtcCommitScene(s);
@@ -113,9 +201,9 @@ Bvh::Bvh(const RenderScene &scene) : impl_(std::make_unique<Impl>()) {
 
     // Geometry ids: baked meshes first, then instances, so a hit's id says which it is.
     impl_->top = rtcNewScene(impl_->device);
-    impl_->meshCount = uint32_t(scene.meshes.size());
     for (uint32_t i = 0; i < scene.meshes.size(); ++i) {
-        RTCGeometry g = makeTriangles(impl_->device, scene.meshes[i].mesh);
+        const Mesh &mesh = scene.meshes[i].mesh;
+        RTCGeometry g = makeTriangles(impl_->device, mesh, filterFor(mesh, false, false));
         rtcAttachGeometryByID(impl_->top, g, i);
         rtcReleaseGeometry(g);
     }
@@ -159,12 +247,33 @@ std::optional<Hit> Bvh::intersect(const Ray &ray, bool coherent) const {
 }
 
 bool Bvh::occluded(const Ray &ray, float tMax) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    context.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+    ShadowContext context;
+    rtcInitIntersectContext(&context.embree);
+    context.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
     RTCRay r = toRayHit(ray, tMax).ray;
-    rtcOccluded1(impl_->top, &context, &r);
+    rtcOccluded1(impl_->top, &context.embree, &r);
     return r.tfar < 0;  // Embree sets tfar to -inf on a hit
+}
+
+bool Bvh::occluded(const Ray &ray, float tMax, PassedSurfaces &passed) const {
+    passed.count = 0;
+    passed.overflow = false;
+    ShadowContext context;
+    rtcInitIntersectContext(&context.embree);
+    context.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+    context.passed = &passed;
+    RTCRay r = toRayHit(ray, tMax).ray;
+    rtcOccluded1(impl_->top, &context.embree, &r);
+    if (r.tfar < 0) return true;
+    // Embree meets them in the order of its tree; the caller weighs them nearest first, so the
+    // product is the same however the tree was built.
+    auto nearer = [](const Hit &a, const Hit &b) {
+        if (a.t != b.t) return a.t < b.t;
+        if (a.instanced != b.instanced) return a.instanced < b.instanced;
+        return a.index != b.index ? a.index < b.index : a.primitive < b.primitive;
+    };
+    std::sort(passed.hits.begin(), passed.hits.begin() + passed.count, nearer);
+    return false;
 }
 
 }  // namespace veduta

@@ -2,6 +2,7 @@
 // BVH over the baked meshes and the instances. This is the only file pair that sees Embree.
 #pragma once
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -18,6 +19,16 @@ struct Hit {
     uint32_t index = 0;      // into RenderScene::instances if instanced, else RenderScene::meshes
     uint32_t primitive = 0;  // triangle within the mesh or prototype
     float u = 0, v = 0;      // barycentrics of vertices 1 and 2
+};
+
+// What a shadow ray crossed that lets light through (thin glass, cut-outs): the hits in the
+// order of their distance. Holds up to kCapacity; beyond that `overflow` is set and the hits
+// are not all there.
+struct PassedSurfaces {
+    static constexpr uint32_t kCapacity = 32;
+    std::array<Hit, kCapacity> hits;
+    uint32_t count = 0;
+    bool overflow = false;
 };
 
 struct BvhStats {
@@ -38,6 +49,12 @@ class Bvh {
     // `coherent` tells Embree that neighbouring calls trace similar rays (camera rays).
     std::optional<Hit> intersect(const Ray &ray, bool coherent) const;
     bool occluded(const Ray &ray, float tMax) const;
+    // Whether something that stops light lies along the ray before tMax. The surfaces of
+    // materials that may let light pass (scene/material.h: passesLight) do not count; those
+    // crossed are listed in `passed`, for the caller to weigh, unless the ray is stopped. When
+    // `passed.overflow` is set, it crossed more than PassedSurfaces holds and the answer is
+    // unknown: trace the ray surface by surface.
+    bool occluded(const Ray &ray, float tMax, PassedSurfaces &passed) const;
 
     const BvhStats &stats() const { return stats_; }
     // The top-level RTCScene, for benchmarks that measure Embree itself on our BVH.

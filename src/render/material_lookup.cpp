@@ -7,8 +7,8 @@
 namespace veduta {
 
 MaterialLookup::MaterialLookup(const RenderScene &scene) : scene_(scene) {
-    anyPassThrough_ = std::any_of(scene.materials.begin(), scene.materials.end(),
-                                  [](const Material &m) { return m.glass || m.opacityMap != kNoTexture; });
+    anyPassThrough_ =
+        std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material &m) { return m.passesLight(); });
 }
 
 void MaterialLookup::lookup(TextureId id, const Material &m, const SurfaceInteraction &si, float footprint, float *out,

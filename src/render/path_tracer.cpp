@@ -134,7 +134,18 @@ Vec3f PathTracer::transmittanceTowards(const SurfaceInteraction &si, const Vec3f
     }
     // Shadow rays need no filtered texture: a narrow footprint keeps the cut-out's edge sharp.
     constexpr float kShadowFootprint = 0;
+    // One occlusion query that skips the panes and cut-outs and lists them, nearest first.
+    ++counts.shadow;
+    PassedSurfaces passed;
+    bool stopped = bvh_.occluded(shadow, kInfinity, passed);
     Vec3f transmitted(1.0f);
+    if (!passed.overflow) {
+        if (stopped) return Vec3f(0.0f);
+        for (uint32_t i = 0; i < passed.count && !isBlack(transmitted); ++i)
+            transmitted *= materials_.transmittance(surfaces_.at(passed.hits[i], wi), wi, kShadowFootprint);
+        return transmitted;
+    }
+    // More of them than the query holds (foliage behind foliage): surface by surface.
     for (int pass = 0; pass < kMaxPassThrough; ++pass) {
         ++counts.shadow;
         std::optional<Hit> hit = bvh_.intersect(shadow, false);

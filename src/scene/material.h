@@ -39,6 +39,9 @@ struct Material {
     // v, metres on the built-in shapes.
     Vec2f textureSize{1.0f, 1.0f};
 
+    // Whether light may pass the surface: shadow rays weigh such surfaces rather than stop.
+    bool passesLight() const { return glass || opacityMap != kNoTexture; }
+
     // A plain Lambertian material, as generators and tests make them.
     static Material lambertian(std::string name, const Vec3f &albedo) {
         Material m;

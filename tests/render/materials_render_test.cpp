@@ -203,6 +203,37 @@ TEST(MaterialsRender, SunlightThroughGlassIsCountedOnce) {
     }
 }
 
+// Shadow rays weigh every pane they cross, in one occlusion query or, past what it holds,
+// pane by pane: under n panes the floor gets T'^n of the sunlight. The panes are instances of
+// a grey plane that an instance material makes glass (two instances, so the prototype is
+// kept), and a grey roof above them all stops the sun when it is there.
+TEST(MaterialsRender, ShadowRaysWeighEveryPaneTheyCross) {
+    auto floorUnder = [](int panes, bool roof) {
+        std::string xml = R"(<scene>
+  <camera position="0 0 0.5" look_at="0 0 0" up="0 1 0" fov="20" resolution="8 8"/>
+  <sun direction="0 0 1" irradiance="2" angular_diameter="0.53"/>
+  <environment radiance="0"/>
+  <render spp="4" max_depth="1"/>
+  <material name="grey" diffuse="0.5"/>
+  <material name="pane" glass="true" ior="1.5"/>
+  <plane size="1000 1000" material="grey"/>
+  <prototype name="sheet"><plane size="1000 1000" material="grey"/></prototype>
+)";
+        for (int i = 0; i < panes; ++i)
+            xml +=
+                "  <instance prototype=\"sheet\" material=\"pane\" translate=\"0 0 " + std::to_string(1 + i) + "\"/>\n";
+        if (roof) xml += "  <plane size=\"1000 1000\" translate=\"0 0 100\" material=\"grey\"/>\n";
+        return meanRgb(renderScene(test::sceneFromXml(xml + "</scene>")));
+    };
+    double r = 0.04, pane = 1 - 2 * r / (1 + r);
+    // 40 panes are more than one occlusion query holds (PassedSurfaces::kCapacity).
+    for (int panes : {2, 3, 40}) {
+        double expected = 0.5 * 2 * std::pow(pane, panes) / M_PI;
+        EXPECT_NEAR(floorUnder(panes, false), expected, 2e-3 * expected) << panes << " panes";
+        EXPECT_EQ(floorUnder(panes, true), 0.0) << panes << " panes under a roof";
+    }
+}
+
 // Leaves cut out everywhere cast no shadow; nowhere cut out, a full one.
 TEST(MaterialsRender, CutOutsLetLightThrough) {
     for (float alpha : {0.0f, 1.0f}) {
