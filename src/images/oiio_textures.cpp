@@ -40,11 +40,22 @@ OiioTextures::Entry OiioTextures::open(const std::filesystem::path &texture, con
         throw InputError(FileLoc{file.string()},
                          fmt::format("cannot open its texture {}: {}", texture.string(), system_->geterror()));
     }
+    // A footprint far wider than the texture: OpenImageIO's coarsest level.
+    constexpr float kWholeTexture = 1e6f;
+    filtered(entry, {0.5f, 0.5f}, kWholeTexture, entry.mean.data(), std::min(entry.channels, int(entry.mean.size())));
     return entry;
 }
 
 void OiioTextures::lookup(TextureId id, Vec2f uv, float footprint, float *out, int count) const {
     const Entry &entry = entries_[id];
+    if (footprint >= 1 && count <= int(entry.mean.size())) {
+        std::copy_n(entry.mean.begin(), std::min(count, entry.channels), out);
+        return;
+    }
+    filtered(entry, uv, footprint, out, count);
+}
+
+void OiioTextures::filtered(const Entry &entry, Vec2f uv, float footprint, float *out, int count) const {
     OIIO::TextureOpt options;
     options.swrap = options.twrap = OIIO::TextureOpt::WrapPeriodic;
     options.mipmode = OIIO::TextureOpt::MipModeTrilinear;  // deterministic, unlike the stochastic modes

@@ -1,7 +1,11 @@
 // Textures through OpenImageIO's TextureSystem: files converted once into the texture cache
-// (src/images/texture_cache.h), looked up with trilinear mip-map filtering.
+// (src/images/texture_cache.h), looked up with trilinear mip-map filtering. A lookup whose
+// footprint spans a whole period of the texture or more gives its mean (the coarsest mip
+// level, each of its texels the box-filtered mean of the level above), kept at `add`, without
+// a call into OpenImageIO: far surfaces and bounced rays ask for that most of the time.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -36,9 +40,11 @@ class OiioTextures final : public Textures {
         OIIO::TextureSystem::TextureHandle *handle = nullptr;
         int channels = 0;
         std::string texture;
+        std::array<float, 4> mean{};  // the first four channels' means
     };
 
     Entry open(const std::filesystem::path &texture, const std::filesystem::path &file);
+    void filtered(const Entry &entry, Vec2f uv, float footprint, float *out, int count) const;
 
     std::filesystem::path cacheDirectory_;
     std::shared_ptr<const ColorConfig> config_;

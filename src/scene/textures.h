@@ -30,7 +30,8 @@ class Textures {
 
     // Filtered value at texture coordinates (u, v), v growing upwards from the image's
     // bottom row, wrapping periodically; `footprint` is the width in (u, v) units of the
-    // area to average over. Writes min(channels, count) values to `out`. Thread-safe.
+    // area to average over; one of 1 or more (the whole period) gives the texture's mean.
+    // Writes min(channels, count) values to `out`. Thread-safe.
     virtual void lookup(TextureId id, Vec2f uv, float footprint, float *out, int count) const = 0;
 };
 

@@ -343,6 +343,32 @@ TEST_F(TexturesTest, LargeFootprintGivesTheMean) {
     }
 }
 
+// Footprints of a whole period or more give the mean kept at add(), without OpenImageIO; just
+// below that, OpenImageIO's own filtering is all but there already, on a texture whose
+// coarser levels are not uniform (a ramp, unlike the checker).
+TEST_F(TexturesTest, TheMeanTakesOverSmoothlyAtAWholePeriod) {
+    std::vector<unsigned char> ramp;
+    for (int y = 0; y < kCheckerSize; ++y)
+        for (int x = 0; x < kCheckerSize; ++x)
+            ramp.insert(ramp.end(), {static_cast<unsigned char>(x * 36), static_cast<unsigned char>(y * 36), 128});
+    TextureId id = textures_->add(write8Bit("ramp.png", kCheckerSize, kCheckerSize, 3, ramp), "");
+    auto at = [&](Vec2f uv, float footprint) {
+        std::vector<float> out(3);
+        textures_->lookup(id, uv, footprint, out.data(), 3);
+        return out;
+    };
+    std::vector<float> mean = at({0.5f, 0.5f}, 1.0f);
+    for (Vec2f uv : {Vec2f{0.1f, 0.2f}, Vec2f{0.9f, 0.6f}, Vec2f{-3.3f, 7.7f}}) {
+        EXPECT_EQ(at(uv, 1.0f), mean);
+        EXPECT_EQ(at(uv, 50.0f), mean);
+        std::vector<float> below = at(uv, 0.999f), coarse = at(uv, 0.25f);
+        for (int c = 0; c < 2; ++c) {
+            EXPECT_NEAR(below[c], mean[c], 0.01 * mean[c]) << c;
+            EXPECT_GT(std::abs(coarse[c] - mean[c]), 0.05 * mean[c]) << c << ": the ramp shows at a quarter";
+        }
+    }
+}
+
 TEST_F(TexturesTest, WrapsPeriodically) {
     for (float v : {0.1f, 0.37f, 0.8f}) {
         EXPECT_EQ(lookup(1.25f, v, 1e-4f), lookup(0.25f, v, 1e-4f)) << v;
