@@ -66,9 +66,10 @@ class PixelSampling {
             PixelSampler sampler(seed_, uint32_t(x), uint32_t(y), 0);
             film.setFirstSample(pixel, tracer_.firstHit(cameraRay(x, y, sampler), local.rays));
         }
+        PixelSeeds seeds(seed_, uint32_t(x), uint32_t(y));
         for (uint32_t s = begin; s < end; ++s) {
             uint32_t index = sampleOffset_ + s;
-            PixelSampler sampler(seed_, uint32_t(x), uint32_t(y), index);
+            PixelSampler sampler(seeds, index);
             FirstHit first;
             Vec3f L = tracer_.radiance(cameraRay(x, y, sampler), sampler, local.rays, &first);
             if (!isFinite(L)) {

@@ -3,6 +3,7 @@
 // index, dimension), so an image does not depend on thread count, tile size or region.
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 #include "core/hash.h"
@@ -20,36 +21,80 @@ inline uint32_t reverseBits(uint32_t x) {
     return __builtin_bswap32(x);
 }
 
-// Laine-Karras style permutation with Vegdahl's constants: a nested uniform (Owen) scramble
-// of reversed bits.
-inline uint32_t owenScramble(uint32_t x, uint32_t seed) {
-    x = reverseBits(x);
+// The hash of owenScramble, on bits already reversed: Laine-Karras style, with Vegdahl's
+// constants.
+inline uint32_t laineKarras(uint32_t x, uint32_t seed) {
     x ^= x * 0x3d20adeau;
     x += seed;
     x *= (seed >> 16) | 1u;
     x ^= x * 0x05526c56u;
     x ^= x * 0x53a22864u;
-    return reverseBits(x);
+    return x;
 }
+
+// A nested uniform (Owen) scramble of x's bits, most significant first.
+inline uint32_t owenScramble(uint32_t x, uint32_t seed) { return reverseBits(laineKarras(reverseBits(x), seed)); }
+
+// The scrambles of one dimension pair: of the sample index, and of each coordinate.
+struct PairSeeds {
+    uint32_t index, x, y;
+};
+
+inline PairSeeds pairSeeds(uint32_t pixelSeed, uint32_t pair) {
+    uint32_t seed = hashValues({pixelSeed, pair});
+    return {seed, mix32(seed ^ 0xa511e9b3u), mix32(seed ^ 0x63d83595u)};
+}
+
+inline uint32_t pixelSeed(uint32_t seed, uint32_t pixelX, uint32_t pixelY) {
+    return hashValues({seed * streamTag(RandomStream::Sampler), pixelX, pixelY});
+}
+
+// The pair seeds of one pixel, which all its samples share: worked out once per pixel and
+// pair, as its samples first ask for them, rather than once per sample. Not thread-safe: one
+// per pixel being sampled.
+class PixelSeeds {
+  public:
+    static constexpr uint32_t kPairs = 32;  // those kept; later pairs are worked out each time
+
+    PixelSeeds(uint32_t seed, uint32_t pixelX, uint32_t pixelY) : pixelSeed_(pixelSeed(seed, pixelX, pixelY)) {}
+
+    uint32_t pixel() const { return pixelSeed_; }
+    PairSeeds pair(uint32_t index) {
+        if (index >= kPairs) return pairSeeds(pixelSeed_, index);
+        while (filled_ <= index) {
+            pairs_[filled_] = pairSeeds(pixelSeed_, filled_);
+            ++filled_;
+        }
+        return pairs_[index];
+    }
+
+  private:
+    uint32_t pixelSeed_;
+    uint32_t filled_ = 0;
+    std::array<PairSeeds, kPairs> pairs_;
+};
 
 class PixelSampler {
   public:
     PixelSampler(uint32_t seed, uint32_t pixelX, uint32_t pixelY, uint32_t sampleIndex) :
-        pixelSeed_(hashValues({seed * streamTag(RandomStream::Sampler), pixelX, pixelY})), sampleIndex_(sampleIndex) {}
+        pixelSeed_(pixelSeed(seed, pixelX, pixelY)), reversedIndex_(reverseBits(sampleIndex)) {}
+    // The same points, with the pixel's pair seeds kept in `seeds` (which must outlive it).
+    PixelSampler(PixelSeeds &seeds, uint32_t sampleIndex) :
+        pixelSeed_(seeds.pixel()), reversedIndex_(reverseBits(sampleIndex)), seeds_(&seeds) {}
 
     // Each call consumes one dimension pair; the pair index is the "dimension" of the contract.
-    // The two constants give each coordinate of the pair a scramble of its own.
-    Vec2f next2D() {
-        uint32_t pairSeed = hashValues({pixelSeed_, pair_++});
-        uint32_t index = owenScramble(sampleIndex_, pairSeed);
-        return {bitsToUnitFloat(owenScramble(sobolSample(index, 0), mix32(pairSeed ^ 0xa511e9b3u))),
-                bitsToUnitFloat(owenScramble(sobolSample(index, 1), mix32(pairSeed ^ 0x63d83595u)))};
-    }
+    // The pair's point is that of the scrambled sample index in the first two Sobol
+    // dimensions, each coordinate scrambled on its own (s = pairSeeds(pixel, pair)):
+    //   index = owenScramble(sample, s.index)
+    //   point = (owenScramble(sobolSample(index, 0), s.x), owenScramble(sobolSample(index, 1), s.y))
+    // worked out with three bit reversals instead of seven (sampler.cpp).
+    Vec2f next2D();
     float next1D() { return next2D().x; }
 
   private:
     uint32_t pixelSeed_;
-    uint32_t sampleIndex_;
+    uint32_t reversedIndex_;  // the sample index, bits reversed
+    PixelSeeds *seeds_ = nullptr;
     uint32_t pair_ = 0;
 };
 

@@ -23,6 +23,31 @@ TEST(Sampler, SobolPointsMatchTheSequence) {
     EXPECT_EQ(sobolSample(1u << 31, 1), 0xffffffffu);  // row 31 of Pascal's triangle is all odd
 }
 
+// next2D works the scrambles out with fewer bit reversals; its points are those of the
+// definition in sampler.h, bit for bit.
+TEST(Sampler, PointsAreTheScrambledSobolPointsOfTheDefinition) {
+    for (uint32_t seed : {0u, 7u, 0xdeadbeefu})
+        for (uint32_t pixel = 0; pixel < 40; ++pixel) {
+            PixelSeeds seeds(seed, pixel, 3 * pixel + 1);  // shared by the pixel's samples
+            for (uint32_t sample : {0u, 1u, 2u, 3u, 17u, 255u, 4096u, 123457u, 0xfffffffeu}) {
+                PixelSampler sampler(seed, pixel, 3 * pixel + 1, sample), kept(seeds, sample);
+                uint32_t pixelSeed = hashValues({seed * streamTag(RandomStream::Sampler), pixel, 3 * pixel + 1});
+                // Past the pairs PixelSeeds keeps, too.
+                for (uint32_t pair = 0; pair < PixelSeeds::kPairs + 4; ++pair) {
+                    uint32_t pairSeed = hashValues({pixelSeed, pair});
+                    uint32_t index = owenScramble(sample, pairSeed);
+                    Vec2f expected{bitsToUnitFloat(owenScramble(sobolSample(index, 0), mix32(pairSeed ^ 0xa511e9b3u))),
+                                   bitsToUnitFloat(owenScramble(sobolSample(index, 1), mix32(pairSeed ^ 0x63d83595u)))};
+                    Vec2f u = sampler.next2D(), v = kept.next2D();
+                    ASSERT_EQ(u.x, expected.x) << seed << " " << pixel << " " << sample << " " << pair;
+                    ASSERT_EQ(u.y, expected.y) << seed << " " << pixel << " " << sample << " " << pair;
+                    ASSERT_EQ(v.x, expected.x) << seed << " " << pixel << " " << sample << " " << pair;
+                    ASSERT_EQ(v.y, expected.y) << seed << " " << pixel << " " << sample << " " << pair;
+                }
+            }
+        }
+}
+
 TEST(Sampler, IsAPureFunctionOfSeedPixelSampleAndDimension) {
     PixelSampler a(3, 10, 20, 5), b(3, 10, 20, 5);
     for (int d = 0; d < 8; ++d) {
