@@ -26,13 +26,12 @@ class FilterSampler {
 
     float width_;
     // The filter's 1D distribution function at evenly spaced offsets, inverted at sample time
-    // by binary search; the filter is separable, so x and y share it. (An inverse table at
+    // by a short search from the guide; the filter is separable, so x and y share it. (An inverse table at
     // evenly spaced probabilities, as Cycles keeps, spreads its first and last entries
     // uniformly over the tails and samples them far too often.)
     std::vector<double> cdf_;
-    // For probability k/size(), the cell where the search for it starts: a short search
-    // instead of one over the whole table for every camera ray.
-    std::vector<uint32_t> guide_;
+    // For probability k/size(), the cell where the search for it starts.
+    std::vector<uint16_t> guide_;
 };
 
 }  // namespace veduta
