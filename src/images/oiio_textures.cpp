@@ -40,7 +40,14 @@ OiioTextures::Entry OiioTextures::open(const std::filesystem::path &texture, con
         throw InputError(FileLoc{file.string()},
                          fmt::format("cannot open its texture {}: {}", texture.string(), system_->geterror()));
     }
-    // A footprint far wider than the texture: OpenImageIO's coarsest level.
+    try {
+        entry.resident = ResidentTexture::read(texture, kResidentTexels);
+        if (entry.resident && residentBytes_ + entry.resident->bytes() > kResidentBytes) entry.resident.reset();
+        if (entry.resident) residentBytes_ += entry.resident->bytes();
+    } catch (const std::runtime_error &e) {
+        throw InputError(FileLoc{file.string()}, fmt::format("cannot read its texture: {}", e.what()));
+    }
+    // A footprint far wider than the texture: the coarsest level.
     constexpr float kWholeTexture = 1e6f;
     filtered(entry, {0.5f, 0.5f}, kWholeTexture, entry.mean.data(), std::min(entry.channels, int(entry.mean.size())));
     return entry;
@@ -56,6 +63,10 @@ void OiioTextures::lookup(TextureId id, Vec2f uv, float footprint, float *out, i
 }
 
 void OiioTextures::filtered(const Entry &entry, Vec2f uv, float footprint, float *out, int count) const {
+    if (entry.resident) {
+        entry.resident->lookup(uv, footprint, out, count);
+        return;
+    }
     OIIO::TextureOpt options;
     options.swrap = options.twrap = OIIO::TextureOpt::WrapPeriodic;
     options.mipmode = OIIO::TextureOpt::MipModeTrilinear;  // deterministic, unlike the stochastic modes

@@ -2,7 +2,9 @@
 // (src/images/texture_cache.h), looked up with trilinear mip-map filtering. A lookup whose
 // footprint spans a whole period of the texture or more gives its mean (the coarsest mip
 // level, each of its texels the box-filtered mean of the level above), kept at `add`, without
-// a call into OpenImageIO: far surfaces and bounced rays ask for that most of the time.
+// a call into OpenImageIO: far surfaces and bounced rays ask for that most of the time. A
+// texture of up to kResidentTexels texels is held whole in memory (resident_texture.h) and
+// filtered there; larger ones (orthophotos) stream through OpenImageIO's tile cache.
 #pragma once
 
 #include <array>
@@ -10,6 +12,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,12 +20,16 @@
 #include <OpenImageIO/texture.h>
 
 #include "images/color_config.h"
+#include "images/resident_texture.h"
 #include "scene/textures.h"
 
 namespace veduta {
 
 class OiioTextures final : public Textures {
   public:
+    static constexpr int64_t kResidentTexels = 1 << 20;  // 1024 × 1024: 21 MB with its mip levels in RGBA
+    static constexpr int64_t kResidentBytes = int64_t(512) << 20;
+
     OiioTextures(std::filesystem::path cacheDirectory, std::shared_ptr<const ColorConfig> config);
     ~OiioTextures() override;
     OiioTextures(const OiioTextures &) = delete;
@@ -41,6 +48,7 @@ class OiioTextures final : public Textures {
         int channels = 0;
         std::string texture;
         std::array<float, 4> mean{};  // the first four channels' means
+        std::optional<ResidentTexture> resident;
     };
 
     Entry open(const std::filesystem::path &texture, const std::filesystem::path &file);
@@ -52,6 +60,7 @@ class OiioTextures final : public Textures {
     std::mutex addMutex_;
     std::map<std::pair<std::string, std::string>, TextureId> ids_;  // (absolute path, colour space)
     std::vector<Entry> entries_;
+    int64_t residentBytes_ = 0;
 };
 
 }  // namespace veduta

@@ -1,0 +1,89 @@
+#include "images/resident_texture.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+#include <OpenImageIO/imageio.h>
+#include <fmt/format.h>
+
+namespace veduta {
+
+namespace {
+
+// The fractional part, in [0, 1): periodic wrapping, before any conversion to integers.
+float wrapped(float x) {
+    if (!std::isfinite(x)) return 0.0f;
+    float f = x - std::floor(x);
+    return f < 1.0f ? f : 0.0f;
+}
+
+int wrap(int i, int size) { return i < 0 ? i + size : (i >= size ? i - size : i); }
+
+}  // namespace
+
+std::optional<ResidentTexture> ResidentTexture::read(const std::filesystem::path &texture, int64_t maxTexels) {
+    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(texture.string());
+    if (!in) throw std::runtime_error(fmt::format("{}: {}", texture.string(), OIIO::geterror()));
+    const OIIO::ImageSpec &first = in->spec();
+    if (int64_t(first.width) * first.height > maxTexels || first.nchannels > 4) return std::nullopt;
+    ResidentTexture result;
+    result.channels_ = first.nchannels;
+    for (int miplevel = 0; in->seek_subimage(0, miplevel); ++miplevel) {
+        const OIIO::ImageSpec &spec = in->spec();
+        Level &level = result.levels_.emplace_back();
+        level.width = spec.width;
+        level.height = spec.height;
+        level.texels.resize(size_t(spec.width) * size_t(spec.height) * size_t(spec.nchannels));
+        if (spec.nchannels != result.channels_ ||
+            !in->read_image(0, miplevel, 0, spec.nchannels, OIIO::TypeFloat, level.texels.data()))
+            throw std::runtime_error(
+                fmt::format("{}: cannot read mip level {}: {}", texture.string(), miplevel, in->geterror()));
+    }
+    if (result.levels_.empty()) throw std::runtime_error(fmt::format("{}: no image in it", texture.string()));
+    return result;
+}
+
+int64_t ResidentTexture::bytes() const {
+    int64_t bytes = 0;
+    for (const Level &level : levels_) bytes += int64_t(level.texels.size() * sizeof(float));
+    return bytes;
+}
+
+void ResidentTexture::lookup(Vec2f uv, float footprint, float *out, int count) const {
+    count = std::min(count, channels_);
+    // OpenImageIO's s and t: t runs down from the top row, v up.
+    float s = wrapped(uv.x), t = wrapped(1.0f - uv.y);
+    const Level &finest = levels_.front();
+    float texels = footprint * float(std::max(finest.width, finest.height));
+    float level = texels > 1.0f ? std::log2(texels) : 0.0f;
+    auto last = float(levels_.size() - 1);
+    if (!(level < last)) {
+        bilinear(levels_.back(), s, t, out, count);
+        return;
+    }
+    auto lower = size_t(level);
+    float blend = level - float(lower);
+    bilinear(levels_[lower], s, t, out, count);
+    if (blend == 0.0f) return;
+    float coarser[4];
+    bilinear(levels_[lower + 1], s, t, coarser, count);
+    for (int c = 0; c < count; ++c) out[c] = (1.0f - blend) * out[c] + blend * coarser[c];
+}
+
+void ResidentTexture::bilinear(const Level &level, float s, float t, float *out, int count) const {
+    float x = s * float(level.width) - 0.5f, y = t * float(level.height) - 0.5f;
+    float x0f = std::floor(x), y0f = std::floor(y);
+    float wx = x - x0f, wy = y - y0f;
+    int x0 = wrap(int(x0f), level.width), y0 = wrap(int(y0f), level.height);
+    int x1 = wrap(x0 + 1, level.width), y1 = wrap(y0 + 1, level.height);
+    auto texel = [&](int tx, int ty) {
+        return &level.texels[(size_t(ty) * size_t(level.width) + size_t(tx)) * size_t(channels_)];
+    };
+    const float *a = texel(x0, y0), *b = texel(x1, y0), *c = texel(x0, y1), *d = texel(x1, y1);
+    for (int k = 0; k < count; ++k)
+        out[k] = (1.0f - wy) * ((1.0f - wx) * a[k] + wx * b[k]) + wy * ((1.0f - wx) * c[k] + wx * d[k]);
+}
+
+}  // namespace veduta
