@@ -6,6 +6,7 @@
 #include <functional>
 #include <memory>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
@@ -156,17 +157,26 @@ TEST(MaterialsRender, NormalMapsShadeUnderTheSun) {
 
 // A floor of albedo 0.5 under a vertical sun of irradiance 2 behind a large pane of glass:
 // the pane passes T' = 1 − R' of the sunlight, R' = 2R/(1 + R) at normal incidence.
-TEST(MaterialsRender, SunlightPassesGlassByFresnel) {
-    RgbaImage film = renderScene(test::sceneFromXml(R"(<scene>
-  <camera position="0 0 0.5" look_at="0 0 0" up="0 1 0" fov="20" resolution="16 16"/>
+// The floor of albedo 0.5 seen from above, under a vertical sun of irradiance 2 and what
+// `above` puts between them, direct light only; materials "grey" and "pane" (glass) exist.
+std::string sunlitFloor(const std::string &above, int resolution, int spp) {
+    return fmt::format(R"(<scene>
+  <camera position="0 0 0.5" look_at="0 0 0" up="0 1 0" fov="20" resolution="{0} {0}"/>
   <sun direction="0 0 1" irradiance="2" angular_diameter="0.53"/>
   <environment radiance="0"/>
-  <render spp="16" max_depth="1"/>
+  <render spp="{1}" max_depth="1"/>
   <material name="grey" diffuse="0.5"/>
   <material name="pane" glass="true" ior="1.5"/>
   <plane size="1000 1000" material="grey"/>
-  <plane size="1000 1000" translate="0 0 1" material="pane"/>
-</scene>)"));
+{2}</scene>)",
+                       resolution, spp, above);
+}
+
+TEST(MaterialsRender, SunlightPassesGlassByFresnel) {
+    RgbaImage film =
+        renderScene(test::sceneFromXml(sunlitFloor(R"(  <plane size="1000 1000" translate="0 0 1" material="pane"/>)"
+                                                   "\n",
+                                                   16, 16)));
     double r = 0.04, transmitted = 1 - 2 * r / (1 + r);
     for (size_t i = 0; i < film.pixels().size(); ++i) {
         if (i % 4 == 3) continue;
@@ -209,21 +219,13 @@ TEST(MaterialsRender, SunlightThroughGlassIsCountedOnce) {
 // kept), and a grey roof above them all stops the sun when it is there.
 TEST(MaterialsRender, ShadowRaysWeighEveryPaneTheyCross) {
     auto floorUnder = [](int panes, bool roof) {
-        std::string xml = R"(<scene>
-  <camera position="0 0 0.5" look_at="0 0 0" up="0 1 0" fov="20" resolution="8 8"/>
-  <sun direction="0 0 1" irradiance="2" angular_diameter="0.53"/>
-  <environment radiance="0"/>
-  <render spp="4" max_depth="1"/>
-  <material name="grey" diffuse="0.5"/>
-  <material name="pane" glass="true" ior="1.5"/>
-  <plane size="1000 1000" material="grey"/>
-  <prototype name="sheet"><plane size="1000 1000" material="grey"/></prototype>
+        std::string xml = R"(  <prototype name="sheet"><plane size="1000 1000" material="grey"/></prototype>
 )";
         for (int i = 0; i < panes; ++i)
             xml +=
                 "  <instance prototype=\"sheet\" material=\"pane\" translate=\"0 0 " + std::to_string(1 + i) + "\"/>\n";
         if (roof) xml += "  <plane size=\"1000 1000\" translate=\"0 0 100\" material=\"grey\"/>\n";
-        return meanRgb(renderScene(test::sceneFromXml(xml + "</scene>")));
+        return meanRgb(renderScene(test::sceneFromXml(sunlitFloor(xml, 8, 4))));
     };
     double r = 0.04, pane = 1 - 2 * r / (1 + r);
     // 40 panes are more than one occlusion query holds (PassedSurfaces::kCapacity).
