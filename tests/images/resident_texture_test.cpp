@@ -49,6 +49,7 @@ TEST(ResidentTexture, FiltersAsOpenImageIoDoes) {
         }
     }
     OIIO::TextureSystem::destroy(system);
+    std::filesystem::remove_all(cache);
     std::printf("largest difference: %.2e at a tiny footprint, %.2e over all\n", worstTiny, worst);
     EXPECT_LT(worstTiny, 1e-5);
     EXPECT_LT(worst, 0.01);  // 2.2e-3 measured, on texels of about 0.5
