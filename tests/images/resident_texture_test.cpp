@@ -8,6 +8,9 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <string>
+
+#include <unistd.h>
 
 #include "core/hash.h"
 #include "images/color_config.h"
@@ -19,7 +22,8 @@ namespace veduta {
 namespace {
 
 TEST(ResidentTexture, FiltersAsOpenImageIoDoes) {
-    std::filesystem::path cache = std::filesystem::temp_directory_path() / "veduta-resident-texture";
+    std::filesystem::path cache =
+        std::filesystem::temp_directory_path() / ("veduta-resident-texture-" + std::to_string(::getpid()));
     std::filesystem::path source = test::sourceFile("materials/textures/plaster_diffuse.png");
     std::shared_ptr<const ColorConfig> config = ColorConfig::load();
     std::filesystem::path tx = cachedTexture(cache, source, *config->find("sRGB"), *config);
