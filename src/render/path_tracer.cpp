@@ -136,7 +136,9 @@ Vec3f PathTracer::transmittanceTowards(const SurfaceInteraction &si, const Vec3f
     constexpr float kShadowFootprint = 0;
     // One occlusion query that skips the panes and cut-outs and lists them, nearest first.
     ++counts.shadow;
-    PassedSurfaces passed;
+    // The thread's own list: Bvh::occluded empties it, and one per shadow ray would zero its
+    // 32 entries each time.
+    thread_local PassedSurfaces passed;
     bool stopped = bvh_.occluded(shadow, kInfinity, passed);
     Vec3f transmitted(1.0f);
     if (!passed.overflow) {

@@ -14,10 +14,10 @@ namespace {
 MapProjection utm32(double e, double n) { return MapProjection(crsByEpsg(25832), Georeference{25832, e, n}); }
 
 // A polygon given in metres from 500000 E, 5400000 N (on UTM 32's central meridian).
-CityGmlPolygon ground(std::vector<CrsCoordinate> ring) {
+CityGmlPolygon surface(SurfaceKind kind, std::vector<CrsCoordinate> ring) {
     for (CrsCoordinate &p : ring) p.x += 500000, p.y += 5400000;
     CityGmlPolygon polygon;
-    polygon.kind = SurfaceKind::Ground;
+    polygon.kind = kind;
     polygon.rings = {std::move(ring)};
     return polygon;
 }
@@ -44,11 +44,10 @@ TEST(CityGmlTwin, TheFzkHouse) {
 TEST(CityGmlTwin, TheGroundOfTwoPartsIsOneOutline) {
     CityGmlBuilding building;
     building.id = "TWO";
-    building.polygons.push_back(ground({{0, 0, 0}, {0, 8, 0}, {6, 8, 0}, {6, 0, 0}}));  // facing down
-    building.polygons.push_back(ground({{6, 0, 0}, {6, 8, 0}, {10, 8, 0}, {10, 0, 0}}));
-    CityGmlPolygon roof = ground({{0, 0, 7}, {10, 0, 7}, {10, 8, 7}, {0, 8, 7}});
-    roof.kind = SurfaceKind::Roof;
-    building.polygons.push_back(roof);
+    building.polygons.push_back(
+        surface(SurfaceKind::Ground, {{0, 0, 0}, {0, 8, 0}, {6, 8, 0}, {6, 0, 0}}));  // facing down
+    building.polygons.push_back(surface(SurfaceKind::Ground, {{6, 0, 0}, {6, 8, 0}, {10, 8, 0}, {10, 0, 0}}));
+    building.polygons.push_back(surface(SurfaceKind::Roof, {{0, 0, 7}, {10, 0, 7}, {10, 8, 7}, {0, 8, 7}}));
     std::vector<std::string> warnings;
     std::optional<TwinBuilding> twin = deriveTwin(building, utm32(500000, 5400000), warnings);
     ASSERT_TRUE(twin) << (warnings.empty() ? "" : warnings[0]);
@@ -64,11 +63,9 @@ TEST(CityGmlTwin, TheGroundOfTwoPartsIsOneOutline) {
 TEST(CityGmlTwin, SeparatePiecesGiveTheLargestWithAWarning) {
     CityGmlBuilding building;
     building.id = "APART";
-    building.polygons.push_back(ground({{0, 0, 0}, {0, 8, 0}, {6, 8, 0}, {6, 0, 0}}));
-    building.polygons.push_back(ground({{20, 0, 0}, {20, 2, 0}, {22, 2, 0}, {22, 0, 0}}));
-    CityGmlPolygon wall = ground({{0, 0, 0}, {6, 0, 0}, {6, 0, 5}, {0, 0, 5}});
-    wall.kind = SurfaceKind::Wall;
-    building.polygons.push_back(wall);
+    building.polygons.push_back(surface(SurfaceKind::Ground, {{0, 0, 0}, {0, 8, 0}, {6, 8, 0}, {6, 0, 0}}));
+    building.polygons.push_back(surface(SurfaceKind::Ground, {{20, 0, 0}, {20, 2, 0}, {22, 2, 0}, {22, 0, 0}}));
+    building.polygons.push_back(surface(SurfaceKind::Wall, {{0, 0, 0}, {6, 0, 0}, {6, 0, 5}, {0, 0, 5}}));
     std::vector<std::string> warnings;
     std::optional<TwinBuilding> twin = deriveTwin(building, utm32(500000, 5400000), warnings);
     ASSERT_TRUE(twin);
@@ -80,9 +77,7 @@ TEST(CityGmlTwin, SeparatePiecesGiveTheLargestWithAWarning) {
 TEST(CityGmlTwin, NoOutlineNoTwin) {
     CityGmlBuilding building;
     building.id = "WALL";
-    CityGmlPolygon wall = ground({{0, 0, 0}, {6, 0, 0}, {6, 0, 5}, {0, 0, 5}});
-    wall.kind = SurfaceKind::Wall;
-    building.polygons.push_back(wall);
+    building.polygons.push_back(surface(SurfaceKind::Wall, {{0, 0, 0}, {6, 0, 0}, {6, 0, 5}, {0, 0, 5}}));
     std::vector<std::string> warnings;
     EXPECT_FALSE(deriveTwin(building, utm32(500000, 5400000), warnings));
     ASSERT_EQ(warnings.size(), 1u);
