@@ -1,5 +1,6 @@
 #include "assembly/build_scene.h"
 
+#include <cmath>
 #include <map>
 #include <new>
 #include <optional>
@@ -15,6 +16,7 @@
 #include "city/generate_buildings.h"
 #include "city/generate_city.h"
 #include "geo/generate_landscape.h"
+#include "geodesy/map_projection.h"
 #include "io/georeferenced_mesh.h"
 #include "io/image_library.h"
 #include "io/mesh_import.h"
@@ -28,10 +30,12 @@ class SceneAssembler {
     SceneAssembler(const SceneDescription &d, std::vector<std::string> &warnings) : d_(d), warnings_(warnings) {}
 
     RenderScene assemble() && {
-        builder_.setCamera(d_.camera);
+        builder_.setCamera(placeCamera());
         Sun sun = placeSun(d_);
         builder_.setSun(sun);
-        builder_.setEnvironment(buildEnvironment(d_.environment, sun));
+        Environment environment = buildEnvironment(d_.environment, sun);
+        builder_.setEnvironment(environment);
+        builder_.setFog(placeFog(environment, sun));
         RenderSettings settings = d_.settings;
         settings.seed = seedOf(d_.renderSeed);
         builder_.setSettings(settings);
@@ -171,6 +175,42 @@ class SceneAssembler {
         } catch (const InputError &e) {
             throw InputError(g.meshFileLoc, e.what());
         }
+    }
+
+    // The fog glows with the light it scatters: the sky's mean radiance and the sun's
+    // irradiance spread over the sphere (isotropic scattering, albedo 1, nothing shadowed).
+    Fog placeFog(const Environment &environment, const Sun &sun) const {
+        Fog fog = d_.fog;
+        fog.inscatter = environment.averageRadiance() + sun.irradiance / (4 * kPi);
+        return fog;
+    }
+
+    // A camera given in map coordinates takes the route every map point takes into the frame.
+    Camera placeCamera() const {
+        Camera camera = d_.camera;
+        if (!d_.mapCamera) return camera;
+        const MapCameraDesc &m = *d_.mapCamera;
+        if (!d_.georeference)
+            throw InputError(m.loc,
+                             "a camera in map coordinates (crs) needs the scene's <georeference "
+                             "crs=\"EPSG:…\" origin=\"E N\"> to be placed");
+        MapProjection projection(crsByEpsg(m.epsg), *d_.georeference);
+        try {
+            camera.position = projection.toRender(m.position);
+            camera.lookAt = projection.toRender(m.lookAt);
+        } catch (const std::out_of_range &e) {
+            throw InputError(m.loc, fmt::format("camera: {}", e.what()));
+        }
+        constexpr float kFarthest = 1e7f;  // as for points given in the frame (scene_file.cpp)
+        for (const Vec3f &p : {camera.position, camera.lookAt}) {
+            if (std::abs(p.x) > kFarthest || std::abs(p.y) > kFarthest)
+                throw InputError(m.loc, "the camera lies more than 10,000 km from the scene origin");
+        }
+        if (length(camera.lookAt - camera.position) == 0)
+            throw InputError(m.loc, "camera position and look_at are the same point in the render frame");
+        if (length(cross(camera.lookAt - camera.position, camera.up)) == 0)
+            throw InputError(m.loc, "camera up is parallel to the view direction");
+        return camera;
     }
 
     // The one route of a mesh in map coordinates into the scene's frame.

@@ -10,9 +10,11 @@
 
 #include "core/error.h"
 #include "description/settings_map.h"
+#include "geodesy/crs.h"
 #include "geodesy/georeference.h"
 #include "scene/camera.h"
 #include "scene/environment.h"
+#include "scene/fog.h"
 #include "scene/material.h"
 #include "scene/render_settings.h"
 #include "scene/shapes.h"
@@ -197,13 +199,23 @@ struct LandscapeDesc {
     uint32_t objectId = 0;
 };
 
+// A camera placed in map coordinates (<camera crs="EPSG:…">): position and look_at are
+// easting, northing and height in that CRS; buildRenderScene takes them into the render frame.
+struct MapCameraDesc {
+    int epsg = 0;
+    CrsCoordinate position, lookAt;
+    FileLoc loc;  // of the crs attribute
+};
+
 struct SceneDescription {
     std::string source;  // file name, or a name for built-in text
     Camera camera;
+    std::optional<MapCameraDesc> mapCamera;
     Sun sun;
     std::optional<SunTimeDesc> sunTime;
     std::optional<Georeference> georeference;
     EnvironmentDesc environment;
+    Fog fog;  // its inscatter is left to buildRenderScene, which takes it from the sky
     // <scene seed> (or --seed): the seed of every random choice whose generator has no seed of
     // its own; buildRenderScene resolves them all, in one place.
     uint32_t seed = 0;

@@ -53,6 +53,8 @@ class SceneFileReader {
             readSun(e);
         } else if (n == "environment") {
             readEnvironment(e);
+        } else if (n == "fog") {
+            readFog(e);
         } else if (n == "georeference") {
             readGeoreference(e);
         } else if (n == "render") {
@@ -81,7 +83,8 @@ class SceneFileReader {
     }
 
     static bool isGeometry(std::string_view n) {
-        return n == "box" || n == "sphere" || n == "cylinder" || n == "cone" || n == "plane" || n == "mesh";
+        return n == "box" || n == "sphere" || n == "cylinder" || n == "cone" || n == "plane" || n == "mesh" ||
+            n == "ground";
     }
 
     // A point of the render frame: metres from the scene origin, which georeferenced data
@@ -99,10 +102,32 @@ class SceneFileReader {
 
     void readCamera(const XmlElement &e) {
         Camera &c = scene_.camera;
-        c.position = framePoint(e, "position", c.position);
-        c.lookAt = framePoint(e, "look_at", c.lookAt);
+        if (e.has("crs")) {
+            readMapCamera(e);
+        } else {
+            c.position = framePoint(e, "position", c.position);
+            c.lookAt = framePoint(e, "look_at", c.lookAt);
+            scene_.mapCamera.reset();
+        }
         c.up = e.vec3("up", c.up);
+        std::string projection =
+            e.string("projection", c.projection == Projection::Orthographic ? "orthographic" : "perspective");
+        if (projection != "perspective" && projection != "orthographic")
+            e.failAt("projection",
+                     fmt::format("projection '{}' is neither 'perspective' nor 'orthographic'", projection));
+        c.projection = projection == "orthographic" ? Projection::Orthographic : Projection::Perspective;
         c.verticalFovDegrees = e.number("fov", c.verticalFovDegrees, 0.01f, 179.0f);
+        c.orthoScale = e.number("ortho_scale", c.orthoScale, 1e-3f, 1e7f);
+        if (e.has("shift")) {
+            std::vector<float> shift = e.numbers("shift");
+            if (shift.size() != 2 || std::abs(shift[0]) > 10 || std::abs(shift[1]) > 10)
+                e.failAt("shift", "shift takes two numbers, horizontal and vertical, -10 to 10");
+            c.shift = {shift[0], shift[1]};
+        }
+        c.fNumber = e.number("f_number", c.fNumber, 0, 1e4f);
+        if (c.fNumber > 0 && c.fNumber < 0.1f) e.failAt("f_number", "f_number is 0 (a pinhole) or 0.1 to 10000");
+        c.focusDistance = e.number("focus_distance", c.focusDistance, 0, 1e7f);
+        c.sensorWidth = e.number("sensor_width", c.sensorWidth, 1, 1000);
         if (e.has("resolution")) {
             std::vector<float> r = e.numbers("resolution");
             if (r.size() != 2 || r[0] < 1 || r[1] < 1 || r[0] > 65536 || r[1] > 65536 || r[0] != std::floor(r[0]) ||
@@ -112,8 +137,48 @@ class SceneFileReader {
             c.width = int(r[0]);
             c.height = int(r[1]);
         }
-        if (length(c.lookAt - c.position) == 0) e.fail("camera position and look_at are the same point");
-        if (length(cross(c.lookAt - c.position, c.up)) == 0) e.fail("camera up is parallel to the view direction");
+        if (c.hasDepthOfField() && c.projection == Projection::Orthographic)
+            e.fail("depth of field (f_number) needs a perspective camera");
+        if (!scene_.mapCamera) {
+            if (length(c.lookAt - c.position) == 0) e.fail("camera position and look_at are the same point");
+            if (length(cross(c.lookAt - c.position, c.up)) == 0) e.fail("camera up is parallel to the view direction");
+        }
+        e.checkLeaf();
+    }
+
+    // position and look_at as easting, northing and height in the camera's crs, in double:
+    // the render frame is only known once the scene's georeference is.
+    void readMapCamera(const XmlElement &e) {
+        MapCameraDesc m;
+        m.epsg = supportedCrsAttribute(e, "crs");
+        m.loc = e.attributeLoc("crs");
+        auto point = [&](const char *attribute) {
+            std::vector<double> v = e.doubles(attribute);
+            if (v.size() != 3)
+                e.failAt(
+                    attribute,
+                    fmt::format("{} takes three numbers in map coordinates: easting, northing, height", attribute));
+            return CrsCoordinate{v[0], v[1], v[2]};
+        };
+        m.position = point("position");
+        m.lookAt = point("look_at");
+        if (m.position.x == m.lookAt.x && m.position.y == m.lookAt.y && m.position.z == m.lookAt.z)
+            e.fail("camera position and look_at are the same point");
+        scene_.mapCamera = m;
+    }
+
+    // Extinction as a density (1/m) or as the meteorological visibility (m), by Koschmieder's
+    // law: the distance at which contrast falls to 2 %, σ = −ln 0.02 / V = 3.912 / V.
+    void readFog(const XmlElement &e) {
+        Fog &fog = scene_.fog;
+        if (e.has("density") == e.has("visibility")) e.fail("give the fog one of 'density' and 'visibility'");
+        if (e.has("density")) {
+            fog.density = e.number("density", 0, 0, 10);
+        } else {
+            fog.density = 3.912f / e.number("visibility", 1, 0.1f, 1e7f);
+        }
+        fog.baseHeight = e.number("height", fog.baseHeight, -1e4f, 1e5f);
+        fog.scaleHeight = e.number("scale_height", fog.scaleHeight, 1, 1e6f);
         e.checkLeaf();
     }
 
@@ -500,7 +565,12 @@ class SceneFileReader {
         } else {
             g.shape = readShape(e);
         }
-        g.transform = readTransform(e);
+        if (e.name() == "ground") {
+            // Endless and level, it has a height instead of a transform.
+            if (!topLevel) e.fail("<ground> stands at the top level of the scene, not in a <prototype>");
+        } else {
+            g.transform = readTransform(e);
+        }
         g.material = readNameRef(e, "material");
         if (topLevel) {
             readObjectId(e, g.loc);
@@ -525,6 +595,9 @@ class SceneFileReader {
         if (n == "box") {
             s.kind = ShapeKind::Box;
             s.size = e.vec3("size", s.size);
+        } else if (n == "ground") {
+            s.kind = ShapeKind::Ground;
+            s.height = e.number("height", 0, -1e4f, 1e5f);
         } else if (n == "plane") {
             s.kind = ShapeKind::Plane;
             if (e.has("size")) {

@@ -53,27 +53,31 @@ Box3 boundsOf(const Mesh &mesh) {
 }
 
 // The camera as the rasterizer sees it: world → camera space (x right, y up, z forward) and
-// camera space → raster, with the pixel centres CameraRays uses.
-struct Projection {
+// camera space → raster, with the frame CameraRays uses (lens shift, orthographic scale). A
+// thin lens is drawn as the pinhole at its centre.
+struct RasterProjection {
     Transform cameraFromWorld;
     Vec3f eye;
+    bool orthographic;
     float scaleX, scaleY, offsetX, offsetY;
 
-    explicit Projection(const Camera &c) : eye(c.position) {
+    explicit RasterProjection(const Camera &c) :
+        eye(c.position), orthographic(c.projection == Projection::Orthographic) {
         Vec3f forward = normalize(c.lookAt - c.position);
         Vec3f right = normalize(cross(forward, c.up));
         Vec3f up = cross(right, forward);
         cameraFromWorld = {{right.x, right.y, right.z, -dot(right, eye), up.x, up.y, up.z, -dot(up, eye), forward.x,
                             forward.y, forward.z, -dot(forward, eye)}};
-        float halfHeight = std::tan(radians(c.verticalFovDegrees) * 0.5f);
-        float halfWidth = halfHeight * float(c.width) / float(c.height);
-        scaleX = float(c.width) / (2 * halfWidth);
-        scaleY = float(c.height) / (2 * halfHeight);
-        offsetX = float(c.width) * 0.5f;
-        offsetY = float(c.height) * 0.5f;
+        // CameraRays' frame: the same extent, and Blender's shift in lengths of the longer side.
+        Vec2f half = c.halfExtent();
+        float longer = 2 * std::max(half.x, half.y);
+        scaleX = float(c.width) / (2 * half.x);
+        scaleY = float(c.height) / (2 * half.y);
+        offsetX = float(c.width) * 0.5f - c.shift.x * longer * scaleX;
+        offsetY = float(c.height) * 0.5f + c.shift.y * longer * scaleY;
     }
-    float rasterX(const Vec3f &p) const { return p.x / p.z * scaleX + offsetX; }
-    float rasterY(const Vec3f &p) const { return offsetY - p.y / p.z * scaleY; }
+    float rasterX(const Vec3f &p) const { return (orthographic ? p.x : p.x / p.z) * scaleX + offsetX; }
+    float rasterY(const Vec3f &p) const { return offsetY - (orthographic ? p.y : p.y / p.z) * scaleY; }
 };
 
 // A mesh as drawn: a baked mesh or one instance of a prototype.
@@ -319,10 +323,11 @@ class Rasterizer {
     }
 
     // Edge functions at pixel centres over the triangle's box within the tile. Depth and
-    // barycentrics are interpolated perspective-correctly through 1/z.
+    // barycentrics are interpolated perspective-correctly through 1/z (orthographic: affinely).
     void rasterize(const RasterVertex (&c)[3], const Tile &tile, TileFragments &f, uint32_t item, uint32_t tri) {
         const float x[3] = {c[0].x, c[1].x, c[2].x}, y[3] = {c[0].y, c[1].y, c[2].y};
         const float invZ[3] = {c[0].invZ, c[1].invZ, c[2].invZ};
+        const float depth[3] = {1 / invZ[0], 1 / invZ[1], 1 / invZ[2]};
         if (!std::isfinite(x[0] + x[1] + x[2] + y[0] + y[1] + y[2])) return;
         // Pixels whose centres the triangle's box holds, clamped to the tile in float first:
         // a vertex just beyond the near plane can project far outside int's range.
@@ -369,9 +374,14 @@ class Rasterizer {
                               edgeSign[1] * (row[1] - dyEdge[1] * (cx - originX[1])),
                               edgeSign[2] * (row[2] - dyEdge[2] * (cx - originX[2]))};
                 if (std::min(std::min(e[0], e[1]), e[2]) < 0) continue;  // one branch, not three
-                // 1/z is affine on the raster: test it before paying for a division.
+                // In perspective 1/z is affine on the raster: test it before paying for a
+                // division. An orthographic view has z itself affine, and affine weights.
                 float w0 = e[0] * invZ[0], w1 = e[1] * invZ[1], w2 = e[2] * invZ[2];
                 float invDepth = (w0 + w1 + w2) * invArea;
+                if (projection_.orthographic) {
+                    w0 = e[0], w1 = e[1], w2 = e[2];
+                    invDepth = 1.0f / ((w0 * depth[0] + w1 * depth[1] + w2 * depth[2]) * invArea);
+                }
                 size_t p = size_t(py - tile.y0) * size_t(tile.x1 - tile.x0) + size_t(px - tile.x0);
                 if (!(invDepth > f.invDepth[p])) continue;
                 // Perspective-correct weights of the three corners.
@@ -394,7 +404,7 @@ class Rasterizer {
 
     const RenderScene &scene_;
     const PreviewOptions &options_;
-    Projection projection_;
+    RasterProjection projection_;
     int width_, height_, tilesX_, tilesY_;
     std::vector<DrawItem> items_;
     std::vector<std::vector<uint32_t>> bins_;

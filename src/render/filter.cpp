@@ -7,7 +7,7 @@ namespace veduta {
 
 namespace {
 
-// Cells of the tabulated distribution over the filter's width (a 4000th of a pixel at the
+// Cells of the tabulated distribution over the filter's support (a 1400th of a pixel at the
 // default width), and as many guide entries: a search of one or two cells but in the tails,
 // and both tables in a core's first-level cache, since every camera ray reads them twice.
 constexpr int kSteps = 1 << 12;
@@ -16,19 +16,23 @@ static_assert(kSteps <= 1 << 16, "guide entries are 16-bit cell numbers");
 
 }  // namespace
 
-float blackmanHarris(float x, float width) {
-    if (std::abs(x) > 0.5f * width) return 0.0f;
-    double t = 2 * M_PI * (double(x) / width + 0.5);
+float blackmanHarris(float x, float window) {
+    if (std::abs(x) > 0.5f * window) return 0.0f;
+    double t = 2 * M_PI * (double(x) / window + 0.5);
     return float(0.35875 - 0.48829 * std::cos(t) + 0.14128 * std::cos(2 * t) - 0.01168 * std::cos(3 * t));
 }
 
-FilterSampler::FilterSampler(const PixelFilter &filter) : width_(filter.width) {
+float filterRadius(const PixelFilter &filter) {
+    return filter.kind == FilterKind::Box ? 0.5f * filter.width : filter.width;
+}
+
+FilterSampler::FilterSampler(const PixelFilter &filter) : radius_(filterRadius(filter)) {
     if (filter.kind == FilterKind::Box) return;  // uniform: no table needed
     // The running integral of the filter by the midpoint rule, normalised.
     cdf_.assign(kSteps + 1, 0.0);
     for (int i = 0; i < kSteps; ++i) {
-        float x = width_ * ((float(i) + 0.5f) / kSteps - 0.5f);
-        cdf_[size_t(i) + 1] = cdf_[size_t(i)] + blackmanHarris(x, width_);
+        float x = 2 * radius_ * ((float(i) + 0.5f) / kSteps - 0.5f);
+        cdf_[size_t(i) + 1] = cdf_[size_t(i)] + blackmanHarris(x, 2 * radius_);
     }
     for (double &c : cdf_) c /= cdf_.back();
     guide_.resize(kGuideSize + 1);
@@ -41,7 +45,7 @@ FilterSampler::FilterSampler(const PixelFilter &filter) : width_(filter.width) {
 }
 
 float FilterSampler::offset(float u) const {
-    if (cdf_.empty()) return width_ * (u - 0.5f);
+    if (cdf_.empty()) return radius_ * (2 * u - 1);
     // The cell whose share of the distribution holds u, and u's place within it.
     size_t k = std::min(size_t(double(u) * kGuideSize), size_t(kGuideSize) - 1);
     // The search ends before the table's last entry, so that u = 1 lands in the last cell.
@@ -52,7 +56,7 @@ float FilterSampler::offset(float u) const {
     while (i + 1 < end && cdf_[i + 1] <= double(u)) ++i;
     double span = cdf_[i + 1] - cdf_[i];
     double within = span > 0 ? std::clamp((u - cdf_[i]) / span, 0.0, 1.0) : 0.5;
-    return float(width_ * ((double(i) + within) / kSteps - 0.5));
+    return float(radius_ * (2 * (double(i) + within) / kSteps - 1));
 }
 
 }  // namespace veduta

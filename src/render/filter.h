@@ -12,8 +12,13 @@
 
 namespace veduta {
 
-// The 4-term Blackman–Harris window over [−width/2, width/2], unnormalised (1 at the centre).
-float blackmanHarris(float x, float width);
+// The 4-term Blackman–Harris window over [−window/2, window/2], unnormalised (1 at the centre).
+float blackmanHarris(float x, float window);
+
+// How far the filter reaches from the pixel centre, in pixels, by Cycles' reading of its width:
+// a box of width w covers ±w/2, a Blackman–Harris window of width w covers ±w (Cycles' film
+// doubles that width before it builds its table), so `filter_width` means the same in both.
+float filterRadius(const PixelFilter &filter);
 
 class FilterSampler {
   public:
@@ -24,7 +29,7 @@ class FilterSampler {
   private:
     float offset(float u) const;
 
-    float width_;
+    float radius_;
     // The filter's 1D distribution function at evenly spaced offsets, inverted at sample time
     // by a short search from the guide; the filter is separable, so x and y share it. (An inverse table at
     // evenly spaced probabilities, as Cycles keeps, spreads its first and last entries

@@ -24,6 +24,13 @@ bool isBlack(const Vec3f &v) { return v.x == 0 && v.y == 0 && v.z == 0; }
 
 }  // namespace
 
+bool PathTracer::survives(Vec3f &beta, float u) const {
+    float survive = std::min(maxComponent(beta) / scene_.settings.roulette.threshold, 1.0f);
+    if (u >= survive) return false;
+    beta = beta / survive;
+    return true;
+}
+
 PathTracer::PathTracer(const RenderScene &scene, const Bvh &bvh) :
     scene_(scene),
     bvh_(bvh),
@@ -31,7 +38,7 @@ PathTracer::PathTracer(const RenderScene &scene, const Bvh &bvh) :
     materials_(scene),
     sun_(scene.sun),
     environment_(scene.environment),
-    pixelSpread_(radians(scene.camera.verticalFovDegrees) / float(scene.camera.height)),
+    pixelSpread_(CameraRays(scene.camera).pixelSpread()),
     cameraForward_(normalize(scene.camera.lookAt - scene.camera.position)) {}
 
 Vec3f PathTracer::radiance(const Ray &cameraRay, PixelSampler &sampler, RayCounts &counts, FirstHit *first) const {
@@ -41,6 +48,7 @@ Vec3f PathTracer::radiance(const Ray &cameraRay, PixelSampler &sampler, RayCount
     Ray ray = cameraRay;
     float bsdfPdf = 0;  // camera rays see lights directly
     float spread = pixelSpread_;
+    float cameraDistance = 0;  // how far the camera ray went: the aerial perspective's path
     // `depth` counts the vertices that scatter; passing straight through glass is not one.
     for (uint32_t depth = 0, segment = 0; segment < settings.maxDepth + kMaxPassThrough; ++segment) {
         // Pairs for lights the scene does not sample are not drawn: which ones are is the
@@ -50,6 +58,7 @@ Vec3f PathTracer::radiance(const Ray &cameraRay, PixelSampler &sampler, RayCount
         Vec2f uLobeRoulette = sampler.next2D(), uDirection = sampler.next2D();
 
         std::optional<SurfaceInteraction> si = findSurface(ray, segment == 0, spread, counts);
+        if (segment == 0) cameraDistance = si ? si->distance : std::numeric_limits<float>::infinity();
         if (!si) {
             L += beta * escapedLight(ray.direction, bsdfPdf);
             break;
@@ -76,13 +85,12 @@ Vec3f PathTracer::radiance(const Ray &cameraRay, PixelSampler &sampler, RayCount
         bsdfPdf = s->delta ? 0.0f : s->pdf;
         if (!s->delta) spread = std::max(spread, kBouncedSpread);
 
-        if (depth >= settings.rouletteDepth) {
-            float survive = std::min(maxComponent(beta), 0.95f);
-            if (uLobeRoulette.y >= survive) break;
-            beta = beta / survive;
-        }
+        // Decided before the ray is traced, which is what it saves.
+        if (depth >= settings.roulette.startDepth && !survives(beta, uLobeRoulette.y)) break;
     }
-    return L;
+    // Aerial perspective on the camera ray only: light on its way to what the camera sees
+    // crosses a few metres of the scene, the camera's view kilometres.
+    return scene_.fog.enabled() ? scene_.fog.apply(L, cameraRay.origin, cameraRay.direction, cameraDistance) : L;
 }
 
 std::optional<SurfaceInteraction> PathTracer::findSurface(Ray ray, bool fromCamera, float footprintSpread,

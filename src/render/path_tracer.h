@@ -43,6 +43,8 @@ class PathTracer {
     // the density the last bounce chose it with; 0 after a delta lobe or for camera rays,
     // which no light sample could have found.
     Vec3f escapedLight(const Vec3f &direction, float bsdfPdf) const;
+    // Russian roulette: whether the path goes on; if so, its throughput makes up for the others.
+    bool survives(Vec3f &beta, float u) const;
     FirstHit describeFirstHit(const SurfaceInteraction &si, const Bsdf &bsdf) const;
 
     const RenderScene &scene_;

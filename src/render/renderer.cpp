@@ -16,6 +16,7 @@
 #include "core/progress.h"
 #include "film/adaptive_sampling.h"
 #include "render/filter.h"
+#include "render/sampling.h"
 
 namespace veduta {
 
@@ -54,6 +55,7 @@ class PixelSampling {
         seed_(scene.settings.seed),
         sampleOffset_(sampleOffset),
         cameraRays_(scene.camera),
+        depthOfField_(scene.camera.projection == Projection::Perspective && scene.camera.hasDepthOfField()),
         tracer_(scene, bvh),
         filter_(scene.settings.filter) {}
 
@@ -84,11 +86,14 @@ class PixelSampling {
   private:
     Ray cameraRay(int x, int y, PixelSampler &sampler) const {
         Vec2f offset = filter_.sample(sampler.next2D());
-        return cameraRays_.generate(float(x) + 0.5f + offset.x, float(y) + 0.5f + offset.y);
+        // A pinhole draws no lens pair, so its samples keep their dimensions.
+        Vec2f lens = depthOfField_ ? sampleConcentricDisk(sampler.next2D()) : Vec2f{};
+        return cameraRays_.generate(float(x) + 0.5f + offset.x, float(y) + 0.5f + offset.y, lens);
     }
 
     uint32_t seed_, sampleOffset_;
     CameraRays cameraRays_;
+    bool depthOfField_;
     PathTracer tracer_;
     FilterSampler filter_;
 };

@@ -10,6 +10,7 @@
 
 #include "scene/camera.h"
 #include "scene/environment.h"
+#include "scene/fog.h"
 #include "scene/material.h"
 #include "scene/mesh.h"
 #include "scene/render_settings.h"
@@ -69,6 +70,7 @@ struct RenderScene {
     Camera camera;
     Sun sun;
     Environment environment;
+    Fog fog;
     RenderSettings settings;
     std::shared_ptr<const Textures> textures;  // null when no material has maps
     std::vector<BuildingRecord> buildings;     // one per building a generator made
@@ -103,6 +105,7 @@ class RenderSceneBuilder {
     void setCamera(const Camera &camera) { scene_.camera = camera; }
     void setSun(const Sun &sun) { scene_.sun = sun; }
     void setEnvironment(const Environment &environment) { scene_.environment = environment; }
+    void setFog(const Fog &fog) { scene_.fog = fog; }
     void setSettings(const RenderSettings &settings) { scene_.settings = settings; }
     void setTextures(std::shared_ptr<const Textures> textures) { scene_.textures = std::move(textures); }
 

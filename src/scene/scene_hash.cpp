@@ -73,7 +73,8 @@ void hashMaterial(Hasher &h, const RenderScene &scene, const Material &m) {
 // What decides each sample's value. How many samples a pixel takes (the count, adaptive
 // sampling) is left out: renders of different sample ranges of one scene must match.
 void hashSettings(Hasher &h, const RenderSettings &s) {
-    h.numbers(s.maxDepth, s.seed, s.rouletteDepth, int(s.filter.kind), s.filter.width, int(s.lightSampling));
+    h.numbers(s.maxDepth, s.seed, s.roulette.startDepth, s.roulette.threshold, int(s.filter.kind), s.filter.width,
+              int(s.lightSampling));
 }
 
 }  // namespace
@@ -96,10 +97,13 @@ uint64_t sceneHash(const RenderScene &scene) {
     for (const Material &m : scene.materials) hashMaterial(h, scene, m);
     const Camera &c = scene.camera;
     for (const Vec3f &v : {c.position, c.lookAt, c.up}) h.vec(v);
-    h.numbers(c.verticalFovDegrees, c.width, c.height);
+    h.numbers(c.verticalFovDegrees, c.width, c.height, int(c.projection), c.orthoScale, c.shift.x, c.shift.y, c.fNumber,
+              c.focusDistance, c.sensorWidth);
     h.vec(scene.sun.direction);
     h.vec(scene.sun.irradiance);
     h.numbers(scene.sun.angularDiameterDegrees);
+    h.numbers(scene.fog.density, scene.fog.baseHeight, scene.fog.scaleHeight);
+    h.vec(scene.fog.inscatter);
     const Environment &e = scene.environment;
     h.vec(e.radiance);
     h.numbers(e.rotationDegrees, e.intensity, e.cubemap ? e.cubemap->size() : 0);

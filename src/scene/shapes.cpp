@@ -1,5 +1,7 @@
 #include "scene/shapes.h"
 
+#include "scene/ground.h"
+
 #include <cmath>
 
 namespace veduta {
@@ -153,6 +155,7 @@ Mesh makeShape(const ShapeSpec &spec) {
     switch (spec.kind) {
     case ShapeKind::Box: return makeBox(spec.size);
     case ShapeKind::Plane: return makePlane(spec.size);
+    case ShapeKind::Ground: return makeGround(spec.height);
     case ShapeKind::Sphere: return makeSphere(spec.radius, spec.segments, spec.rings);
     case ShapeKind::Cylinder: return makeFrustum(spec.radius, spec.radius, spec.height, spec.segments, spec.smooth);
     case ShapeKind::Cone: return makeFrustum(spec.radius, 0, spec.height, spec.segments, spec.smooth);

@@ -165,6 +165,44 @@ TEST(Preview, DepthIsPerspectiveCorrect) {
     EXPECT_GT(checked, 1000);
 }
 
+// The preview draws the path tracer's frame for shifted and orthographic cameras too: at each
+// pixel centre its depth is the view-axis distance of the camera ray's hit on a tilted plane,
+// and a box shows where the rays meet it.
+TEST(Preview, ShiftedAndOrthographicFramesMatchTheCameraRays) {
+    for (const char *camera : {R"(fov="60" shift="0.1 0.25")", R"(projection="orthographic" ortho_scale="30")",
+                               R"(projection="orthographic" ortho_scale="30" shift="-0.2 0.1")"}) {
+        SCOPED_TRACE(camera);
+        RenderScene scene = test::sceneFromXml(std::string(R"(<scene>
+  <camera position="2 -10 3" look_at="0 10 0" resolution="64 48" )") +
+                                               camera + R"(/>
+  <plane size="100 100" id="1"/>
+  <box size="3 3 4" translate="1 4 0" id="2"/>
+</scene>)");
+        PreviewImage depth = previewWith(scene, 2, 16, PreviewMode::Depth);
+        PreviewImage ids = previewWith(scene, 2, 16, PreviewMode::Id);
+        Bvh bvh(scene);
+        CameraRays rays(scene.camera);
+        Vec3f forward = normalize(scene.camera.lookAt - scene.camera.position);
+        int checked = 0, agreeing = 0, pixels = 0;
+        for (int y = 0; y < 48; ++y) {
+            for (int x = 0; x < 64; ++x) {
+                Ray r = rays.generate(float(x) + 0.5f, float(y) + 0.5f);
+                std::optional<Hit> hit = bvh.intersect(r, true);
+                uint32_t expectedId = hit ? scene.meshes[hit->index].objectId : 0;
+                size_t p = size_t(y) * 64 + size_t(x);
+                ++pixels;
+                agreeing += ids.objectId[p] == expectedId;
+                if (!hit || expectedId != 1) continue;
+                float expected = dot(r.origin + r.direction * hit->t - scene.camera.position, forward);
+                ASSERT_NEAR(depth.depth[p], expected, 1e-3f * expected) << x << "," << y;
+                ++checked;
+            }
+        }
+        EXPECT_GT(checked, 500);
+        EXPECT_GT(agreeing, pixels * 99 / 100);  // edges may fall either way
+    }
+}
+
 // Geometry crossing the near plane is clipped, not dropped: from inside a box every pixel
 // still shows the box.
 TEST(Preview, TrianglesCrossingTheNearPlaneAreClippedNotDropped) {

@@ -138,22 +138,148 @@ TEST(Render, WhiteFurnace) {
     for (size_t i = 0; i < film.pixels().size(); ++i) ASSERT_NEAR(film.pixels()[i], 1.0f, 0.01f) << "value " << i;
 }
 
-// The same with a concave object whose paths bounce many times, so that Russian roulette
-// decides: still radiance 1 in expectation. Per-sample values are 0 or 1/0.95^k, so pixels
-// carry Monte Carlo noise (σ ≈ 0.01 at 1024 spp); the image mean is far tighter.
+// The same with a concave object whose paths bounce many times, and a roulette made to decide:
+// white surfaces keep the throughput at 1, which the default rule never thins out, so here
+// every path goes on past its third bounce with probability 0.8 only, and then carries 1.25.
+// Still radiance 1 in expectation. Per-sample values are 0 or 1.25, σ = 0.5, so pixels carry
+// σ ≈ 0.008 at 4096 spp; the image mean (256 pixels) is far tighter.
 TEST(Render, WhiteFurnaceWithRussianRoulette) {
-    RgbaImage film = renderFurnace(R"(<camera position="3 -5 4" look_at="0 0 0.5" fov="50" resolution="16 16"/>)",
-                                   R"(<render spp="1024" max_depth="1024"/>)", R"(
+    RenderScene scene = test::sceneFromXml(R"(<scene>
+  <camera position="3 -5 4" look_at="0 0 0.5" fov="50" resolution="16 16"/>
+  <sun irradiance="0"/>
+  <environment radiance="1"/>
+  <material name="white" diffuse="1"/>
+  <render spp="4096" max_depth="1024"/>
   <plane size="6 6" material="white"/>
   <box size="1 1 1" material="white"/>
-  <box size="0.4 3 2" translate="-0.8 0 0" material="white"/>)");
+  <box size="0.4 3 2" translate="-0.8 0 0" material="white"/>
+</scene>)");
+    scene.settings.roulette = {3, 1.25f};
+    RgbaImage film = renderWith(scene, 2);
     double sum = 0;
     for (size_t i = 0; i < film.pixels().size(); ++i) {
         if (i % 4 == 3) continue;
         ASSERT_NEAR(film.pixels()[i], 1.0f, 0.05f) << "value " << i;
         sum += film.pixels()[i];
     }
-    EXPECT_NEAR(sum / (film.pixels().size() * 3 / 4), 1.0, 0.005);
+    EXPECT_NEAR(sum / double(film.pixels().size() * 3 / 4), 1.0, 0.005);
+}
+
+// The default rule where it decides: grey surfaces (albedo 0.5) in a concave corner drop the
+// throughput below its threshold after a few bounces. The image mean with roulette matches
+// the one without (both 2048 spp, other seeds) to 0.5 %.
+TEST(Render, RussianRouletteKeepsTheMeanOfAGreyScene) {
+    auto grey = [](Roulette roulette, uint32_t seed) {
+        RenderScene scene = test::sceneFromXml(R"(<scene>
+  <camera position="3 -5 4" look_at="0 0 0.5" fov="50" resolution="16 16"/>
+  <sun azimuth="200" elevation="40" irradiance="3"/>
+  <environment radiance="0.4"/>
+  <material name="grey" diffuse="0.5"/>
+  <render spp="2048" max_depth="64"/>
+  <plane size="6 6" material="grey"/>
+  <box size="1 1 1" material="grey"/>
+  <box size="0.4 3 2" translate="-0.8 0 0" material="grey"/>
+  <box size="3 0.4 2" translate="0 0.9 0" material="grey"/>
+</scene>)");
+        scene.settings.roulette = roulette;
+        scene.settings.seed = seed;
+        RgbaImage film = renderWith(scene, 2);
+        double sum = 0;
+        for (size_t i = 0; i < film.pixels().size(); ++i) sum += i % 4 == 3 ? 0 : film.pixels()[i];
+        return sum / double(film.pixels().size() * 3 / 4);
+    };
+    double with = grey(Roulette{}, 1), without = grey(Roulette{1u << 30, 1}, 2);
+    std::printf("grey scene mean: %.5f with roulette, %.5f without\n", with, without);
+    EXPECT_NEAR(with / without, 1.0, 0.005);
+}
+
+// A black sphere far behind the plane in focus, before a white sky, images as a disc of
+// the thin-lens diameter A·|d − s| / (d · s · p) pixels (A the aperture, s and d the distances
+// of focus and sphere, p a pixel's width one metre ahead). Its darkening's variance along x is
+// that of the disc, (D/2)²/4, plus the sphere's own image's and the box filter's (1/12).
+TEST(Render, DefocusedPointImagesAsTheThinLensDisc) {
+    RenderScene scene = test::sceneFromXml(R"(<scene>
+  <camera position="0 0 0" look_at="0 1 0" fov="40" resolution="96 96" f_number="1" focus_distance="0.25"/>
+  <sun irradiance="0"/>
+  <environment radiance="1"/>
+  <render spp="1024" max_depth="1" filter="box" filter_width="1"/>
+  <material name="black" diffuse="0"/>
+  <sphere radius="0.5" segments="256" rings="128" translate="0 20 0" material="black"/>
+</scene>)");
+    RgbaImage film = renderWith(scene, 2);
+    const Camera &c = scene.camera;
+    const float pixel = 2 * std::tan(radians(20.0f)) / 96, s = 0.25f, d = 20;
+    const double expected = 2 * c.apertureRadius() * (d - s) / (d * s * pixel);
+    double sum = 0, sumX = 0, sumXX = 0;
+    for (int y = 0; y < 96; ++y) {
+        for (int x = 0; x < 96; ++x) {
+            double w = 1 - film.rgba()[(size_t(y) * 96 + size_t(x)) * 4];
+            double px = x + 0.5;
+            sum += w, sumX += w * px, sumXX += w * px * px;
+        }
+    }
+    const double sphereRadius = 0.5 / std::sqrt(d * d - 0.25) / pixel;  // its silhouette's
+    double variance = sumXX / sum - (sumX / sum) * (sumX / sum);
+    double diameter = 4 * std::sqrt(variance - sphereRadius * sphereRadius / 4 - 1.0 / 12);
+    std::printf("defocus disc: %.2f px, thin lens %.2f px; darkening %.3f px², sphere %.3f px²\n", diameter, expected,
+                sum, kPi * sphereRadius * sphereRadius);
+    ASSERT_GT(expected, 20);  // the disc is large against the sphere and the filter
+    EXPECT_NEAR(diameter, expected, 0.02 * expected);
+    // The sphere's darkening is spread, not lost: its image keeps the sphere's area.
+    EXPECT_NEAR(sum, kPi * sphereRadius * sphereRadius, 0.03 * kPi * sphereRadius * sphereRadius);
+}
+
+// Aerial perspective is energy-neutral in a furnace: white surfaces under a uniform sky of 1,
+// seen through thick fog whose glow is taken from that sky, still have radiance 1, as does the
+// sky itself; with a black sky and no sun the fog adds nothing.
+TEST(Render, FogInAWhiteFurnaceKeepsRadianceOne) {
+    const char *scene = R"(<scene>
+  <camera position="0 -30 3" look_at="0 0 2" fov="60" resolution="32 24"/>
+  <sun irradiance="0"/>
+  <environment radiance="%s"/>
+  <fog density="0.05" height="0" scale_height="20"/>
+  <material name="white" diffuse="1"/>
+  <render spp="64" max_depth="64"/>
+  <ground material="white"/>
+  <box size="4 4 6" material="white"/>
+  <sphere radius="2" translate="6 5 2" material="white"/>
+</scene>)";
+    char xml[1024];
+    std::snprintf(xml, sizeof xml, scene, "1");
+    RenderScene furnace = test::sceneFromXml(xml);
+    EXPECT_NEAR(furnace.fog.inscatter.x, 1.0f, 1e-3f);
+    RgbaImage film = renderWith(furnace, 2);
+    for (size_t i = 0; i < film.pixels().size(); ++i) ASSERT_NEAR(film.pixels()[i], 1.0f, 0.01f) << "value " << i;
+    std::snprintf(xml, sizeof xml, scene, "0");
+    RgbaImage dark = renderXml(xml);
+    for (size_t i = 0; i < dark.pixels().size(); ++i) {
+        if (i % 4 != 3) {
+            ASSERT_EQ(dark.pixels()[i], 0.0f) << "value " << i;
+        }
+    }
+}
+
+// The endless ground leaves no sky below the horizon, however far the scene's own ground ends:
+// a black ground before a white sky, seen level from 2 m, is black in every row below the
+// middle; without it, the lower half is sky.
+TEST(Render, GroundReachesTheHorizon) {
+    auto lowerHalfMax = [](const char *ground) {
+        RgbaImage film = renderXml(std::string(R"(<scene>
+  <camera position="0 0 2" look_at="0 100 2" fov="40" resolution="64 64"/>
+  <sun irradiance="0"/>
+  <environment radiance="1"/>
+  <material name="black" diffuse="0"/>
+  <render spp="4" max_depth="2"/>
+  <plane size="100 100" material="black"/>
+  )") + ground + "\n</scene>");
+        float brightest = 0;
+        for (int y = 35; y < 64; ++y) {  // below the filter's reach of the horizon row
+            for (int x = 0; x < 64; ++x) brightest = std::max(brightest, film.rgba()[(size_t(y) * 64 + size_t(x)) * 4]);
+        }
+        return brightest;
+    };
+    EXPECT_EQ(lowerHalfMax(R"(<ground height="-0.01" material="black"/>)"), 0.0f);
+    EXPECT_GT(lowerHalfMax(""), 0.5f);
 }
 
 // A Lambertian plane of albedo ρ lit by a sun of irradiance E at incidence θ, with a black

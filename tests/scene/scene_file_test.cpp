@@ -232,3 +232,76 @@ TEST(SceneFile, RootMustBeScene) {
 
 }  // namespace
 }  // namespace veduta
+
+namespace veduta {
+namespace {
+
+TEST(SceneFile, ReadsTheCamerasFramingAndLens) {
+    SceneDescription d = parse(R"(<scene version="1">
+  <camera position="0 -20 1.6" look_at="0 0 1.6" projection="perspective" fov="40" shift="0.05 0.2"
+          f_number="5.6" focus_distance="18" sensor_width="24"/>
+</scene>)");
+    EXPECT_EQ(d.camera.projection, Projection::Perspective);
+    EXPECT_FLOAT_EQ(d.camera.shift.x, 0.05f);
+    EXPECT_FLOAT_EQ(d.camera.shift.y, 0.2f);
+    EXPECT_FLOAT_EQ(d.camera.fNumber, 5.6f);
+    EXPECT_FLOAT_EQ(d.camera.focusDistance, 18);
+    EXPECT_FLOAT_EQ(d.camera.sensorWidth, 24);
+    SceneDescription o = parse(R"(<scene><camera projection="orthographic" ortho_scale="120"/></scene>)");
+    EXPECT_EQ(o.camera.projection, Projection::Orthographic);
+    EXPECT_FLOAT_EQ(o.camera.orthoScale, 120);
+    EXPECT_EQ(errorOf("<scene>\n<camera projection=\"fisheye\"/>\n</scene>"),
+              "s.xml:2:21: projection 'fisheye' is neither 'perspective' nor 'orthographic'");
+    EXPECT_EQ(errorOf("<scene>\n<camera projection=\"orthographic\" f_number=\"2\"/>\n</scene>"),
+              "s.xml:2:1: depth of field (f_number) needs a perspective camera");
+    EXPECT_EQ(errorOf("<scene>\n<camera shift=\"0.1\"/>\n</scene>"),
+              "s.xml:2:16: shift takes two numbers, horizontal and vertical, -10 to 10");
+}
+
+// A camera in map coordinates lands where the same map point of a mesh would: easting and
+// northing less the scene origin, in the scene's CRS; from another CRS through the projection.
+TEST(SceneFile, PlacesACameraGivenInMapCoordinates) {
+    RenderScene scene = buildRenderScene(parse(R"(<scene version="1">
+  <georeference crs="EPSG:25833" origin="390000 5820000"/>
+  <camera crs="EPSG:25833" position="390012.5 5819950.25 42" look_at="390100 5820100 40"/>
+</scene>)"));
+    EXPECT_NEAR(scene.camera.position.x, 12.5f, 1e-3f);
+    EXPECT_NEAR(scene.camera.position.y, -49.75f, 1e-3f);
+    EXPECT_NEAR(scene.camera.position.z, 42, 1e-5f);
+    EXPECT_NEAR(scene.camera.lookAt.x, 100, 1e-3f);
+    // Another CRS (UTM 32N, far to the west of its zone here) is converted, not copied.
+    RenderScene other = buildRenderScene(parse(R"(<scene version="1">
+  <georeference crs="EPSG:25833" origin="390000 5820000"/>
+  <camera crs="EPSG:25832" position="799000 5825000 42" look_at="799100 5825100 40"/>
+</scene>)"));
+    EXPECT_GT(std::abs(other.camera.position.x - 409000), 100);
+    EXPECT_NEAR(other.camera.position.z, 42, 1e-5f);
+    EXPECT_EQ(errorOf("<scene>\n<camera crs=\"EPSG:25832\" position=\"1 2 3\" look_at=\"4 5 6\"/>\n</scene>"),
+              "s.xml:2:14: a camera in map coordinates (crs) needs the scene's <georeference crs=\"EPSG:…\" "
+              "origin=\"E N\"> to be placed");
+    EXPECT_EQ(errorOf("<scene>\n<camera crs=\"EPSG:25832\" position=\"1 2\" look_at=\"4 5 6\"/>\n</scene>"),
+              "s.xml:2:36: position takes three numbers in map coordinates: easting, northing, height");
+}
+
+TEST(SceneFile, ReadsFogAndGround) {
+    SceneDescription d = parse(R"(<scene version="1">
+  <fog visibility="20000" height="110" scale_height="900"/>
+  <ground height="-0.5"/>
+</scene>)");
+    EXPECT_NEAR(d.fog.density, 3.912f / 20000, 1e-9f);
+    EXPECT_FLOAT_EQ(d.fog.baseHeight, 110);
+    EXPECT_FLOAT_EQ(d.fog.scaleHeight, 900);
+    ASSERT_EQ(d.geometry.size(), 1u);
+    ASSERT_TRUE(d.geometry[0].shape);
+    EXPECT_EQ(d.geometry[0].shape->kind, ShapeKind::Ground);
+    EXPECT_FLOAT_EQ(d.geometry[0].shape->height, -0.5f);
+    EXPECT_EQ(errorOf("<scene>\n<fog density=\"0.001\" visibility=\"100\"/>\n</scene>"),
+              "s.xml:2:1: give the fog one of 'density' and 'visibility'");
+    EXPECT_EQ(errorOf("<scene>\n<ground translate=\"0 0 1\"/>\n</scene>"),
+              "s.xml:2:9: unknown attribute 'translate' on <ground>");
+    EXPECT_EQ(errorOf("<scene>\n<prototype name=\"p\"><ground/></prototype>\n</scene>"),
+              "s.xml:2:21: <ground> stands at the top level of the scene, not in a <prototype>");
+}
+
+}  // namespace
+}  // namespace veduta
