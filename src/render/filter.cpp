@@ -35,6 +35,11 @@ FilterSampler::FilterSampler(const PixelFilter &filter) : radius_(filterRadius(f
         cdf_[size_t(i) + 1] = cdf_[size_t(i)] + blackmanHarris(x, 2 * radius_);
     }
     for (double &c : cdf_) c /= cdf_.back();
+    inverseMass_.resize(kSteps);
+    for (size_t i = 0; i < size_t(kSteps); ++i) {
+        double mass = cdf_[i + 1] - cdf_[i];
+        inverseMass_[i] = mass > 0 ? 1 / mass : 0;
+    }
     guide_.resize(kGuideSize + 1);
     size_t i = 0;
     for (int k = 0; k <= kGuideSize; ++k) {
@@ -54,8 +59,7 @@ float FilterSampler::offset(float u) const {
     size_t end = std::min(size_t(guide_[k + 1]) + 2, cdf_.size() - 1);
     size_t i = guide_[k];
     while (i + 1 < end && cdf_[i + 1] <= double(u)) ++i;
-    double span = cdf_[i + 1] - cdf_[i];
-    double within = span > 0 ? std::clamp((u - cdf_[i]) / span, 0.0, 1.0) : 0.5;
+    double within = inverseMass_[i] > 0 ? std::clamp((u - cdf_[i]) * inverseMass_[i], 0.0, 1.0) : 0.5;
     return float(radius_ * (2 * (double(i) + within) / kSteps - 1));
 }
 

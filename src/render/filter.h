@@ -35,6 +35,7 @@ class FilterSampler {
     // evenly spaced probabilities, as Cycles keeps, spreads its first and last entries
     // uniformly over the tails and samples them far too often.)
     std::vector<double> cdf_;
+    std::vector<double> inverseMass_;  // 1 / each cell's share, 0 for an empty one: no division per sample
     // For probability k/size(), the cell where the search for it starts.
     std::vector<uint16_t> guide_;
 };

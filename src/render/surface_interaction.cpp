@@ -7,9 +7,12 @@ namespace veduta {
 
 SurfaceLookup::SurfaceLookup(const RenderScene &scene) : scene_(scene) {
     instanceNormalTransforms_.reserve(scene.instances.size());
+    instanceMirrors_.reserve(scene.instances.size());
     for (const Instance &instance : scene.instances) {
         instanceNormalTransforms_.push_back(instance.objectToWorld.normalTransform());
+        instanceMirrors_.push_back(instance.objectToWorld.determinant() < 0);
     }
+    for (const Material &m : scene.materials) materialHasMaps_.push_back(m.hasMaps());
 }
 
 SurfaceInteraction SurfaceLookup::at(const Hit &hit, const Vec3f &rayDirection) const {
@@ -26,11 +29,16 @@ SurfaceInteraction SurfaceLookup::at(const Hit &hit, const Vec3f &rayDirection) 
     Vec3f position = interpolate(mesh.positions);
     Vec3f e1 = p1 - p0, e2 = p2 - p0;
     Vec3f ns = mesh.normals.empty() ? cross(e1, e2) : interpolate(mesh.normals);
-    Vec3f tangent = mesh.tangents.empty() ? Vec3f(0.0f) : interpolate(mesh.tangents);
-    float sign = mesh.bitangentSigns.empty() ? 1.0f : mesh.bitangentSigns[idx[0]];
 
     SurfaceInteraction si;
     si.material = mesh.triangleMaterials[hit.primitive];
+    if (hit.instanced && scene_.instances[hit.index].materialOverride != kNoMaterial)
+        si.material = scene_.instances[hit.index].materialOverride;
+    // Most surfaces are plain: no maps, so no texture coordinates or tangent frame to work out.
+    const bool textured = materialHasMaps_[si.material] && mesh.uvs.size() == mesh.positions.size();
+    Vec3f tangent = !textured || mesh.tangents.empty() ? Vec3f(0.0f) : interpolate(mesh.tangents);
+    float sign = !textured || mesh.bitangentSigns.empty() ? 1.0f : mesh.bitangentSigns[idx[0]];
+    const bool mirrored = hit.instanced && instanceMirrors_[hit.index];
     si.distance = hit.t;
     if (!hit.instanced) {
         const BakedMesh &baked = scene_.meshes[hit.index];
@@ -48,21 +56,20 @@ SurfaceInteraction SurfaceLookup::at(const Hit &hit, const Vec3f &rayDirection) 
         e1 = instance.objectToWorld.applyVector(e1);
         e2 = instance.objectToWorld.applyVector(e2);
         ns = normalTransform.applyVector(ns);
-        tangent = instance.objectToWorld.applyVector(tangent);
+        if (textured) tangent = instance.objectToWorld.applyVector(tangent);
         // A mirroring placement turns the (t, b, n) frame's handedness around.
-        if (instance.objectToWorld.determinant() < 0) sign = -sign;
-        if (instance.materialOverride != kNoMaterial) si.material = instance.materialOverride;
+        if (mirrored) sign = -sign;
     }
     Vec3f ng = cross(e1, e2);
     // A mirroring placement turns cross(e1, e2) inwards; back to the side the mesh faces.
-    if (hit.instanced && scene_.instances[hit.index].objectToWorld.determinant() < 0) ng = -ng;
+    if (mirrored) ng = -ng;
     si.position = position;
     si.backFacing = dot(ng, rayDirection) > 0;
     si.geometricNormal = faceForward(normalize(ng), -rayDirection);
     float nsLength = length(ns);
     si.shadingNormal = nsLength > 0 ? faceForward(ns / nsLength, si.geometricNormal) : si.geometricNormal;
 
-    if (mesh.uvs.size() == mesh.positions.size()) {
+    if (textured) {
         const Vec2f &t0 = mesh.uvs[idx[0]], &t1 = mesh.uvs[idx[1]], &t2 = mesh.uvs[idx[2]];
         si.uv = {t0.x * w + t1.x * hit.u + t2.x * hit.v, t0.y * w + t1.y * hit.u + t2.y * hit.v};
         float du1 = t1.x - t0.x, dv1 = t1.y - t0.y, du2 = t2.x - t0.x, dv2 = t2.y - t0.y;

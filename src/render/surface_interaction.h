@@ -15,7 +15,7 @@ struct SurfaceInteraction {
     MaterialId material = 0;
     float distance = 0;  // along the ray that found it
 
-    // For textures; all zero when the mesh has no texture coordinates.
+    // For textures; all zero when the mesh has no texture coordinates or the material no maps.
     Vec2f uv;
     float uvPerMetre = 0;  // how fast (u, v) changes over the surface, for texture footprints
     // For normal maps: the tangent along +u (unit, world space) and the sign that makes the
@@ -38,6 +38,8 @@ class SurfaceLookup {
   private:
     const RenderScene &scene_;
     std::vector<Transform> instanceNormalTransforms_;
+    std::vector<char> instanceMirrors_;  // the placement turns windings around
+    std::vector<char> materialHasMaps_;  // else texture coordinates and tangents are not worked out
 };
 
 // A ray origin just off the surface on the side `normal` points to, so that the new ray does

@@ -39,6 +39,10 @@ struct Material {
     // v, metres on the built-in shapes.
     Vec2f textureSize{1.0f, 1.0f};
 
+    bool hasMaps() const {
+        return diffuseMap != kNoTexture || specularMap != kNoTexture || normalMap != kNoTexture ||
+            reflectionMap != kNoTexture || opacityMap != kNoTexture;
+    }
     // Whether light may pass the surface: shadow rays weigh such surfaces rather than stop.
     bool passesLight() const { return glass || opacityMap != kNoTexture; }
 
