@@ -138,55 +138,57 @@ TEST(Render, WhiteFurnace) {
     for (size_t i = 0; i < film.pixels().size(); ++i) ASSERT_NEAR(film.pixels()[i], 1.0f, 0.01f) << "value " << i;
 }
 
-// The same with a concave object whose paths bounce many times, and a roulette made to decide:
-// white surfaces keep the throughput at 1, which the default rule never thins out, so here
-// every path goes on past its third bounce with probability 0.8 only, and then carries 1.25.
-// Still radiance 1 in expectation. Per-sample values are 0 or 1.25, σ = 0.5, so pixels carry
-// σ ≈ 0.008 at 4096 spp; the image mean (256 pixels) is far tighter.
-TEST(Render, WhiteFurnaceWithRussianRoulette) {
-    RenderScene scene = test::sceneFromXml(R"(<scene>
+// A corner of boxes on a plane, in which paths bounce many times, of one material "m".
+RenderScene cornerScene(const std::string &lights, const std::string &albedo, const std::string &render) {
+    return test::sceneFromXml(R"(<scene>
   <camera position="3 -5 4" look_at="0 0 0.5" fov="50" resolution="16 16"/>
-  <sun irradiance="0"/>
-  <environment radiance="1"/>
-  <material name="white" diffuse="1"/>
-  <render spp="4096" max_depth="1024"/>
-  <plane size="6 6" material="white"/>
-  <box size="1 1 1" material="white"/>
-  <box size="0.4 3 2" translate="-0.8 0 0" material="white"/>
+  )" + lights + R"(
+  <material name="m" diffuse=")" +
+                              albedo +
+                              R"("/>
+  )" + render + R"(
+  <plane size="6 6" material="m"/>
+  <box size="1 1 1" material="m"/>
+  <box size="0.4 3 2" translate="-0.8 0 0" material="m"/>
+  <box size="3 0.4 2" translate="0 0.9 0" material="m"/>
 </scene>)");
-    scene.settings.roulette = {3, 1.25f};
-    RgbaImage film = renderWith(scene, 2);
-    double sum = 0;
-    for (size_t i = 0; i < film.pixels().size(); ++i) {
-        if (i % 4 == 3) continue;
-        ASSERT_NEAR(film.pixels()[i], 1.0f, 0.05f) << "value " << i;
-        sum += film.pixels()[i];
-    }
-    EXPECT_NEAR(sum / double(film.pixels().size() * 3 / 4), 1.0, 0.005);
 }
 
-// The default rule where it decides: grey surfaces (albedo 0.5) in a concave corner drop the
+double meanRgb(const RgbaImage &film) {
+    double sum = 0;
+    for (size_t i = 0; i < film.pixels().size(); ++i) sum += i % 4 == 3 ? 0 : film.pixels()[i];
+    return sum / double(film.pixels().size() * 3 / 4);
+}
+
+// The same in the corner, with a roulette made to decide: white surfaces keep the throughput
+// at 1, which the default rule never thins out, so here every path goes on past its third
+// bounce with probability 0.8 only, and then carries 1.25. Still radiance 1 in expectation.
+// Per-sample values are 0 or 1.25, σ = 0.5, so pixels carry σ ≈ 0.008 at 4096 spp; the image
+// mean (256 pixels) is far tighter.
+TEST(Render, WhiteFurnaceWithRussianRoulette) {
+    RenderScene scene = cornerScene(R"(<sun irradiance="0"/><environment radiance="1"/>)", "1",
+                                    R"(<render spp="4096" max_depth="1024"/>)");
+    scene.settings.roulette = {3, 1.25f};
+    RgbaImage film = renderWith(scene, 2);
+    for (size_t i = 0; i < film.pixels().size(); ++i) {
+        if (i % 4 != 3) {
+            ASSERT_NEAR(film.pixels()[i], 1.0f, 0.05f) << "value " << i;
+        }
+    }
+    EXPECT_NEAR(meanRgb(film), 1.0, 0.005);
+}
+
+// The default rule where it decides: grey surfaces (albedo 0.5) in the corner drop the
 // throughput below its threshold after a few bounces. The image mean with roulette matches
 // the one without (both 2048 spp, other seeds) to 0.5 %.
 TEST(Render, RussianRouletteKeepsTheMeanOfAGreyScene) {
     auto grey = [](Roulette roulette, uint32_t seed) {
-        RenderScene scene = test::sceneFromXml(R"(<scene>
-  <camera position="3 -5 4" look_at="0 0 0.5" fov="50" resolution="16 16"/>
-  <sun azimuth="200" elevation="40" irradiance="3"/>
-  <environment radiance="0.4"/>
-  <material name="grey" diffuse="0.5"/>
-  <render spp="2048" max_depth="64"/>
-  <plane size="6 6" material="grey"/>
-  <box size="1 1 1" material="grey"/>
-  <box size="0.4 3 2" translate="-0.8 0 0" material="grey"/>
-  <box size="3 0.4 2" translate="0 0.9 0" material="grey"/>
-</scene>)");
+        RenderScene scene =
+            cornerScene(R"(<sun azimuth="200" elevation="40" irradiance="3"/><environment radiance="0.4"/>)", "0.5",
+                        R"(<render spp="2048" max_depth="64"/>)");
         scene.settings.roulette = roulette;
         scene.settings.seed = seed;
-        RgbaImage film = renderWith(scene, 2);
-        double sum = 0;
-        for (size_t i = 0; i < film.pixels().size(); ++i) sum += i % 4 == 3 ? 0 : film.pixels()[i];
-        return sum / double(film.pixels().size() * 3 / 4);
+        return meanRgb(renderWith(scene, 2));
     };
     double with = grey(Roulette{}, 1), without = grey(Roulette{1u << 30, 1}, 2);
     std::printf("grey scene mean: %.5f with roulette, %.5f without\n", with, without);
