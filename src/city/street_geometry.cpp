@@ -32,6 +32,13 @@ using ExactCdt = CGAL::Constrained_Delaunay_triangulation_2<
         CGAL::Triangulation_vertex_base_2<Kernel>,
         CGAL::Constrained_triangulation_face_base_2<Kernel, CGAL::Triangulation_face_base_with_info_2<bool, Kernel>>>>;
 
+// What of `a` lies outside `b`, where `b` lies inside `a`: their symmetric difference. CGAL 5.5's
+// difference leaves, on some street networks, an arrangement with a face of two outer
+// boundaries (its own assertion catches it in a checked build:
+// fuzz/regressions/osm/difference_face_of_two_outer_boundaries.osm), where the symmetric
+// difference of the same sets does not.
+void cutOut(PolygonSet &a, const PolygonSet &b) { a.symmetric_difference(b); }
+
 Polygon ribbon(Vec2f a, Vec2f b, float halfWidth) {
     float dx = b.x - a.x, dy = b.y - a.y, length = std::hypot(dx, dy);
     float nx = -dy / length * halfWidth, ny = dx / length * halfWidth;
@@ -113,8 +120,10 @@ std::vector<Polygon> streetPieces(const StreetNetwork &network, float extra) {
         if (a.x == b.x && a.y == b.y) continue;
         float half = s.width / 2 + extra;
         pieces.push_back(ribbon(a, b, half));
-        meet(s.from, s.to, half);
-        meet(s.to, s.from, half);
+        // Widths compare without `extra`, so that the sidewalks' pieces are the carriageway's
+        // widened, bevel for bevel, and contain them (cutOut relies on it).
+        meet(s.from, s.to, s.width / 2);
+        meet(s.to, s.from, s.width / 2);
     }
     for (size_t n = 0; n < network.nodes.size(); ++n) {
         const NodeStreets &node = at[n];
@@ -124,8 +133,8 @@ std::vector<Polygon> streetPieces(const StreetNetwork &network, float extra) {
         bool gentle = node.count == 2 && node.sameWidth &&
             in.x * out.x + in.y * out.y >= bevelCos * std::hypot(in.x, in.y) * std::hypot(out.x, out.y);
         if (!gentle) {
-            pieces.push_back(joint(centre, node.widestHalf));
-        } else if (std::optional<Polygon> b = bevel(from, centre, to, node.widestHalf)) {
+            pieces.push_back(joint(centre, node.widestHalf + extra));
+        } else if (std::optional<Polygon> b = bevel(from, centre, to, node.widestHalf + extra)) {
             pieces.push_back(std::move(*b));
         }
     }
@@ -312,10 +321,10 @@ Mesh streetGeometry(const StreetNetwork &network, const StreetStyle &style) {
     Mesh mesh;
     PolygonSet carriageway = streetArea(network, 0);
     PolygonSet sidewalks = streetArea(network, style.sidewalkWidth);
-    sidewalks.difference(carriageway);
+    cutOut(sidewalks, carriageway);
     float road = network.height + style.lift, pavement = road + style.kerbHeight;
     PolygonSet junctions = junctionArea(network, carriageway), between = carriageway;
-    between.difference(junctions);
+    cutOut(between, junctions);
     addRegion(mesh, between, road, StreetCarriageway);
     addRegion(mesh, junctions, road, StreetJunction);
     addRegion(mesh, sidewalks, pavement, StreetSidewalk);

@@ -27,6 +27,16 @@ float area(const Mesh &m, StreetSurface surface) {
 // The carriageway with its junctions.
 float road(const Mesh &m) { return area(m, StreetCarriageway) + area(m, StreetJunction); }
 
+// The area of the streets and their sidewalks, from the carriageways of streets widened by the
+// sidewalks on either side: what the carriageway and sidewalk surfaces must add up to.
+float outerArea(StreetNetwork network) {
+    StreetStyle style;
+    for (auto &s : network.streets) s.width += 2 * style.sidewalkWidth;
+    StreetStyle none;
+    none.sidewalkWidth = 0.001f;
+    return road(streetGeometry(network, none));
+}
+
 TEST(StreetGeometry, OneStreetIsARibbonWithRoundEndsAndSidewalks) {
     StreetNetwork network{{{0, 0}, {100, 0}}, {{0, 1, 8}}, 0};
     Mesh m = streetGeometry(network);
@@ -62,12 +72,7 @@ TEST(StreetGeometry, StreetsMeetInOneSurfaceWithoutOverlaps) {
     EXPECT_LT(carriageway, 4 * 50 * 8 + 4 * kPi * 16);
     EXPECT_GT(carriageway, 4 * 50 * 8 - 4 * 4 * 8 + 2 * kPi * 16 * 0.9f);
     // The sidewalks are the widened union minus the carriageway: no surface is counted twice.
-    StreetStyle style;
-    StreetNetwork wide = network;
-    for (auto &s : wide.streets) s.width += 2 * style.sidewalkWidth;
-    StreetStyle none;
-    none.sidewalkWidth = 0.001f;
-    float outer = road(streetGeometry(wide, none));
+    float outer = outerArea(network);
     EXPECT_NEAR(carriageway + area(m, StreetSidewalk), outer, outer * 1e-3f);
 }
 
@@ -165,6 +170,18 @@ TEST(StreetGeometry, ADegenerateBevelIsLeftOut) {
     CityData city = importOsm(test::sourceFile("fuzz/regressions/osm/degenerate_bevel_triangle.osm"), {});
     Mesh mesh = streetGeometry(streetNetworkOf(city));
     EXPECT_GT(mesh.triangleCount(), 0u);
+}
+
+// Found by fuzz/osm: CGAL's difference of the sidewalks and the carriageway of this town (a
+// street run out 4.5 km east) left a face with two outer boundaries; the sidewalks are the
+// symmetric difference now.
+TEST(StreetGeometry, SidewalksAreWhatTheWidenedStreetsAddToTheCarriageway) {
+    CityData city = importOsm(test::sourceFile("fuzz/regressions/osm/difference_face_of_two_outer_boundaries.osm"), {});
+    StreetNetwork network = streetNetworkOf(city);
+    Mesh mesh = streetGeometry(network);
+    float outer = outerArea(network);
+    EXPECT_NEAR(road(mesh) + area(mesh, StreetSidewalk), outer, outer * 1e-3f);
+    EXPECT_GT(area(mesh, StreetJunction), 0);
 }
 
 }  // namespace
