@@ -16,6 +16,7 @@
 #include "city/generate_buildings.h"
 #include "city/generate_city.h"
 #include "geo/generate_landscape.h"
+#include "geodesy/local_frame.h"
 #include "geodesy/map_projection.h"
 #include "io/georeferenced_mesh.h"
 #include "io/image_library.h"
@@ -201,15 +202,12 @@ class SceneAssembler {
         } catch (const std::out_of_range &e) {
             throw InputError(m.loc, fmt::format("camera: {}", e.what()));
         }
-        constexpr float kFarthest = 1e7f;  // as for points given in the frame (scene_file.cpp)
         for (const Vec3f &p : {camera.position, camera.lookAt}) {
-            if (std::abs(p.x) > kFarthest || std::abs(p.y) > kFarthest)
+            if (std::abs(p.x) > kFrameLimit || std::abs(p.y) > kFrameLimit || std::abs(p.z) > kFrameLimit)
                 throw InputError(m.loc, "the camera lies more than 10,000 km from the scene origin");
         }
-        if (length(camera.lookAt - camera.position) == 0)
-            throw InputError(m.loc, "camera position and look_at are the same point in the render frame");
-        if (length(cross(camera.lookAt - camera.position, camera.up)) == 0)
-            throw InputError(m.loc, "camera up is parallel to the view direction");
+        if (const char *problem = camera.framingProblem())
+            throw InputError(m.loc, fmt::format("{} in the render frame", problem));
         return camera;
     }
 

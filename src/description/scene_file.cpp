@@ -11,6 +11,7 @@
 #include "description/material_file.h"
 #include "description/scene_description.h"
 #include "geodesy/crs.h"
+#include "geodesy/local_frame.h"
 #include "io/xml_reader.h"
 
 namespace veduta {
@@ -87,13 +88,10 @@ class SceneFileReader {
             n == "ground";
     }
 
-    // A point of the render frame: metres from the scene origin, which georeferenced data
-    // puts near the scene (geodesy/map_projection.h). Farther, float steps are metres wide
-    // and Embree's bounds overflow.
+    // A point of the render frame: metres from the scene origin, at most kFrameLimit.
     Vec3f framePoint(const XmlElement &e, const char *attribute, Vec3f fallback) const {
-        constexpr float kFarthest = 1e7f;  // 10,000 km
         Vec3f p = e.vec3(attribute, fallback);
-        if (std::abs(p.x) > kFarthest || std::abs(p.y) > kFarthest || std::abs(p.z) > kFarthest)
+        if (std::abs(p.x) > kFrameLimit || std::abs(p.y) > kFrameLimit || std::abs(p.z) > kFrameLimit)
             e.failAt(attribute,
                      fmt::format("{} {} {} lies more than 10,000 km from the scene origin (attribute '{}')", p.x, p.y,
                                  p.z, attribute));
@@ -139,10 +137,8 @@ class SceneFileReader {
         }
         if (c.hasDepthOfField() && c.projection == Projection::Orthographic)
             e.fail("depth of field (f_number) needs a perspective camera");
-        if (!scene_.mapCamera) {
-            if (length(c.lookAt - c.position) == 0) e.fail("camera position and look_at are the same point");
-            if (length(cross(c.lookAt - c.position, c.up)) == 0) e.fail("camera up is parallel to the view direction");
-        }
+        // A camera in map coordinates is checked once it is placed (assembly/build_scene.cpp).
+        if (!scene_.mapCamera && c.framingProblem()) e.fail(c.framingProblem());
         e.checkLeaf();
     }
 

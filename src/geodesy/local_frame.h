@@ -9,6 +9,11 @@
 
 namespace veduta {
 
+// How far from the scene origin a point of the render frame may lie, in metres (10,000 km):
+// farther, float steps are metres wide and Embree's bounds overflow. Georeferenced data puts
+// the origin near the scene (geodesy/map_projection.h).
+constexpr float kFrameLimit = 1e7f;
+
 struct LocalFrame {
     MapPoint origin;
 

@@ -63,9 +63,7 @@ struct RasterProjection {
 
     explicit RasterProjection(const Camera &c) :
         eye(c.position), orthographic(c.projection == Projection::Orthographic) {
-        Vec3f forward = normalize(c.lookAt - c.position);
-        Vec3f right = normalize(cross(forward, c.up));
-        Vec3f up = cross(right, forward);
+        const auto [forward, right, up] = c.axes();
         cameraFromWorld = {{right.x, right.y, right.z, -dot(right, eye), up.x, up.y, up.z, -dot(up, eye), forward.x,
                             forward.y, forward.z, -dot(forward, eye)}};
         // CameraRays' frame: the same extent, and Blender's shift in lengths of the longer side.

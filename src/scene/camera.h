@@ -13,6 +13,11 @@ struct Ray {
 
 enum class Projection { Perspective, Orthographic };
 
+// The camera's axes: forward towards look_at, right, and up as the image's up.
+struct CameraAxes {
+    Vec3f forward, right, up;
+};
+
 struct Camera {
     Vec3f position{0, -10, 2};
     Vec3f lookAt{0, 0, 2};
@@ -33,6 +38,11 @@ struct Camera {
     int width = 640;
     int height = 360;
 
+    // What keeps position, look_at and up from framing a view (the same point, or up along
+    // the view), or nullptr: checked where a camera is read and where it is placed from map
+    // coordinates.
+    const char *framingProblem() const;
+    CameraAxes axes() const;  // for a camera without a framing problem
     bool hasDepthOfField() const { return fNumber > 0; }
     // The focal length in metres and the aperture's radius in metres, for a perspective camera.
     float focalLength() const;
@@ -65,7 +75,8 @@ class CameraRays {
 
   private:
     Projection projection_;
-    Vec3f origin_, forward_, right_, up_;
+    Vec3f origin_;
+    CameraAxes axes_;
     // Perspective: the frame on the plane one metre ahead; orthographic: on the camera's plane.
     Vec3f topLeft_, pixelRight_, pixelDown_;
     float pixelWidth_;  // of a pixel on that plane, in its units

@@ -281,6 +281,18 @@ TEST(SceneFile, PlacesACameraGivenInMapCoordinates) {
               "origin=\"E N\"> to be placed");
     EXPECT_EQ(errorOf("<scene>\n<camera crs=\"EPSG:25832\" position=\"1 2\" look_at=\"4 5 6\"/>\n</scene>"),
               "s.xml:2:36: position takes three numbers in map coordinates: easting, northing, height");
+    // Checked as a camera given in the frame is, once placed: straight down with up along z.
+    EXPECT_EQ(errorOf("<scene>\n<georeference crs=\"EPSG:25833\" origin=\"390000 5820000\"/>\n"
+                      "<camera crs=\"EPSG:25833\" position=\"390010 5820010 300\" look_at=\"390010 5820010 0\"/>\n"
+                      "</scene>"),
+              "s.xml:3:14: camera up is parallel to the view direction in the render frame");
+}
+
+TEST(SceneFile, CameraMustFrameAView) {
+    EXPECT_EQ(errorOf("<scene>\n<camera position=\"1 2 3\" look_at=\"1 2 3\"/>\n</scene>"),
+              "s.xml:2:1: camera position and look_at are the same point");
+    EXPECT_EQ(errorOf("<scene>\n<camera position=\"0 0 10\" look_at=\"0 0 0\" up=\"0 0 1\"/>\n</scene>"),
+              "s.xml:2:1: camera up is parallel to the view direction");
 }
 
 TEST(SceneFile, ReadsFogAndGround) {
