@@ -39,7 +39,7 @@ PathTracer::PathTracer(const RenderScene &scene, const Bvh &bvh) :
     sun_(scene.sun),
     environment_(scene.environment),
     pixelSpread_(CameraRays(scene.camera).pixelSpread()),
-    cameraForward_(normalize(scene.camera.lookAt - scene.camera.position)) {}
+    cameraForward_(scene.camera.axes().forward) {}
 
 Vec3f PathTracer::radiance(const Ray &cameraRay, PixelSampler &sampler, RayCounts &counts, FirstHit *first) const {
     if (first) *first = FirstHit{};
@@ -51,11 +51,10 @@ Vec3f PathTracer::radiance(const Ray &cameraRay, PixelSampler &sampler, RayCount
     float cameraDistance = 0;  // how far the camera ray went: the aerial perspective's path
     // `depth` counts the vertices that scatter; passing straight through glass is not one.
     for (uint32_t depth = 0, segment = 0; segment < settings.maxDepth + kMaxPassThrough; ++segment) {
-        // Pairs for lights the scene does not sample are not drawn: which ones are is the
-        // same for every path, so each dimension still has one meaning.
-        Vec2f uSun = sun_.enabled() ? sampler.next2D() : Vec2f{};
-        Vec2f uEnvironment = environment_.sampled() ? sampler.next2D() : Vec2f{};
-        Vec2f uLobeRoulette = sampler.next2D(), uDirection = sampler.next2D();
+        // The vertex's pairs, worked out only where they are used (a ray that escapes uses
+        // none). Pairs for lights the scene does not sample are not taken: which ones are is
+        // the same for every path, so each dimension still has one meaning.
+        const VertexPairs pairs = takeVertexPairs(sampler);
 
         std::optional<SurfaceInteraction> si = findSurface(ray, segment == 0, spread, counts);
         if (segment == 0) cameraDistance = si ? si->distance : std::numeric_limits<float>::infinity();
@@ -70,10 +69,11 @@ Vec3f PathTracer::radiance(const Ray &cameraRay, PixelSampler &sampler, RayCount
         // other half of that vertex's multiple importance sampling), through panes if need be.
         if (depth == settings.maxDepth && !bsdf.isThinGlass()) break;
         if (bsdf.hasNonDeltaLobe() && settings.lightSampling != LightSampling::Bsdf) {
-            L += beta * directLight(*si, bsdf, wo, uSun, uEnvironment, counts);
+            L += beta * directLight(*si, bsdf, wo, sampler, pairs, counts);
         }
 
-        std::optional<BsdfSample> s = bsdf.sample(wo, uLobeRoulette.x, uDirection);
+        Vec2f uLobeRoulette = sampler.at(pairs.lobeRoulette);
+        std::optional<BsdfSample> s = bsdf.sample(wo, uLobeRoulette.x, sampler.at(pairs.direction));
         if (!s || isBlack(s->weight)) break;
         beta *= s->weight;
         ray = {offsetTowards(*si, s->wi), s->wi};
@@ -113,11 +113,22 @@ std::optional<SurfaceInteraction> PathTracer::findSurface(Ray ray, bool fromCame
     }
 }
 
-Vec3f PathTracer::directLight(const SurfaceInteraction &si, const Bsdf &bsdf, const Vec3f &wo, Vec2f uSun,
-                              Vec2f uEnvironment, RayCounts &counts) const {
+PathTracer::VertexPairs PathTracer::takeVertexPairs(PixelSampler &sampler) const {
+    VertexPairs pairs;
+    uint32_t next = sampler.take(uint32_t(sun_.enabled()) + uint32_t(environment_.sampled()) + 2);
+    if (sun_.enabled()) pairs.sun = next++;
+    if (environment_.sampled()) pairs.environment = next++;
+    pairs.lobeRoulette = next++;
+    pairs.direction = next;
+    return pairs;
+}
+
+Vec3f PathTracer::directLight(const SurfaceInteraction &si, const Bsdf &bsdf, const Vec3f &wo,
+                              const PixelSampler &sampler, const VertexPairs &pairs, RayCounts &counts) const {
     Vec3f L(0.0f);
-    if (sun_.enabled()) L += lightSampleContribution(si, bsdf, wo, sun_.sample(uSun), counts);
-    if (environment_.sampled()) L += lightSampleContribution(si, bsdf, wo, environment_.sample(uEnvironment), counts);
+    if (sun_.enabled()) L += lightSampleContribution(si, bsdf, wo, sun_.sample(sampler.at(pairs.sun)), counts);
+    if (environment_.sampled())
+        L += lightSampleContribution(si, bsdf, wo, environment_.sample(sampler.at(pairs.environment)), counts);
     return L;
 }
 

@@ -22,8 +22,8 @@ class PathTracer {
 
     // Radiance arriving along the camera ray. Every bounce takes the same sample pairs (sun
     // and environment if the scene samples them, lobe and roulette, direction) whatever
-    // happens, so the result is a pure function of the sampler. `first`, if given, receives
-    // what the camera ray met first, for the film's passes.
+    // happens, and works out those it uses, so the result is a pure function of the sampler. `first`, if given,
+    // receives what the camera ray met first, for the film's passes.
     Vec3f radiance(const Ray &cameraRay, PixelSampler &sampler, RayCounts &counts, FirstHit *first = nullptr) const;
 
     // Only what the camera ray meets first, as radiance() reports it.
@@ -33,8 +33,14 @@ class PathTracer {
     // The first surface along the ray that is there: cut-outs are passed through.
     std::optional<SurfaceInteraction> findSurface(Ray ray, bool fromCamera, float footprintSpread,
                                                   RayCounts &counts) const;
-    Vec3f directLight(const SurfaceInteraction &si, const Bsdf &bsdf, const Vec3f &wo, Vec2f uSun, Vec2f uEnvironment,
-                      RayCounts &counts) const;
+    // The sampler's pairs of one path vertex.
+    struct VertexPairs {
+        uint32_t sun = 0, environment = 0;  // only for lights the scene samples
+        uint32_t lobeRoulette = 0, direction = 0;
+    };
+    VertexPairs takeVertexPairs(PixelSampler &sampler) const;
+    Vec3f directLight(const SurfaceInteraction &si, const Bsdf &bsdf, const Vec3f &wo, const PixelSampler &sampler,
+                      const VertexPairs &pairs, RayCounts &counts) const;
     Vec3f lightSampleContribution(const SurfaceInteraction &si, const Bsdf &bsdf, const Vec3f &wo,
                                   const LightSample &light, RayCounts &counts) const;
     // What reaches the surface from infinity along wi through glass and cut-outs.

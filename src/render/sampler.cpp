@@ -58,9 +58,8 @@ uint32_t sobolSample(uint32_t index, int dimension) {
         kDimensionOne[2][(index >> 16) & 0xffu] ^ kDimensionOne[3][index >> 24];
 }
 
-Vec2f PixelSampler::next2D() {
-    PairSeeds seeds = seeds_ ? seeds_->pair(pair_) : pairSeeds(pixelSeed_, pair_);
-    ++pair_;
+Vec2f PixelSampler::at(uint32_t pair) const {
+    PairSeeds seeds = seeds_ ? seeds_->pair(pair) : pairSeeds(pixelSeed_, pair);
     // owenScramble(sample) is reverseBits of this; Sobol's first dimension is reverseBits of
     // the index, so the index's scramble starts from it as it is.
     uint32_t indexReversed = laineKarras(reversedIndex_, seeds.index);

@@ -88,8 +88,17 @@ class PixelSampler {
     //   index = owenScramble(sample, s.index)
     //   point = (owenScramble(sobolSample(index, 0), s.x), owenScramble(sobolSample(index, 1), s.y))
     // worked out with three bit reversals instead of seven (sampler.cpp).
-    Vec2f next2D();
+    Vec2f next2D() { return at(pair_++); }
     float next1D() { return next2D().x; }
+    // Takes `count` pairs at once for a consumer that may use only some of them (a path vertex
+    // whose ray escapes needs none of its light and bounce pairs): it works out those it uses
+    // with at(first + k), and the pairs after them keep their meaning either way.
+    uint32_t take(uint32_t count) {
+        uint32_t first = pair_;
+        pair_ += count;
+        return first;
+    }
+    Vec2f at(uint32_t pair) const;
 
   private:
     uint32_t pixelSeed_;
