@@ -61,6 +61,8 @@ Bsdf::Bsdf(const BsdfInputs &inputs, const Vec3f &shadingNormal, const Vec3f &ge
     Vec3f rest = Vec3f(1.0f) - mirror_;
     diffuse_ = kd * rest;
     specular_ = ks * rest;
+    plainDiffuse_ = !thinGlass_ && maxComponent(specular_) <= 0 && maxComponent(mirror_) <= 0 &&
+        maxComponent(diffuse_) > 0;
 }
 
 // Both directions above the geometric surface. wo always is; checking it too keeps eval
@@ -108,6 +110,7 @@ float Bsdf::pdf(const Vec3f &wo, const Vec3f &wi) const {
     if (thinGlass_ || !aboveSurface(wo, wi)) return 0;
     Vec3f o = frame_.toLocal(wo);
     if (o.z <= 0) return 0;
+    if (plainDiffuse_) return kInvPi * foldedCosine(wi);
     return pdfLocal(o, frame_.toLocal(wi), wi, lobeProbabilities(o.z));
 }
 
@@ -131,6 +134,7 @@ std::optional<BsdfSample> Bsdf::sample(const Vec3f &wo, float uLobe, Vec2f u) co
     if (thinGlass_) return sampleGlass(wo, uLobe);
     Vec3f o = frame_.toLocal(wo);
     if (o.z <= 0) return std::nullopt;
+    if (plainDiffuse_) return sampleDiffuse(wo, u);
     LobeProbabilities p = lobeProbabilities(o.z);
     if (uLobe >= p.cosine + p.phong) {
         if (p.mirror <= 0) return std::nullopt;
@@ -152,6 +156,16 @@ std::optional<BsdfSample> Bsdf::sample(const Vec3f &wo, float uLobe, Vec2f u) co
     float density = pdfLocal(o, i, wi, p);
     if (density <= 0) return std::nullopt;
     return BsdfSample{wi, evalLocal(o, i, wi) / density, density, false};
+}
+
+// Most surfaces: the folded cosine lobe alone, whose samples carry k_d exactly.
+std::optional<BsdfSample> Bsdf::sampleDiffuse(const Vec3f &wo, Vec2f u) const {
+    Vec3f wi = frame_.toWorld(sampleCosineHemisphere(u));
+    if (dot(wi, geometricNormal_) < 0) wi = mirrorAcross(wi, geometricNormal_);
+    if (!aboveSurface(wo, wi)) return std::nullopt;
+    float density = kInvPi * foldedCosine(wi);
+    if (density <= 0) return std::nullopt;
+    return BsdfSample{wi, diffuse_, density, false};
 }
 
 std::optional<BsdfSample> Bsdf::sampleGlass(const Vec3f &wo, float uLobe) const {

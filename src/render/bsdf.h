@@ -68,6 +68,7 @@ class Bsdf {
     float foldedCosine(const Vec3f &wi) const;
     Vec3f evalLocal(const Vec3f &o, const Vec3f &i, const Vec3f &wi) const;
     float pdfLocal(const Vec3f &o, const Vec3f &i, const Vec3f &wi, const LobeProbabilities &p) const;
+    std::optional<BsdfSample> sampleDiffuse(const Vec3f &wo, Vec2f u) const;
     std::optional<BsdfSample> sampleGlass(const Vec3f &wo, float uLobe) const;
 
     Frame frame_;
@@ -75,6 +76,7 @@ class Bsdf {
     Vec3f diffuse_, specular_, mirror_;
     float exponent_;
     bool thinGlass_;
+    bool plainDiffuse_;  // no gloss, mirror or glass: sampled on a shorter path
     float ior_;
     Vec3f glassTint_;
 };
