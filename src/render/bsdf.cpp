@@ -61,8 +61,8 @@ Bsdf::Bsdf(const BsdfInputs &inputs, const Vec3f &shadingNormal, const Vec3f &ge
     Vec3f rest = Vec3f(1.0f) - mirror_;
     diffuse_ = kd * rest;
     specular_ = ks * rest;
-    plainDiffuse_ = !thinGlass_ && maxComponent(specular_) <= 0 && maxComponent(mirror_) <= 0 &&
-        maxComponent(diffuse_) > 0;
+    plainDiffuse_ =
+        !thinGlass_ && maxComponent(specular_) <= 0 && maxComponent(mirror_) <= 0 && maxComponent(diffuse_) > 0;
 }
 
 // Both directions above the geometric surface. wo always is; checking it too keeps eval
