@@ -17,7 +17,7 @@ if [ $# -lt 1 ] || ! [[ $1 =~ ^[0-9]+$ ]]; then
 fi
 seconds=$1
 shift
-all_targets=(scene material rules city_data osm citygml edbs xyz asc mesh_obj mesh_ply mesh_gltf checkpoint crs)
+all_targets=(scene material rules street_rules city_data osm citygml edbs xyz asc mesh_obj mesh_ply mesh_gltf checkpoint crs)
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=("${all_targets[@]}")
 

@@ -29,6 +29,7 @@ enum class RandomStream : uint32_t {
     TreeRewrite = 1,                     // a tree's L-system productions (under its TreeModel key)
     TreeTurtle = 2,                      // a tree's angle, length and width jitter (under its TreeModel key)
     TreePlacement = 0x54524550u,         // "TREP": a tree's place, kind, variant, size and turn in its object
+    StreetRules = 0x5354524cu,           // "STRL": a street L-system's U[], random(), assignment odds and rule choice
 
     // Identities: not random, but hashed like the draws and kept apart from them.
     CityDataBlock = 0x4344424bu,  // "CDBK": a CityData block, from the ids of its outline's points
@@ -56,6 +57,7 @@ inline constexpr RandomStream kAllRandomStreams[] = {
     RandomStream::TreeRewrite,
     RandomStream::TreeTurtle,
     RandomStream::TreePlacement,
+    RandomStream::StreetRules,
     RandomStream::CityDataBlock,
     RandomStream::CityDataLot,
     RandomStream::OsmWay,
