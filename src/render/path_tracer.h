@@ -22,8 +22,8 @@ class PathTracer {
 
     // Radiance arriving along the camera ray. Every bounce takes the same sample pairs (sun
     // and environment if the scene samples them, lobe and roulette, direction) whatever
-    // happens, and works out those it uses, so the result is a pure function of the sampler. `first`, if given,
-    // receives what the camera ray met first, for the film's passes.
+    // happens and works out those it uses, so the result is a pure function of the sampler.
+    // `first`, if given, receives what the camera ray met first, for the film's passes.
     Vec3f radiance(const Ray &cameraRay, PixelSampler &sampler, RayCounts &counts, FirstHit *first = nullptr) const;
 
     // Only what the camera ray meets first, as radiance() reports it.

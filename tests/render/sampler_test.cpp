@@ -63,6 +63,25 @@ TEST(Sampler, IsAPureFunctionOfSeedPixelSampleAndDimension) {
     }
 }
 
+// A path vertex takes its pairs at once and works out only some, in any order: each is the
+// pair that consuming them one by one gives, and the pairs after them keep their place.
+TEST(Sampler, TakenPairsAreThoseOfConsumingInOrder) {
+    PixelSeeds seeds(5, 12, 34);
+    PixelSampler inOrder(5, 12, 34, 9), taken(seeds, 9);
+    std::vector<Vec2f> expected;
+    for (int k = 0; k < 5; ++k) expected.push_back(inOrder.next2D());
+    uint32_t first = taken.take(4);
+    EXPECT_EQ(first, 0u);
+    for (uint32_t k : {3u, 1u}) {
+        Vec2f u = taken.at(first + k);
+        EXPECT_EQ(u.x, expected[k].x);
+        EXPECT_EQ(u.y, expected[k].y);
+    }
+    Vec2f after = taken.next2D();
+    EXPECT_EQ(after.x, expected[4].x);
+    EXPECT_EQ(after.y, expected[4].y);
+}
+
 // The first 2^k samples of a pixel are a (0, k, 2)-net: one point in each of the 2^k
 // elementary intervals of any shape. Checked for the 4 x 4 and 16 x 1 grids of 16 points.
 TEST(Sampler, PowerOfTwoPrefixesAreStratified) {
