@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 #include <cmath>
-#include <ranges>
 
 namespace veduta {
 
@@ -29,8 +28,8 @@ std::string toDot(const WordGraph &graph) {
     }
     for (const WordNode &node : graph.nodes()) {
         // Last-linked successor first, as Listing 4.5 lists node 1's: 14, 10, 6, 2.
-        for (NodeId next : node.successors | std::views::reverse)
-            dot += fmt::format("{}->{}[label=\"\", color=blue];\n", node.id, next);
+        for (auto next = node.successors.rbegin(); next != node.successors.rend(); ++next)
+            dot += fmt::format("{}->{}[label=\"\", color=blue];\n", node.id, *next);
         for (NodeId before : node.predecessors) dot += fmt::format("{}->{}[label=\"\", color=red];\n", node.id, before);
     }
     return dot + "}\n";
