@@ -138,7 +138,7 @@ class SceneFileReader {
         if (c.hasDepthOfField() && c.projection == Projection::Orthographic)
             e.fail("depth of field (f_number) needs a perspective camera");
         // A camera in map coordinates is checked once it is placed (assembly/build_scene.cpp).
-        if (!scene_.mapCamera && c.framingProblem()) e.fail(c.framingProblem());
+        if (const char *problem = c.framingProblem(); problem && !scene_.mapCamera) e.fail(problem);
         e.checkLeaf();
     }
 
