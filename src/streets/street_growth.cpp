@@ -9,8 +9,9 @@ bool GrowthWindow::contains(const Vec3f &position) const {
     return dot(offset, offset) <= radius * radius;
 }
 
-StreetGrowth::StreetGrowth(WordGraph &graph, std::span<const StreetRule> rules, StreetQuery query, RandomDraws &draws) :
-    graph_(graph), rules_(rules), query_(std::move(query)), draws_(draws) {
+StreetGrowth::StreetGrowth(WordGraph &graph, std::span<const StreetRule> rules, NodeQuery query, RandomDraws &draws,
+                           ExpansionObserver *observer) :
+    graph_(graph), rules_(rules), query_(std::move(query)), draws_(draws), observer_(observer) {
     for (NodeId id = 0; id < graph_.size(); ++id) queueIfPlaceholder(id);
 }
 
@@ -19,6 +20,7 @@ GrowthResult StreetGrowth::grow(const GrowthWindow &window, const GrowthLimits &
     std::vector<std::pair<uint32_t, NodeId>> outside;
     while (!pending_.empty()) {
         auto [depth, id] = pending_.extract(pending_.begin()).value();
+        if (observer_ && observer_->isCutOff(id)) continue;
         if (!window.contains(graph_.node(id).turtle.position)) {
             outside.emplace_back(depth, id);
             continue;
@@ -31,8 +33,14 @@ GrowthResult StreetGrowth::grow(const GrowthWindow &window, const GrowthLimits &
         // Contexts are not looked up on the tree (docs/street-rules.md): the word stands alone.
         // The node's id names it for the draws, so they depend on the seed, the id and the index.
         WordDraws draws(draws_, id);
+        StreetQuery query;
+        // A copy of the id: clang 14 (the fuzz build) cannot capture a structured binding.
+        if (query_)
+            query = [this, asking = id](char kind, std::span<float> inOut) {
+                return query_(graph_.node(asking), kind, inOut);
+            };
         std::optional<std::vector<Word>> successor =
-            expandWord(std::span(&graph_.node(id).word, 1), 0, rules_, draws, query_, warnings_);
+            expandWord(std::span(&graph_.node(id).word, 1), 0, rules_, draws, query, warnings_);
         if (!successor || successor->empty()) continue;
         if (graph_.size() + successor->size() - 1 > limits.maxNodes) {
             pending_.emplace(depth, id);
@@ -42,6 +50,7 @@ GrowthResult StreetGrowth::grow(const GrowthWindow &window, const GrowthLimits &
         NodeId firstNew = NodeId(graph_.size());
         graph_.expand(id, *successor);
         ++result.expansions;
+        if (observer_) observer_->expanded(id, firstNew);
         queueIfPlaceholder(id);
         for (NodeId added = firstNew; added < graph_.size(); ++added) queueIfPlaceholder(added);
     }
@@ -50,6 +59,7 @@ GrowthResult StreetGrowth::grow(const GrowthWindow &window, const GrowthLimits &
 }
 
 void StreetGrowth::queueIfPlaceholder(NodeId id) {
+    if (observer_ && observer_->isCutOff(id)) return;
     const WordNode &node = graph_.node(id);
     std::span<const Word> word(&node.word, 1);
     if (std::ranges::any_of(rules_, [&](const StreetRule &rule) { return headMatches(rule, word, 0); }))

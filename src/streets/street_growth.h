@@ -1,9 +1,10 @@
 // Growing a word graph by its rules (Goitowski 2010, §4.2.2 and §4.2.5, Listing 4.1): the
 // placeholder of lowest iteration depth inside the window is expanded first, ties by id, so
-// that older areas are never more detailed than newer ones. The geometric constraints are the
-// StreetQuery's.
+// that older areas are never more detailed than newer ones. The geometry (the constraints, the
+// street graph) comes in through the NodeQuery and an ExpansionObserver (street_builder.h).
 #pragma once
 
+#include <functional>
 #include <set>
 #include <span>
 #include <string>
@@ -36,6 +37,21 @@ enum class GrowthStop {
     NodeLimit,       // the next expansion would pass maxNodes; it is left for a later call
 };
 
+// Answers a rule's query for the node being expanded: lsystem.h's StreetQuery with the asking
+// node, whose turtle the proposed street starts from.
+using NodeQuery = std::function<QueryResult(const WordNode &asking, char kind, std::span<float> inOut)>;
+
+// Told of every expansion, so that it can build what the new words draw; it may cut a node off,
+// and a placeholder cut off is never expanded.
+class ExpansionObserver {
+  public:
+    virtual ~ExpansionObserver() = default;
+    // `placeholder` was replaced: its id now holds the successor's first word and the others
+    // are the nodes from `firstNew` to the graph's end.
+    virtual void expanded(NodeId placeholder, NodeId firstNew) = 0;
+    virtual bool isCutOff(NodeId id) const = 0;
+};
+
 struct GrowthResult {
     GrowthStop stop = GrowthStop::Exhausted;
     size_t expansions = 0;
@@ -43,8 +59,9 @@ struct GrowthResult {
 
 class StreetGrowth {
   public:
-    // The graph, the rules and the draws must outlive the growth.
-    StreetGrowth(WordGraph &graph, std::span<const StreetRule> rules, StreetQuery query, RandomDraws &draws);
+    // The graph, the rules, the draws and the observer must outlive the growth.
+    StreetGrowth(WordGraph &graph, std::span<const StreetRule> rules, NodeQuery query, RandomDraws &draws,
+                 ExpansionObserver *observer = nullptr);
 
     // Expands placeholders until none is left inside `window` or a limit is reached. A
     // placeholder outside the window waits for a later call; one that no rule applies to
@@ -61,8 +78,9 @@ class StreetGrowth {
 
     WordGraph &graph_;
     std::span<const StreetRule> rules_;
-    StreetQuery query_;
+    NodeQuery query_;
     RandomDraws &draws_;
+    ExpansionObserver *observer_;
     std::set<std::pair<uint32_t, NodeId>> pending_;  // (depth, id): lowest depth, then id first
     std::vector<std::string> warnings_;
 };

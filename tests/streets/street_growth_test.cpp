@@ -18,7 +18,7 @@ class FixedDraws final : public RandomDraws {
 };
 
 // The geometric constraints are not built yet: every segment fits as proposed.
-QueryResult fitsAsProposed(char, std::span<float>) { return QueryResult::Normal; }
+QueryResult fitsAsProposed(const WordNode &, char, std::span<float>) { return QueryResult::Normal; }
 
 const GrowthWindow kEverywhere{{0, 0}, 1e6f};
 

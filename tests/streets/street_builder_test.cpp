@@ -1,0 +1,124 @@
+#include "streets/street_builder.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <tuple>
+
+#include "streets/grown_streets.h"
+#include "streets/listing_4_2.h"
+#include "streets/street_rule_file.h"
+
+namespace veduta {
+namespace {
+
+using test::kListing42;
+
+// Every draw is 0.99: above p1's probabilities 0.2, so a = 0 and len stays 10: a square grid.
+class FixedDraws final : public RandomDraws {
+  public:
+    float uniform(uint32_t, uint32_t) override { return 0.99f; }
+};
+
+using Town = test::GrownStreets;
+
+TEST(StreetBuilderListing42, TheBranchOf53EndsOn76AndClosesTheThesisCycle) {
+    FixedDraws draws;
+    Town town(kListing42, draws);
+    town.grow(1e6f, 13);
+    const StreetBuilder &streets = town.streets;
+    // Tab. 4.6.1's cycle edge 46-76: S 53's F is bent onto node 76 (NN, distance 0).
+    VertexId v46 = streets.vertexOf(46), v76 = streets.vertexOf(76);
+    ASSERT_NE(v46, kNoVertex);
+    ASSERT_NE(v76, kNoVertex);
+    EXPECT_NE(streets.graph().edgeBetween(v46, v76), UINT32_MAX);
+    EXPECT_GE(streets.counts().snapped, 1u);
+    EXPECT_EQ(streets.counts().refused, 0u);
+    test::expectSoundNetwork(streets.graph());
+}
+
+TEST(StreetBuilderListing42, ASquareGridHasAVertexWhereverStreetsMeet) {
+    FixedDraws draws;
+    Town town(kListing42, draws);
+    town.grow(45);
+    const StreetGraph &graph = town.streets.graph();
+    test::expectSoundNetwork(graph);
+    // Every vertex on the lattice of 10, none twice.
+    std::set<std::pair<long, long>> seen;
+    for (const StreetVertex &v : graph.vertices()) {
+        EXPECT_NEAR(v.position.x, std::round(v.position.x / 10) * 10, 1e-3f);
+        EXPECT_NEAR(v.position.y, std::round(v.position.y / 10) * 10, 1e-3f);
+        EXPECT_TRUE(seen.emplace(std::lround(v.position.x), std::lround(v.position.y)).second)
+            << v.position.x << ", " << v.position.y;
+    }
+    EXPECT_GT(graph.edges().size(), graph.vertices().size());  // cycles: blocks
+}
+
+TEST(StreetBuilderProperties, JitteredGridsOfManySeedsAreSound) {
+    for (uint32_t seed = 1; seed <= 12; ++seed) {
+        SCOPED_TRACE(seed);
+        SeededDraws draws(seed);
+        Town town(kListing42, draws);
+        EXPECT_EQ(town.grow(60).stop, GrowthStop::Exhausted);
+        test::expectSoundNetwork(town.streets.graph());
+        const StreetCounts &counts = town.streets.counts();
+        EXPECT_GT(counts.snapped + counts.split, 10u);
+        EXPECT_GT(town.streets.graph().edges().size(), town.streets.graph().vertices().size());
+    }
+}
+
+std::vector<std::tuple<float, float, float>> positions(const StreetGraph &graph) {
+    std::vector<std::tuple<float, float, float>> list;
+    for (const StreetVertex &v : graph.vertices()) list.emplace_back(v.position.x, v.position.y, v.position.z);
+    return list;
+}
+
+std::vector<std::pair<VertexId, VertexId>> ends(const StreetGraph &graph) {
+    std::vector<std::pair<VertexId, VertexId>> list;
+    for (const StreetEdge &e : graph.edges()) list.emplace_back(e.a, e.b);
+    return list;
+}
+
+TEST(StreetBuilderProperties, TheSameSeedGrowsTheSameGraph) {
+    SeededDraws draws(7), same(7), other(8);
+    Town a(kListing42, draws), b(kListing42, same), c(kListing42, other);
+    a.grow(50);
+    b.grow(50);
+    c.grow(50);
+    EXPECT_EQ(positions(a.streets.graph()), positions(b.streets.graph()));
+    EXPECT_EQ(ends(a.streets.graph()), ends(b.streets.graph()));
+    EXPECT_NE(positions(a.streets.graph()), positions(c.streets.graph()));
+}
+
+TEST(StreetBuilder, ARefusedStreetCutsOffWhatWouldGrowFromIt) {
+    FixedDraws draws;
+    // Each A draws a street of 10 and a branch of 2, too short to be built.
+    Town town("o: A\np: A -> F(10)[&(90)F(2)A]A\n", draws);
+    town.grow(35);
+    const StreetCounts &counts = town.streets.counts();
+    EXPECT_EQ(counts.proposed, 4u);  // from x = 0, 10, 20, 30
+    EXPECT_EQ(counts.refused, 4u);
+    EXPECT_EQ(town.streets.graph().vertices().size(), 5u);
+    EXPECT_EQ(town.streets.graph().edges().size(), 4u);
+    EXPECT_EQ(town.growth.pendingCount(), 1u);  // the A at x = 40 waits outside; the branches' A are gone
+}
+
+TEST(StreetBuilder, AStreetMetIsCutAndWhatLiesBeyondIsCutOff) {
+    FixedDraws draws;
+    // A street north along x = 5, then one east from the origin that crosses it and goes on.
+    Town town("o: R[f(5)&(90)f(5)&(180)F(10)]F(10)A\np: A -> F(10)\n", draws);
+    town.grow(100);
+    const StreetBuilder &streets = town.streets;
+    EXPECT_EQ(streets.counts().split, 1u);
+    EXPECT_EQ(streets.counts().proposed, 1u);   // the street north
+    EXPECT_EQ(town.growth.pendingCount(), 0u);  // the A beyond the crossing is cut off
+    const StreetGraph &graph = streets.graph();
+    ASSERT_EQ(graph.vertices().size(), 4u);  // the origin, the street's two ends, the crossing
+    EXPECT_EQ(graph.edges().size(), 3u);
+    EXPECT_TRUE(graph.vertex(3).isStatic);
+    EXPECT_NEAR(graph.vertex(3).position.x, 5, 1e-5f);
+    EXPECT_NEAR(graph.vertex(3).position.y, 0, 1e-5f);
+}
+
+}  // namespace
+}  // namespace veduta
