@@ -1,17 +1,17 @@
 // The pattern rule sets shipped in rules/streets/, grown with many seeds.
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "streets/grown_streets.h"
+#include "test_paths.h"
 
 namespace veduta {
 namespace {
 
 std::string patternText(const std::string &name) {
-    std::ifstream file(std::filesystem::path(VEDUTA_SOURCE_DIR) / "rules" / "streets" / (name + ".txt"));
+    std::ifstream file(test::sourceFile("rules/streets/" + name + ".txt"));
     std::stringstream text;
     text << file.rdbuf();
     return text.str();

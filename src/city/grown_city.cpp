@@ -1,0 +1,91 @@
+#include "city/grown_city.h"
+
+#include <fmt/format.h>
+#include <cmath>
+
+#include "core/hash.h"
+#include "streets/street_blocks.h"
+#include "streets/word_graph.h"
+
+namespace veduta {
+
+namespace {
+
+bool onTheGround(const Vec3f &p, const StreetConstraints &constraints) {
+    return std::abs(p.z) <= constraints.heightTolerance;
+}
+
+// Streets of the ground level as a plane graph; the indices are the street graph's vertex ids.
+std::vector<PlanarEdge> groundEdges(const StreetGraph &graph, const StreetConstraints &constraints,
+                                    size_t &otherLevel) {
+    std::vector<PlanarEdge> edges;
+    for (const StreetEdge &e : graph.edges()) {
+        if (onTheGround(graph.vertex(e.a).position, constraints) &&
+            onTheGround(graph.vertex(e.b).position, constraints))
+            edges.emplace_back(e.a, e.b);
+        else ++otherLevel;
+    }
+    return edges;
+}
+
+CityData cityOf(const StreetGraph &graph, const std::vector<PlanarEdge> &edges, float streetWidth) {
+    CityData city;
+    city.streetWidth = streetWidth;
+    for (VertexId v = 0; v < graph.vertices().size(); ++v) {
+        const Vec3f &p = graph.vertex(v).position;
+        city.points.push_back({v, p.x, p.y, 0, {}});
+    }
+    for (const auto &[a, b] : edges) city.streets.push_back({uint32_t(city.streets.size()), a, b, {}, {}});
+    return city;
+}
+
+}  // namespace
+
+CityData growCity(const StreetRuleSet &rules, const CityGrowth &growth, std::vector<std::string> &warnings,
+                  CityGrowthReport *report) {
+    CityGrowthReport local;
+    CityGrowthReport &r = report ? *report : local;
+    SeededDraws draws(growth.seed);
+    WordGraph words(rules.initialWord);
+    StreetBuilder streets(words, growth.constraints);
+    StreetGrowth grower(words, rules.rules, streets.nodeQuery(), draws, &streets);
+    r.growth = grower.grow({growth.centre, growth.radius}, growth.limits);
+    r.streets = streets.counts();
+    warnings.insert(warnings.end(), grower.warnings().begin(), grower.warnings().end());
+    if (r.growth.stop != GrowthStop::Exhausted)
+        warnings.push_back(
+            fmt::format("the street growth stopped at a limit after {} expansions, with {} "
+                        "placeholders left: the town is smaller than its window",
+                        r.growth.expansions, grower.pendingCount()));
+
+    const StreetGraph &graph = streets.graph();
+    std::vector<PlanarEdge> edges = groundEdges(graph, growth.constraints, r.otherLevelStreets);
+    std::vector<PlanarPoint> points;
+    for (const StreetVertex &v : graph.vertices()) points.push_back({v.position.x, v.position.y});
+    BlockResult found = blocksByArrangement(points, edges);
+    CityData city = cityOf(graph, edges, growth.streetWidth);
+    for (const StreetBlock &face : found.blocks) {
+        if (!face.holes.empty()) {
+            ++r.blocksWithStreetsInside;
+            continue;
+        }
+        CityBlock block;
+        for (uint32_t v : face.boundary) block.points.push_back({float(points[v].x), float(points[v].y)});
+        // The block's vertex ids are its identity: the same seed grows the same ids.
+        block.sourceId = hashSequence(face.boundary);
+        city.blocks.push_back(std::move(block));
+    }
+    r.blocks = city.blocks.size();
+    if (r.blocksWithStreetsInside > 0)
+        warnings.push_back(
+            fmt::format("{} blocks with streets inside them were left without lots", r.blocksWithStreetsInside));
+    if (found.nonSimpleFaces + found.invalidFaces > 0)
+        warnings.push_back(fmt::format("{} faces of the street graph were no simple polygon and were left without lots",
+                                       found.nonSimpleFaces + found.invalidFaces));
+    if (r.otherLevelStreets > 0)
+        warnings.push_back(
+            fmt::format("{} streets above or below the ground level were left out", r.otherLevelStreets));
+    return city;
+}
+
+}  // namespace veduta

@@ -1,0 +1,44 @@
+// A city grown from a street L-system (issue 20, seed 002): the street graph the rules grow
+// inside a window under the local constraints (src/streets/, docs/street-rules.md), its blocks
+// as the faces of that graph (docs/street-blocks.md), and the CityData that generateCity cuts
+// into lots and builds, as it builds a CityData file. docs/grown-city.md.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "city/city_data.h"
+#include "core/vecmath.h"
+#include "streets/street_builder.h"
+#include "streets/street_constraints.h"
+#include "streets/street_growth.h"
+#include "streets/street_rules.h"
+
+namespace veduta {
+
+struct CityGrowth {
+    Vec2f centre;        // of the window, metres from the scene origin (x east, y north)
+    float radius = 500;  // of the window
+    uint32_t seed = 0;   // of every draw of the rules
+    StreetConstraints constraints;
+    GrowthLimits limits;
+    float streetWidth = 10;  // every street's, kerb to kerb
+};
+
+// What the growth came to, besides the city.
+struct CityGrowthReport {
+    GrowthResult growth;
+    StreetCounts streets;
+    size_t blocks = 0;
+    size_t blocksWithStreetsInside = 0;  // left out: generateCity cuts no block with a hole
+    size_t otherLevelStreets = 0;        // left out: only the ground level becomes a city yet
+};
+
+// The city the rules grow: a point per street vertex (heights 0: generateCity puts the city on
+// a landscape's terrain), a street per street edge, a block per bounded face of the ground
+// level's streets, without lots (generateCity cuts them by the blocks' LotSubdivision).
+// Warnings: the rule choice's, a growth stopped by a limit, what was left out and why.
+CityData growCity(const StreetRuleSet &rules, const CityGrowth &growth, std::vector<std::string> &warnings,
+                  CityGrowthReport *report = nullptr);
+
+}  // namespace veduta
