@@ -147,7 +147,8 @@ size_t lowestCorner(std::span<const PlanarPoint> points, const Cycle &cycle) {
 }
 
 Cycle startingAtSmallest(Cycle cycle) {
-    std::ranges::rotate(cycle, std::ranges::min_element(cycle));
+    // Not ranges::rotate: clang 14 with libstdc++ 12 (the fuzz build) cannot compile it.
+    std::rotate(cycle.begin(), std::ranges::min_element(cycle), cycle.end());
     return cycle;
 }
 

@@ -194,7 +194,9 @@ SegmentPlan planSegment(const StreetGraph &graph, const SegmentStart &start, con
                         const StreetConstraints &constraints) {
     double flat = std::hypot(double(direction.x), double(direction.y));
     double full = std::sqrt(flat * flat + double(direction.z) * direction.z);
-    if (!(length >= constraints.minLength && length <= constraints.maxLength) || !(full > 0)) return {};
+    const Vec3f &from = start.position;
+    bool finite = std::isfinite(full) && std::isfinite(from.x) && std::isfinite(from.y) && std::isfinite(from.z);
+    if (!(length >= constraints.minLength && length <= constraints.maxLength) || !(full > 0) || !finite) return {};
     // A lift between levels has no extent in the ground plane the tests work in: it goes as proposed.
     if (flat < 1e-3 * full) {
         Vec3f end = start.position + normalize(direction) * length;

@@ -46,8 +46,9 @@ struct SegmentStart {
     VertexId vertex = kNoVertex;  // at `position` when there is one
 };
 
-// The plan for a street from `start` along `direction` (need not be unit) for `length`. Pure:
-// the graph is not changed.
+// The plan for a street from `start` along `direction` (need not be unit) for `length`; a start
+// or direction that is not finite fails (the rules' arithmetic may overflow). Pure: the graph
+// is not changed.
 SegmentPlan planSegment(const StreetGraph &graph, const SegmentStart &start, const Vec3f &direction, float length,
                         const StreetConstraints &constraints);
 
