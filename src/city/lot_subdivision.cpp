@@ -27,6 +27,8 @@ constexpr SettingField kSettingFields[] = {
     {"MinLotArea", &LotSettings::minLotArea},
     {"MinLotAngle", &LotSettings::minLotAngleDegrees},
     {"HousingDensity", &LotSettings::housingDensity},
+    {"RoadMargin", &LotSettings::roadMargin},
+    {"BuildingMargin", &LotSettings::buildingMargin},
 };
 
 // A setting out of range: `setting` is the one to blame; a range between two settings names
@@ -59,6 +61,13 @@ std::optional<SettingProblem> findProblem(const LotSettings &s) {
     if (!(s.housingDensity >= 0 && s.housingDensity <= 1)) {
         return problem("HousingDensity", s.housingDensity, "in [0, 1]");
     }
+    // An infinite margin would be an infinite offset, which CGAL cannot construct.
+    if (!(std::isfinite(s.roadMargin) && s.roadMargin >= 0)) {
+        return problem("RoadMargin", s.roadMargin, "finite and zero or more");
+    }
+    if (!(std::isfinite(s.buildingMargin) && s.buildingMargin >= 0)) {
+        return problem("BuildingMargin", s.buildingMargin, "finite and zero or more");
+    }
     return std::nullopt;
 }
 
@@ -87,18 +96,17 @@ struct AlgorithmName {
 };
 
 constexpr AlgorithmName kAlgorithmNames[] = {
-    {"perimeter", LotSubdivision::Perimeter},
-    {"recursive", LotSubdivision::Recursive},
-    {"obb", LotSubdivision::Obb},
-    {"skeleton", LotSubdivision::Skeleton},
+    {"perimeter", LotSubdivision::Perimeter}, {"recursive", LotSubdivision::Recursive}, {"obb", LotSubdivision::Obb},
+    {"skeleton", LotSubdivision::Skeleton},   {"schrader", LotSubdivision::Schrader},
 };
 
 LotSubdivision algorithmFrom(const SettingValue &value) {
     for (const AlgorithmName &entry : kAlgorithmNames) {
         if (value.text == entry.name) return entry.algorithm;
     }
-    throw InputError(value.loc,
-                     fmt::format("LotSubdivision must be perimeter, recursive, obb or skeleton, not '{}'", value.text));
+    throw InputError(
+        value.loc,
+        fmt::format("LotSubdivision must be perimeter, recursive, obb, skeleton or schrader, not '{}'", value.text));
 }
 
 }  // namespace
@@ -126,6 +134,7 @@ std::vector<Footprint> subdivideBlock(const Block &block, const LotSettings &set
     case LotSubdivision::Recursive: return recursiveLots(block, settings, seed, blockId, loc);
     case LotSubdivision::Obb: return obbLots(block, settings, seed, blockId, loc);
     case LotSubdivision::Skeleton: return skeletonLots(block, settings, seed, blockId, loc);
+    case LotSubdivision::Schrader: return schraderLots(block, settings, seed, blockId, loc);
     case LotSubdivision::Perimeter: break;
     }
     // The fallback is for blocks without room for a ring, not for rings the filters emptied.

@@ -23,6 +23,7 @@ enum class LotSubdivision {
     Recursive,  // "recursive"
     Obb,        // "obb"
     Skeleton,   // "skeleton"
+    Schrader,   // "schrader"
 };
 
 // Bilke's BuildingSettings for lots, in metres, square metres and degrees. The thesis gives
@@ -30,22 +31,26 @@ enum class LotSubdivision {
 struct LotSettings {
     LotSubdivision algorithm = LotSubdivision::Perimeter;
     float minBuildingLength = 10, maxBuildingLength = 22;  // frontage along the street
-    float minBuildingDepth = 12;                           // inset of the perimeter ring
+    float minBuildingDepth = 12;                           // perimeter ring's inset; Schrader's M1
     float minBuildingInnerLength = 4;                      // a lot's side facing the courtyard
     float maxLotArea = 600, minLotArea = 40;               // recursive subdivision
     float minLotAngleDegrees = 30;
     float housingDensity = 1;  // probability a lot is kept
+    // Goitowski's margins (thesis L3560–3561), Schrader lots only: every lot stays roadMargin
+    // inside the block, and neighbouring lots are buildingMargin apart.
+    float roadMargin = 0.6f, buildingMargin = 0.6f;
 };
 
 // Reads LotSubdivision, MinBuildingLength, MaxBuildingLength, MinBuildingDepth,
-// MinBuildingInnerLength, MaxLotArea, MinLotArea, MinLotAngle and HousingDensity; the defaults
-// above where one is not set. InputError at the setting when a value is out of its range (see
-// checkLotSettings) or LotSubdivision names no algorithm.
+// MinBuildingInnerLength, MaxLotArea, MinLotArea, MinLotAngle, HousingDensity, RoadMargin and
+// BuildingMargin; the defaults above where one is not set. InputError at the setting when a
+// value is out of its range (see checkLotSettings) or LotSubdivision names no algorithm.
 LotSettings lotSettingsFrom(const SettingsStack &settings);
 
 // Throws a LotError (InputError at `loc` when given) unless 0 < MinBuildingLength ≤
 // MaxBuildingLength, MinBuildingDepth, MaxLotArea > 0, MinBuildingInnerLength, MinLotArea ≥ 0,
-// 0 ≤ MinLotAngle < 180 and 0 ≤ HousingDensity ≤ 1.
+// 0 ≤ MinLotAngle < 180, 0 ≤ HousingDensity ≤ 1, and RoadMargin and BuildingMargin are finite
+// and ≥ 0.
 void checkLotSettings(const LotSettings &settings, const std::optional<FileLoc> &loc = std::nullopt);
 
 // A city block: a simple counter-clockwise polygon (edge i from points[i] to points[i + 1]),
@@ -95,6 +100,15 @@ std::vector<Footprint> obbLots(const Block &block, const LotSettings &settings, 
 // streets, the faces of other edges join a neighbouring strip, and each strip is cut
 // perpendicular to its street at frontages drawn from [MinBuildingLength, MaxBuildingLength].
 std::vector<Footprint> skeletonLots(const Block &block, const LotSettings &settings, uint32_t seed, uint32_t blockId,
+                                    const std::optional<FileLoc> &loc = std::nullopt);
+
+// Goitowski's simplified Schrader 2007 subdivision (digest-002 §3.2): ⌊perimeter / D⌋ markers,
+// D the mean of MinBuildingLength and MaxBuildingLength, each given to the edge whose pieces are
+// then longest; a ray inwards, perpendicular to its edge, from each marker; each lot runs along
+// the outline between two neighbouring markers and back to the rays' frontmost crossings with
+// other rays. Lots that front no street are dropped; the rest are kept RoadMargin inside the
+// block and BuildingMargin apart. The seed only keys the HousingDensity filter.
+std::vector<Footprint> schraderLots(const Block &block, const LotSettings &settings, uint32_t seed, uint32_t blockId,
                                     const std::optional<FileLoc> &loc = std::nullopt);
 
 // The lots of the algorithm settings.algorithm names; for Perimeter, recursiveLots where
