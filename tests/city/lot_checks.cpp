@@ -71,6 +71,15 @@ double frontage(const Footprint &lot) {
     return length;
 }
 
+void expectLotInside(const Footprint &lot, const ExactPolygon &outline) {
+    ASSERT_GE(lot.points.size(), 3u);
+    ASSERT_EQ(lot.streetEdges.size(), lot.points.size());
+    ASSERT_TRUE(isSimplePolygon(lot.points));
+    ASSERT_TRUE(isCounterClockwise(lot.points));
+    ExactPolygon polygon = exact(lot.points);
+    EXPECT_NEAR(intersectionArea(polygon, outline), area(polygon), kAreaTolerance);
+}
+
 void expectValidLots(const Block &block, const std::vector<Footprint> &lots) {
     ExactPolygon outline = exact(block.points);
     std::vector<ExactPolygon> exactLots;
@@ -78,12 +87,9 @@ void expectValidLots(const Block &block, const std::vector<Footprint> &lots) {
     for (size_t i = 0; i < lots.size(); ++i) {
         const Footprint &lot = lots[i];
         SCOPED_TRACE(testing::Message() << "lot " << i);
-        ASSERT_GE(lot.points.size(), 3u);
-        ASSERT_EQ(lot.streetEdges.size(), lot.points.size());
-        ASSERT_TRUE(isSimplePolygon(lot.points));
-        ASSERT_TRUE(isCounterClockwise(lot.points));
+        expectLotInside(lot, outline);
+        if (testing::Test::HasFatalFailure()) return;
         ExactPolygon polygon = exact(lot.points);
-        EXPECT_NEAR(intersectionArea(polygon, outline), area(polygon), kAreaTolerance);
         bool street = false;
         for (size_t e = 0; e < lot.edgeCount(); ++e) {
             if (!lot.streetEdges[e]) continue;

@@ -31,6 +31,10 @@ bool nearBlockPoint(Vec2f p, const Block &block);
 // The length of the lot's flagged edges.
 double frontage(const Footprint &lot);
 
+// A lot is a simple counter-clockwise polygon with a street flag per edge, inside the block's
+// outline (a fatal gtest failure when it is no polygon at all).
+void expectLotInside(const Footprint &lot, const ExactPolygon &outline);
+
 // Every lot is a simple counter-clockwise polygon inside the block, apart from the others, with a
 // flagged edge, every flagged edge on a street edge of the block (gtest failures otherwise).
 void expectValidLots(const Block &block, const std::vector<Footprint> &lots);

@@ -3,20 +3,13 @@
 #include <gtest/gtest.h>
 
 #include "input_error.h"
+#include "streets/fixed_draws.h"
 #include "streets/street_rule_file.h"
 
 namespace veduta {
 namespace {
 
-// Every draw is the same value.
-class FixedDraws final : public RandomDraws {
-  public:
-    explicit FixedDraws(float value) : value_(value) {}
-    float uniform(uint32_t, uint32_t) override { return value_; }
-
-  private:
-    float value_;
-};
+using test::FixedDraws;
 
 StreetRuleSet rules(const std::string &text) { return parseStreetRules(text, "r.txt"); }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <tuple>
 
+#include "streets/fixed_draws.h"
 #include "streets/grown_streets.h"
 #include "streets/listing_4_2.h"
 #include "streets/street_rule_file.h"
@@ -14,16 +15,13 @@ namespace {
 
 using test::kListing42;
 
-// Every draw is 0.99: above p1's probabilities 0.2, so a = 0 and len stays 10: a square grid.
-class FixedDraws final : public RandomDraws {
-  public:
-    float uniform(uint32_t, uint32_t) override { return 0.99f; }
-};
+using test::FixedDraws;
+using test::kSquareGridDraw;
 
 using Town = test::GrownStreets;
 
 TEST(StreetBuilderListing42, TheBranchOf53EndsOn76AndClosesTheThesisCycle) {
-    FixedDraws draws;
+    FixedDraws draws(kSquareGridDraw);
     Town town(kListing42, draws);
     town.grow(1e6f, 13);
     const StreetBuilder &streets = town.streets;
@@ -38,7 +36,7 @@ TEST(StreetBuilderListing42, TheBranchOf53EndsOn76AndClosesTheThesisCycle) {
 }
 
 TEST(StreetBuilderListing42, ASquareGridHasAVertexWhereverStreetsMeet) {
-    FixedDraws draws;
+    FixedDraws draws(kSquareGridDraw);
     Town town(kListing42, draws);
     town.grow(45);
     const StreetGraph &graph = town.streets.graph();
@@ -91,7 +89,7 @@ TEST(StreetBuilderProperties, TheSameSeedGrowsTheSameGraph) {
 }
 
 TEST(StreetBuilder, ARefusedStreetCutsOffWhatWouldGrowFromIt) {
-    FixedDraws draws;
+    FixedDraws draws(kSquareGridDraw);
     // Each A draws a street of 10 and a branch of 2, too short to be built.
     Town town("o: A\np: A -> F(10)[&(90)F(2)A]A\n", draws);
     town.grow(35);
@@ -104,7 +102,7 @@ TEST(StreetBuilder, ARefusedStreetCutsOffWhatWouldGrowFromIt) {
 }
 
 TEST(StreetBuilder, AStreetMetIsCutAndWhatLiesBeyondIsCutOff) {
-    FixedDraws draws;
+    FixedDraws draws(kSquareGridDraw);
     // A street north along x = 5, then one east from the origin that crosses it and goes on.
     Town town("o: R[f(5)&(90)f(5)&(180)F(10)]F(10)A\np: A -> F(10)\n", draws);
     town.grow(100);

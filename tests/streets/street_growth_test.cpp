@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "streets/fixed_draws.h"
 #include "streets/graph_dot.h"
 #include "streets/listing_4_2.h"
 #include "streets/street_rule_file.h"
@@ -11,13 +12,10 @@ namespace {
 
 using test::kListing42;
 
-// Every draw is 0.99: above p1's probabilities 0.2, so a = 0 and len stays 10.
-class FixedDraws final : public RandomDraws {
-  public:
-    float uniform(uint32_t, uint32_t) override { return 0.99f; }
-};
+using test::FixedDraws;
+using test::kSquareGridDraw;
 
-// The geometric constraints are not built yet: every segment fits as proposed.
+// Without the constraints (street_builder.h): every segment fits as proposed.
 QueryResult fitsAsProposed(const WordNode &, char, std::span<float>) { return QueryResult::Normal; }
 
 const GrowthWindow kEverywhere{{0, 0}, 1e6f};
@@ -48,7 +46,7 @@ void expectAt(const WordGraph &graph, NodeId id, const Vec3f &expected) {
 }
 
 TEST(StreetGrowthListing42, FirstExpansionIsTheGraphOfFig428) {
-    FixedDraws draws;
+    FixedDraws draws(kSquareGridDraw);
     Manhattan manhattan(draws);
     GrowthResult result = manhattan.grow(1);
     EXPECT_EQ(result.expansions, 1u);
@@ -63,7 +61,7 @@ TEST(StreetGrowthListing42, FirstExpansionIsTheGraphOfFig428) {
 }
 
 TEST(StreetGrowthListing42, DotOfTheFirstExpansionIsListing45) {
-    FixedDraws draws;
+    FixedDraws draws(kSquareGridDraw);
     Manhattan manhattan(draws);
     manhattan.grow(1);
     std::string dot = toDot(manhattan.graph);
@@ -100,7 +98,7 @@ TEST(StreetGrowthListing42, DotOfTheFirstExpansionIsListing45) {
 }
 
 TEST(StreetGrowthListing42, TwoMoreLevelsGiveTheDrawEdgesOfTab461) {
-    FixedDraws draws;
+    FixedDraws draws(kSquareGridDraw);
     Manhattan manhattan(draws);
     // 1 + 3 + 9 expansions: S(10), then S 8, 12, 15, then the nine S of depth 2.
     GrowthResult result = manhattan.grow(13);
@@ -127,7 +125,7 @@ TEST(StreetGrowthListing42, TwoMoreLevelsGiveTheDrawEdgesOfTab461) {
 }
 
 TEST(StreetGrowthListing42, TurtlePositionsOfTheSecondAndThirdLevel) {
-    FixedDraws draws;
+    FixedDraws draws(kSquareGridDraw);
     Manhattan manhattan(draws);
     manhattan.grow(13);
     const WordGraph &graph = manhattan.graph;
@@ -148,7 +146,7 @@ TEST(StreetGrowthListing42, TurtlePositionsOfTheSecondAndThirdLevel) {
 }
 
 TEST(StreetGrowthWindow, PlaceholdersOutsideWaitForALaterCall) {
-    FixedDraws draws;
+    FixedDraws draws(kSquareGridDraw);
     Manhattan manhattan(draws);
     GrowthResult result = manhattan.grow(100, {{0, 0}, 5});
     EXPECT_EQ(result.stop, GrowthStop::Exhausted);
@@ -163,7 +161,7 @@ TEST(StreetGrowthWindow, PlaceholdersOutsideWaitForALaterCall) {
 }
 
 TEST(StreetGrowthLimits, NodeLimitStopsBeforeTheExpansionThatWouldPassIt) {
-    FixedDraws draws;
+    FixedDraws draws(kSquareGridDraw);
     Manhattan manhattan(draws);
     GrowthLimits limits;
     limits.maxNodes = 40;
@@ -173,7 +171,7 @@ TEST(StreetGrowthLimits, NodeLimitStopsBeforeTheExpansionThatWouldPassIt) {
     EXPECT_EQ(manhattan.graph.size(), 31u);
     // Continuing with more room grows the same graph as growing at once.
     manhattan.grow(11);
-    FixedDraws sameDraws;
+    FixedDraws sameDraws(kSquareGridDraw);
     Manhattan atOnce(sameDraws);
     atOnce.grow(13);
     EXPECT_EQ(toDot(manhattan.graph), toDot(atOnce.graph));
@@ -194,7 +192,7 @@ TEST(StreetGrowthLimits, ARuleThatAddsNothingStopsAtTheExpansionLimit) {
 }
 
 TEST(StreetGrowthLimits, ExpansionLimit) {
-    FixedDraws draws;
+    FixedDraws draws(kSquareGridDraw);
     Manhattan manhattan(draws);
     GrowthResult result = manhattan.grow(4);
     EXPECT_EQ(result.stop, GrowthStop::ExpansionLimit);
