@@ -1,9 +1,12 @@
 #include "app/command_options.h"
 
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 
 #include <fmt/format.h>
+
+#include "core/error.h"
 
 namespace veduta {
 
@@ -25,6 +28,17 @@ CLI::Validator fileWithExtension(const std::string &extension) {
                 : fmt::format("'{}' is not a {} file", text, extension);
         },
         "FILE" + extension);
+}
+
+int epsgOption(const std::string &text, const std::string &option) {
+    if (text.empty()) return 0;
+    std::string digits = text.rfind("EPSG:", 0) == 0 || text.rfind("epsg:", 0) == 0 ? text.substr(5) : text;
+    try {
+        size_t used = 0;
+        int code = std::stoi(digits, &used);
+        if (used == digits.size() && code > 0) return code;
+    } catch (const std::exception &) {}
+    throw InputError(FileLoc{option}, fmt::format("'{}' is no CRS; give EPSG:<code>", text));
 }
 
 void addSceneArgument(CLI::App &command, std::string &scene) {

@@ -15,6 +15,9 @@ namespace veduta {
 std::string checkResolution(const std::string &text);  // WxH
 CLI::Validator fileWithExtension(const std::string &extension);
 
+// An EPSG code from "EPSG:25832" (or "25832"); 0 for "". InputError at `option` otherwise.
+int epsgOption(const std::string &text, const std::string &option);
+
 // The options several commands take, registered with the same names, checks and help.
 void addSceneArgument(CLI::App &command, std::string &scene);          // optional SCENE
 void addResolutionOption(CLI::App &command, std::string &resolution);  // --res WxH

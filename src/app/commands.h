@@ -28,5 +28,6 @@ void addAtkisCommand(CLI::App &app, int &exitCode);
 void addCrsCommand(CLI::App &app, int &exitCode);
 void addTwinCommand(CLI::App &app, int &exitCode);
 void addCompareCommand(CLI::App &app, int &exitCode);
+void addGenerateCommand(CLI::App &app, int &exitCode);
 
 }  // namespace veduta

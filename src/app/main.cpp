@@ -39,5 +39,6 @@ int main(int argc, char **argv) {
     veduta::addCrsCommand(app, exitCode);
     veduta::addTwinCommand(app, exitCode);
     veduta::addCompareCommand(app, exitCode);
+    veduta::addGenerateCommand(app, exitCode);
     return veduta::runApp(app, argc, argv, exitCode);
 }

@@ -16,6 +16,7 @@
 #include "app/commands.h"
 #include "app/run_guarded.h"
 #include "app/scene_loading.h"
+#include "app/shipped_files.h"
 #include "city/citygml_buildings.h"
 #include "city/citygml_file.h"
 #include "city/citygml_twin.h"
@@ -23,7 +24,6 @@
 #include "compare/views.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
-#include "core/program_folder.h"
 #include "core/xml_escape.h"
 #include "geodesy/map_projection.h"
 #include "io/output_files.h"
@@ -42,29 +42,6 @@ struct TwinArgs {
     std::vector<double> origin;
     unsigned lod = 0;
 };
-
-// The Gründerzeit rules that come with veduta: rules/gruenderzeit/ in the source tree the
-// program was built in, found upwards from the program's folder.
-fs::path defaultRules() {
-    if (std::optional<fs::path> folder = runningProgramFolder())
-        for (fs::path dir = *folder; !dir.empty(); dir = dir.parent_path()) {
-            fs::path rules = dir / "rules" / "gruenderzeit" / "FacadeStructure.xml";
-            if (fs::is_regular_file(rules)) return rules;
-            if (dir == dir.parent_path()) break;
-        }
-    throw InputError(FileLoc{"--rules"}, "the Gründerzeit rules were not found beside the program; name a rule file");
-}
-
-int epsgOption(const std::string &text) {
-    if (text.empty()) return 0;
-    std::string digits = text.rfind("EPSG:", 0) == 0 || text.rfind("epsg:", 0) == 0 ? text.substr(5) : text;
-    try {
-        size_t used = 0;
-        int code = std::stoi(digits, &used);
-        if (used == digits.size() && code > 0) return code;
-    } catch (const std::exception &) {}
-    throw InputError(FileLoc{"--crs"}, fmt::format("'{}' is no CRS; give EPSG:<code>", text));
-}
 
 // The file's envelope centre (else its buildings' middle), to the metre.
 MapPoint originOf(const CityGmlModel &model) {
@@ -107,7 +84,7 @@ std::string buildingElement(const TwinBuilding &twin) {
 void runTwin(const TwinArgs &args) {
     fs::path output = args.output;
     prepareOutputFile(output);
-    fs::path rules = args.rules.empty() ? defaultRules() : fs::path(args.rules);
+    fs::path rules = args.rules.empty() ? shippedBuildingRules("--rules") : fs::path(args.rules);
     if (!fs::is_regular_file(rules))
         throw InputError(FileLoc{"--rules"}, fmt::format("cannot read the rule file {}", rules.string()));
     CityGmlOptions read;
@@ -116,7 +93,7 @@ void runTwin(const TwinArgs &args) {
     printWarnings(model.warnings);
     CityGmlDesc desc;
     desc.file = args.input, desc.fileLoc = desc.loc = desc.crsLoc = FileLoc{args.input};
-    desc.epsg = epsgOption(args.crs);
+    desc.epsg = epsgOption(args.crs, "--crs");
     int epsg = cityGmlEpsg(desc, model);
     Georeference georeference{epsg, 0, 0};
     MapPoint origin = args.origin.empty() ? originOf(model) : MapPoint{args.origin[0], args.origin[1]};

@@ -72,7 +72,8 @@ class SceneAssembler {
         std::vector<CityData> cities;
         std::vector<LocalPolygon> streetAreas;
         for (const CityDesc &city : d_.cities) {
-            cities.push_back(within(city.loc, "<city>", [&] { return readCity(city, d_.georeference); }));
+            cities.push_back(within(city.loc, elementName(city),
+                                    [&] { return readCity(city, d_.georeference, seedOf(city.seed)); }));
             if (!d_.landscape) continue;
             for (LocalPolygon &piece : streetAreaPieces(streetNetworkOf(cities.back())))
                 streetAreas.push_back(std::move(piece));
@@ -99,7 +100,7 @@ class SceneAssembler {
                     warnings_);
             });
         for (size_t i = 0; i < d_.cities.size(); ++i) {
-            within(d_.cities[i].loc, "<city>", [&] {
+            within(d_.cities[i].loc, elementName(d_.cities[i]), [&] {
                 generateCity(d_.cities[i], cities[i], seedOf(d_.cities[i].seed), landscape ? &*landscape : nullptr,
                              builder_, warnings_);
             });
@@ -109,6 +110,8 @@ class SceneAssembler {
     }
 
   private:
+    static const char *elementName(const CityDesc &city) { return city.growth ? "<generate>" : "<city>"; }
+
     // Runs `make` for the element at `loc`: memory running out there says which element ran
     // out, rather than a bare std::bad_alloc (exit 3, as every failure that is not the input's).
     template <typename Make>

@@ -65,6 +65,12 @@ struct CityData {
     std::vector<std::string> warnings;             // "file:line:col: message"
 };
 
+// Where the local frame's origin lies in a projected CRS, for writing a city in map
+// coordinates: a point's easting is east + e, its northing north + n.
+struct MapOffset {
+    double east = 0, north = 0;
+};
+
 class MapProjection;
 
 // With a projection, the points' e and n are eastings and northings (or longitudes and

@@ -1,7 +1,10 @@
 #include "city/generate_city.h"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <memory>
+#include <stdexcept>
 #include <unordered_map>
 
 #include <fmt/format.h>
@@ -10,6 +13,7 @@
 #include "city/building_generator.h"
 #include "city/building_rules.h"
 #include "city/city_data.h"
+#include "city/grown_city.h"
 #include "city/lot_subdivision.h"
 #include "city/osm_import.h"
 #include "city/plinth.h"
@@ -19,6 +23,7 @@
 #include "core/hash.h"
 #include "core/random_streams.h"
 #include "geodesy/map_projection.h"
+#include "streets/street_rule_file.h"
 
 namespace veduta {
 
@@ -77,6 +82,17 @@ std::vector<IdentifiedLot> lotsOf(const CityBlock &block, const StreetNetwork &s
         }
     }
     return lots;
+}
+
+void cutLots(CityData &data, const SettingsMap &ruleFileSettings, uint32_t seed) {
+    StreetNetwork streets = streetNetworkOf(data);
+    for (CityBlock &block : data.blocks) {
+        if (!block.lots.empty()) continue;
+        for (IdentifiedLot &lot : lotsOf(block, streets, settingsFor(data, block, nullptr, ruleFileSettings), seed)) {
+            Footprint &f = lot.footprint;
+            block.lots.push_back({std::move(f.points), std::move(f.streetEdges), f.base, {}, block.loc, lot.identity});
+        }
+    }
 }
 
 uint32_t cityBuildingId(ObjectId city, uint32_t lotIdentity) {
@@ -192,10 +208,51 @@ CityData readCityFile(const CityDesc &city, const std::optional<Georeference> &g
     return readCityData(city.file, &projection);
 }
 
-CityData readCity(const CityDesc &city, const std::optional<Georeference> &georeference) {
-    if (!std::filesystem::is_regular_file(city.file))
+// The <generate>'s centre in metres from the scene origin.
+Vec2f growthCentre(const CityGrowthDesc &growth, const std::optional<Georeference> &georeference) {
+    MapPoint centre{growth.centreE, growth.centreN};
+    if (georeference) {
+        try {
+            centre = MapProjection(crsByEpsg(georeference->epsg), *georeference).toLocal(centre);
+        } catch (const std::out_of_range &e) {
+            throw InputError(growth.centreLoc, e.what());
+        }
+    }
+    double reach = kMaxCityReach - growth.radius;
+    if (!(std::abs(centre.easting) <= reach && std::abs(centre.northing) <= reach))
+        throw InputError(
+            growth.centreLoc,
+            fmt::format("the town's window reaches more than {:.0f} km from the scene origin{}", kMaxCityReach / 1000,
+                        georeference ? "" : "; map coordinates need a <georeference>"));
+    return {float(centre.easting), float(centre.northing)};
+}
+
+CityData growSceneCity(const CityDesc &city, const std::optional<Georeference> &georeference, uint32_t seed) {
+    const CityGrowthDesc &desc = *city.growth;
+    if (!std::filesystem::is_regular_file(desc.streets))
+        throw InputError(desc.streetsLoc, fmt::format("cannot read the street rule file {}", desc.streets.string()));
+    StreetRuleSet rules = readStreetRuleFile(desc.streets);
+    CityGrowth growth;
+    growth.centre = growthCentre(desc, georeference);
+    growth.radius = desc.radius;
+    growth.seed = seed;
+    growth.hierarchy.majorWidth = desc.majorWidth;
+    growth.hierarchy.minorWidth = desc.minorWidth;
+    growth.hierarchy.majorShare = desc.majorShare;
+    std::vector<std::string> warnings;
+    CityData data = growCity(rules, growth, warnings);
+    for (const std::string &w : warnings) data.warnings.push_back(fmt::format("{}: {}", city.loc.toString(), w));
+    if (!desc.lots.empty()) {
+        data.settings["LotSubdivision"] = settingValue(desc.lots, desc.lotsLoc);
+        lotSettingsFrom(SettingsStack({&data.settings}));  // an unknown name is an error even without blocks
+    }
+    return data;
+}
+
+CityData readCity(const CityDesc &city, const std::optional<Georeference> &georeference, uint32_t seed) {
+    if (!city.growth && !std::filesystem::is_regular_file(city.file))
         throw InputError(city.fileLoc, fmt::format("cannot read the city file {}", city.file.string()));
-    CityData data = readCityFile(city, georeference);
+    CityData data = city.growth ? growSceneCity(city, georeference, seed) : readCityFile(city, georeference);
     if (data.ruleFiles.empty() && !city.rules.empty()) {
         if (!std::filesystem::is_regular_file(city.rules))
             throw InputError(city.rulesLoc, fmt::format("cannot read the rule file {}", city.rules.string()));

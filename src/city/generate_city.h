@@ -23,8 +23,10 @@ namespace veduta {
 // (CityData: of the <city>'s crs, by default the scene's; OpenStreetMap: WGS 84) placed through
 // geodesy/map_projection.h; without one, local metres (OpenStreetMap: on the tangent plane at the
 // data's centre). The scene reads its cities first: their streets are cut into a landscape
-// before the city is built on it. Throws InputError.
-CityData readCity(const CityDesc &city, const std::optional<Georeference> &georeference);
+// before the city is built on it. A <generate> (city.growth) grows the city from its street
+// rules with `seed` (the city's resolved seed) instead, at its centre, with the growth's
+// warnings at the element. Throws InputError.
+CityData readCity(const CityDesc &city, const std::optional<Georeference> &georeference, uint32_t seed);
 
 // Builds the streets and every lot of the city read by readCity with `seed`, the city's
 // resolved seed (buildRenderScene). Each building's id is cityBuildingId of the city's object
@@ -59,6 +61,11 @@ struct IdentifiedLot {
 // piece's place among them, never from the block's place in the file.
 std::vector<IdentifiedLot> lotsOf(const CityBlock &block, const StreetNetwork &streets,
                                   const SettingsStack &blockSettings, uint32_t seed);
+
+// Gives each block without lots of its own the lots lotsOf cuts from it with the block's
+// settings over `ruleFileSettings`: what `veduta generate` writes, so that its files hold the
+// lots the buildings will stand on. Each lot keeps its identity in sourceId.
+void cutLots(CityData &data, const SettingsMap &ruleFileSettings, uint32_t seed);
 
 // A city building's id, 1 to 2^24 − 1 so that the IndexBuilding pass (floats) holds it exactly:
 // a hash of the city's object id and its lot's identity. Two lots of a city may hash to one id

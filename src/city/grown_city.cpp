@@ -1,7 +1,9 @@
 #include "city/grown_city.h"
 
 #include <fmt/format.h>
+#include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "core/hash.h"
 #include "streets/street_blocks.h"
@@ -28,14 +30,16 @@ std::vector<PlanarEdge> groundEdges(const StreetGraph &graph, const StreetConstr
     return edges;
 }
 
-CityData cityOf(const StreetGraph &graph, const std::vector<PlanarEdge> &edges, float streetWidth) {
+CityData cityOf(const std::vector<PlanarPoint> &points, const std::vector<PlanarEdge> &edges,
+                const std::vector<StreetClass> &classes, const StreetHierarchy &hierarchy) {
     CityData city;
-    city.streetWidth = streetWidth;
-    for (VertexId v = 0; v < graph.vertices().size(); ++v) {
-        const Vec3f &p = graph.vertex(v).position;
-        city.points.push_back({v, p.x, p.y, 0, {}});
+    city.streetWidth = hierarchy.minorWidth;
+    for (VertexId v = 0; v < points.size(); ++v) city.points.push_back({v, points[v].x, points[v].y, 0, {}});
+    for (size_t i = 0; i < edges.size(); ++i) {
+        std::optional<float> width;
+        if (classes[i] == StreetClass::Major) width = hierarchy.majorWidth;
+        city.streets.push_back({uint32_t(i), edges[i].first, edges[i].second, width, {}});
     }
-    for (const auto &[a, b] : edges) city.streets.push_back({uint32_t(city.streets.size()), a, b, {}, {}});
     return city;
 }
 
@@ -49,7 +53,7 @@ CityData growCity(const StreetRuleSet &rules, const CityGrowth &growth, std::vec
     WordGraph words(rules.initialWord);
     StreetBuilder streets(words, growth.constraints);
     StreetGrowth grower(words, rules.rules, streets.nodeQuery(), draws, &streets);
-    r.growth = grower.grow({growth.centre, growth.radius}, growth.limits);
+    r.growth = grower.grow({{0, 0}, growth.radius}, growth.limits);
     r.streets = streets.counts();
     warnings.insert(warnings.end(), grower.warnings().begin(), grower.warnings().end());
     if (r.growth.stop != GrowthStop::Exhausted)
@@ -61,9 +65,13 @@ CityData growCity(const StreetRuleSet &rules, const CityGrowth &growth, std::vec
     const StreetGraph &graph = streets.graph();
     std::vector<PlanarEdge> edges = groundEdges(graph, growth.constraints, r.otherLevelStreets);
     std::vector<PlanarPoint> points;
-    for (const StreetVertex &v : graph.vertices()) points.push_back({v.position.x, v.position.y});
+    // Moved in float, as the blocks' outlines are kept: a point and the block corners on it agree.
+    for (const StreetVertex &v : graph.vertices())
+        points.push_back({v.position.x + growth.centre.x, v.position.y + growth.centre.y});
     BlockResult found = blocksByArrangement(points, edges);
-    CityData city = cityOf(graph, edges, growth.streetWidth);
+    std::vector<StreetClass> classes = classifyStreets(points, edges, growth.hierarchy);
+    r.majorStreets = size_t(std::count(classes.begin(), classes.end(), StreetClass::Major));
+    CityData city = cityOf(points, edges, classes, growth.hierarchy);
     for (const StreetBlock &face : found.blocks) {
         if (!face.holes.empty()) {
             ++r.blocksWithStreetsInside;
@@ -85,6 +93,7 @@ CityData growCity(const StreetRuleSet &rules, const CityGrowth &growth, std::vec
     if (r.otherLevelStreets > 0)
         warnings.push_back(
             fmt::format("{} streets above or below the ground level were left out", r.otherLevelStreets));
+    r.graph = graph;
     return city;
 }
 

@@ -11,33 +11,40 @@
 #include "core/vecmath.h"
 #include "streets/street_builder.h"
 #include "streets/street_constraints.h"
+#include "streets/street_graph.h"
 #include "streets/street_growth.h"
+#include "streets/street_hierarchy.h"
 #include "streets/street_rules.h"
 
 namespace veduta {
 
 struct CityGrowth {
-    Vec2f centre;        // of the window, metres from the scene origin (x east, y north)
+    // Where the rules' origin lies, metres from the scene origin (x east, y north): the window
+    // is centred on it, and the city is moved there.
+    Vec2f centre;
     float radius = 500;  // of the window
     uint32_t seed = 0;   // of every draw of the rules
     StreetConstraints constraints;
     GrowthLimits limits;
-    float streetWidth = 10;  // every street's, kerb to kerb
+    StreetHierarchy hierarchy;  // the widths of main and minor streets
 };
 
 // What the growth came to, besides the city.
 struct CityGrowthReport {
     GrowthResult growth;
     StreetCounts streets;
+    StreetGraph graph;  // all of it, every level, in the rules' frame (not moved to the centre)
+    size_t majorStreets = 0;
     size_t blocks = 0;
     size_t blocksWithStreetsInside = 0;  // left out: generateCity cuts no block with a hole
     size_t otherLevelStreets = 0;        // left out: only the ground level becomes a city yet
 };
 
 // The city the rules grow: a point per street vertex (heights 0: generateCity puts the city on
-// a landscape's terrain), a street per street edge, a block per bounded face of the ground
-// level's streets, without lots (generateCity cuts them by the blocks' LotSubdivision).
-// Warnings: the rule choice's, a growth stopped by a limit, what was left out and why.
+// a landscape's terrain), a street per street edge of the ground level, of the main or minor
+// width by the hierarchy (street_hierarchy.h), a block per bounded face of those streets, without lots (generateCity
+// cuts them by the blocks' LotSubdivision). Warnings: the rule choice's, a growth stopped by a limit, what was left out
+// and why.
 CityData growCity(const StreetRuleSet &rules, const CityGrowth &growth, std::vector<std::string> &warnings,
                   CityGrowthReport *report = nullptr);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <map>
 #include <optional>
@@ -175,15 +176,38 @@ Vec3f lifted(const Point &p, float z) { return {float(CGAL::to_double(p.x())), f
 
 Vec2f toFloat(const Point &p) { return {float(CGAL::to_double(p.x())), float(CGAL::to_double(p.y()))}; }
 
-// The outline in float. Corners of an exact union can lie closer than a float can tell apart;
-// a corner that rounds onto the one before it is left out.
+// Whether two rounded corners are one: within a few float steps of each other.
+bool sameCorner(Vec2f a, Vec2f b) {
+    auto close = [](float u, float v) {
+        return std::abs(u - v) <=
+            4 * std::numeric_limits<float>::epsilon() * std::max({1.0f, std::abs(u), std::abs(v)});
+    };
+    return close(a.x, b.x) && close(a.y, b.y);
+}
+
+// The outline in float. Corners of an exact union can lie closer than a float can tell apart:
+// a corner that rounds onto (or next to) the one before it is left out, and so is a sliver
+// narrower than a few float steps, which rounds to a spike out to a corner and back (a wedge the
+// streets leave at a bend of a ring road).
 std::vector<Vec2f> toRing(const Polygon &polygon) {
     std::vector<Vec2f> ring;
-    for (auto v = polygon.vertices_begin(); v != polygon.vertices_end(); ++v) {
-        Vec2f p = toFloat(*v);
-        if (ring.empty() || p.x != ring.back().x || p.y != ring.back().y) ring.push_back(p);
+    for (auto v = polygon.vertices_begin(); v != polygon.vertices_end(); ++v) ring.push_back(toFloat(*v));
+    auto same = sameCorner;
+    for (bool changed = true; changed && ring.size() >= 3;) {
+        changed = false;
+        for (size_t i = 0; i < ring.size() && ring.size() >= 3; ++i) {
+            size_t next = (i + 1) % ring.size(), after = (i + 2) % ring.size();
+            if (same(ring[i], ring[next])) {
+                ring.erase(ring.begin() + std::ptrdiff_t(next));
+                changed = true;
+            } else if (same(ring[i], ring[after])) {
+                // i, spike, i again: the spike and the repeat go.
+                ring.erase(ring.begin() + std::ptrdiff_t(std::max(next, after)));
+                ring.erase(ring.begin() + std::ptrdiff_t(std::min(next, after)));
+                changed = true;
+            }
+        }
     }
-    while (ring.size() > 1 && ring.front().x == ring.back().x && ring.front().y == ring.back().y) ring.pop_back();
     return ring;
 }
 

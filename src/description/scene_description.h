@@ -137,10 +137,25 @@ struct BuildingGroupDesc {
 
 // A <city> element: a CityData file (Bilke's Listing 2.1, docs/citydata.md) whose blocks are
 // cut into lots where they have none and whose lots are built with the rule files it names.
+// A <generate>: a town that a street L-system grows (docs/generate.md), built as a <city> is.
+struct CityGrowthDesc {
+    std::filesystem::path streets;  // the street rule file, resolved against the scene's folder
+    FileLoc streetsLoc;
+    // Where the town lies: map coordinates of the scene's CRS, or local metres without a
+    // <georeference>.
+    double centreE = 0, centreN = 0;
+    FileLoc centreLoc;
+    float radius = 500;
+    float majorWidth = 12, minorWidth = 7, majorShare = 0.25f;  // the street hierarchy's
+    std::string lots;  // the LotSubdivision of its blocks; empty: the rule file's, or perimeter lots
+    FileLoc lotsLoc;
+};
+
 struct CityDesc {
     FileLoc loc;
     std::filesystem::path file;  // resolved against the scene's folder; .osm: OpenStreetMap (docs/osm.md)
     FileLoc fileLoc;
+    std::optional<CityGrowthDesc> growth;  // a <generate>: no file, the rules grow the city
     // The rule file for a city that names none (an OpenStreetMap file never does); empty: none.
     std::filesystem::path rules;
     FileLoc rulesLoc;

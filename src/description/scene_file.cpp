@@ -72,6 +72,8 @@ class SceneFileReader {
             readBuildings(e);
         } else if (n == "city") {
             readCity(e);
+        } else if (n == "generate") {
+            readGenerate(e);
         } else if (n == "citygml") {
             readCityGml(e);
         } else if (n == "landscape") {
@@ -420,6 +422,33 @@ class SceneFileReader {
             city.rulesLoc = e.attributeLoc("rules");
         }
         readFileCrs(e, city.epsg, city.crsLoc);
+        city.seed = seedOverride(e);
+        readObjectId(e, city.loc);
+        e.checkLeaf();
+        scene_.cities.push_back(std::move(city));
+    }
+
+    void readGenerate(const XmlElement &e) {
+        CityDesc city;
+        city.loc = e.loc();
+        city.fileLoc = city.loc;
+        CityGrowthDesc &growth = city.growth.emplace();
+        growth.streets = pathAttribute(e, "streets");
+        growth.streetsLoc = e.attributeLoc("streets");
+        city.rules = pathAttribute(e, "rules");
+        city.rulesLoc = e.attributeLoc("rules");
+        std::vector<double> centre = e.has("centre") ? e.doubles("centre") : std::vector<double>{0, 0};
+        if (centre.size() != 2) e.failAt("centre", "centre takes two numbers, E N");
+        growth.centreE = centre[0], growth.centreN = centre[1];
+        growth.centreLoc = e.has("centre") ? e.attributeLoc("centre") : e.loc();
+        growth.radius = e.number("radius", growth.radius, 1, 50000);
+        growth.majorWidth = e.number("major_width", growth.majorWidth, 1, 100);
+        growth.minorWidth = e.number("minor_width", growth.minorWidth, 1, 100);
+        growth.majorShare = e.number("major_share", growth.majorShare, 0, 1);
+        if (e.has("lots")) {
+            growth.lots = e.string("lots");
+            growth.lotsLoc = e.attributeLoc("lots");
+        }
         city.seed = seedOverride(e);
         readObjectId(e, city.loc);
         e.checkLeaf();

@@ -69,6 +69,38 @@ TEST(GrowCity, TheSameSeedGrowsTheSameCity) {
     }
 }
 
+TEST(GrowCity, MainStreetsTakeTheMajorWidthTheOthersTheNetworks) {
+    std::vector<std::string> warnings;
+    CityGrowth growth = window(400, 2);
+    CityGrowthReport report;
+    CityData city = growCity(pattern("grid"), growth, warnings, &report);
+    EXPECT_EQ(city.streetWidth, growth.hierarchy.minorWidth);
+    size_t major = 0;
+    for (const CityStreet &street : city.streets) {
+        if (!street.width) continue;
+        EXPECT_EQ(*street.width, growth.hierarchy.majorWidth);
+        ++major;
+    }
+    EXPECT_EQ(major, report.majorStreets);
+    EXPECT_GT(major, city.streets.size() / 10);
+    EXPECT_LT(major, city.streets.size() / 2);
+}
+
+TEST(GrowCity, TheCentreMovesTheCity) {
+    std::vector<std::string> warnings;
+    CityGrowth growth = window(250, 4);
+    CityData here = growCity(pattern("radial"), growth, warnings);
+    growth.centre = {1200, -700};
+    CityData there = growCity(pattern("radial"), growth, warnings);
+    ASSERT_EQ(here.points.size(), there.points.size());
+    ASSERT_EQ(here.blocks.size(), there.blocks.size());
+    for (size_t i = 0; i < here.points.size(); ++i) {
+        EXPECT_NEAR(there.points[i].e, here.points[i].e + 1200, 1e-3);
+        EXPECT_NEAR(there.points[i].n, here.points[i].n - 700, 1e-3);
+    }
+    for (size_t b = 0; b < here.blocks.size(); ++b) EXPECT_EQ(there.blocks[b].sourceId, here.blocks[b].sourceId);
+}
+
 TEST(GrowCity, AGrowthStoppedByALimitSaysSo) {
     std::vector<std::string> warnings;
     CityGrowth growth = window(300, 1);

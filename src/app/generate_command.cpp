@@ -1,0 +1,162 @@
+// `veduta generate`: a town grown from a street L-system (issue 20, seed 002), written as a
+// CityData file that a <city> builds, with GIS layers of its streets, blocks and lots and a DOT
+// view of the street graph. docs/generate.md.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "app/command_options.h"
+#include "app/commands.h"
+#include "app/run_guarded.h"
+#include "app/shipped_files.h"
+#include "city/building_rules.h"
+#include "city/city_data_writer.h"
+#include "city/city_layers.h"
+#include "city/generate_city.h"
+#include "city/grown_city.h"
+#include "city/lot_subdivision.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "io/output_files.h"
+#include "streets/street_graph_dot.h"
+#include "streets/street_rule_file.h"
+
+namespace veduta {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct GenerateArgs {
+    std::string pattern = "grid";
+    std::vector<double> centre = {0, 0};
+    float radius = 500;
+    uint32_t seed = 0;
+    std::string crs;
+    std::string rules;
+    std::string lots;
+    StreetHierarchy hierarchy;
+    std::string output, geojson, gpkg, dot;
+    bool quiet = false;
+};
+
+// A street rule file: the file named, or one of the patterns in rules/streets/.
+fs::path patternFile(const std::string &pattern) {
+    if (fs::is_regular_file(pattern)) return pattern;
+    for (const char *shipped : {"grid", "organic", "radial"})
+        if (pattern == shipped) return shippedFile(fs::path("rules/streets") / (pattern + ".txt"), "--pattern");
+    throw InputError(FileLoc{"--pattern"},
+                     fmt::format("'{}' is no pattern: give grid, organic, radial or a street rule file", pattern));
+}
+
+// How the file was made, for its comment (which XML does not let hold "--").
+std::string provenance(const GenerateArgs &args) {
+    return fmt::format("grown by veduta generate: pattern {}, centre {} {}{}, radius {} m, seed {}", args.pattern,
+                       args.centre[0], args.centre[1], args.crs.empty() ? "" : " of " + args.crs, args.radius,
+                       args.seed);
+}
+
+size_t lotCount(const CityData &city) {
+    size_t lots = 0;
+    for (const CityBlock &block : city.blocks) lots += block.lots.size();
+    return lots;
+}
+
+void writeOutputs(const GenerateArgs &args, const CityData &city, const CityGrowthReport &report, int epsg) {
+    std::vector<fs::path> files = {args.output, args.dot, args.gpkg};
+    if (!args.geojson.empty())
+        for (const fs::path &file : cityLayerFiles(args.geojson)) files.push_back(file);
+    for (const fs::path &file : files)
+        if (!file.empty()) prepareOutputFile(file);
+    OutputSet outputs(files);
+    // The growth ran at the rules' origin; the files place it at the centre given.
+    MapOffset offset{args.centre[0], args.centre[1]};
+    writeCityData(city, {offset, provenance(args)}, args.output);
+    if (!args.gpkg.empty()) writeCityLayers(city, {offset, epsg}, args.gpkg);
+    if (!args.geojson.empty()) writeCityLayers(city, {offset, epsg}, args.geojson);
+    if (!args.dot.empty()) {
+        std::string dot = toDot(report.graph, CityGrowth().constraints.heightTolerance);
+        writeBytesAtomically(args.dot, dot.data(), dot.size());
+    }
+    outputs.commit();
+}
+
+void runGenerate(const GenerateArgs &args) {
+    auto start = std::chrono::steady_clock::now();
+    int epsg = epsgOption(args.crs, "--crs");
+    fs::path rules = args.rules.empty() ? shippedBuildingRules("--rules") : fs::path(args.rules);
+    if (!fs::is_regular_file(rules))
+        throw InputError(FileLoc{"--rules"}, fmt::format("cannot read the rule file {}", rules.string()));
+    StreetRuleSet streetRules = readStreetRuleFile(patternFile(args.pattern));
+    BuildingRules buildingRules(rules);
+
+    CityGrowth growth;
+    growth.radius = args.radius;
+    growth.seed = args.seed;
+    growth.hierarchy = args.hierarchy;
+    std::vector<std::string> warnings;
+    CityGrowthReport report;
+    CityData city = growCity(streetRules, growth, warnings, &report);
+    city.ruleFiles = {fs::absolute(rules)};
+    if (!args.lots.empty()) {
+        city.settings["LotSubdivision"] = settingValue(args.lots, FileLoc{"--lots"});
+        lotSettingsFrom(SettingsStack({&city.settings}));  // an unknown name is an error even without blocks
+    }
+    cutLots(city, buildingRules.rules.settings, args.seed);
+    writeOutputs(args, city, report, epsg);
+
+    for (const std::string &w : warnings) std::fprintf(stderr, "veduta: warning: %s\n", w.c_str());
+    if (args.quiet) return;
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("expansions: %zu\nstreets: %zu\nmajor_streets: %zu\nblocks: %zu\nlots: %zu\nseconds: %.3f\n",
+                report.growth.expansions, city.streets.size(), report.majorStreets, city.blocks.size(), lotCount(city),
+                seconds);
+}
+
+}  // namespace
+
+void addGenerateCommand(CLI::App &app, int &exitCode) {
+    auto args = std::make_shared<GenerateArgs>();
+    CLI::App *cmd =
+        app.add_subcommand("generate",
+                           "Grow a town from a street L-system (grid, organic, radial or a rule file) and write it as "
+                           "CityData, with GeoJSON/GeoPackage layers and a DOT graph");
+    cmd->add_option("--pattern", args->pattern, "grid, organic, radial (rules/streets/) or a street rule file")
+        ->capture_default_str();
+    cmd->add_option("--centre", args->centre, "Where the town lies: E N, map coordinates of --crs (else local metres)")
+        ->expected(2)
+        ->capture_default_str();
+    cmd->add_option("--radius", args->radius, "Radius of the window the streets grow in, metres")
+        ->check(CLI::Range(1.0f, 50000.0f))
+        ->capture_default_str();
+    cmd->add_option("--seed", args->seed, "Seed of every random choice")->capture_default_str();
+    cmd->add_option("--crs", args->crs, "EPSG:<code> of the centre and the files' coordinates (a projected CRS)");
+    cmd->add_option("--rules", args->rules, "Building rule file the CityData names (default: the Gründerzeit rules)");
+    cmd->add_option("--lots", args->lots,
+                    "LotSubdivision of every block: perimeter, recursive, obb, skeleton, schrader");
+    cmd->add_option("--major-width", args->hierarchy.majorWidth, "Width of main streets, metres")
+        ->check(CLI::Range(1.0f, 100.0f))
+        ->capture_default_str();
+    cmd->add_option("--minor-width", args->hierarchy.minorWidth, "Width of the other streets, metres")
+        ->check(CLI::Range(1.0f, 100.0f))
+        ->capture_default_str();
+    cmd->add_option("--major-share", args->hierarchy.majorShare, "Share of the street length that is main streets")
+        ->check(CLI::Range(0.0f, 1.0f))
+        ->capture_default_str();
+    cmd->add_option("-o,--output", args->output, "CityData file to write (a <city file> loads it)")
+        ->required()
+        ->check(fileWithExtension(".xml"));
+    cmd->add_option("--geojson", args->geojson, "Folder for streets.geojson, blocks.geojson and lots.geojson");
+    cmd->add_option("--gpkg", args->gpkg, "GeoPackage with the layers streets, blocks and lots")
+        ->check(fileWithExtension(".gpkg"));
+    cmd->add_option("--dot", args->dot, "GraphViz file of the street graph (neato -n2 draws it to scale)");
+    cmd->add_flag("-q,--quiet", args->quiet, "No summary");
+    cmd->callback([args, &exitCode] { exitCode = runGuarded([&] { runGenerate(*args); }); });
+}
+
+}  // namespace veduta

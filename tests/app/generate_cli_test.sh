@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# `veduta generate` (issue 20): a grown town written as CityData, GeoJSON, a GeoPackage and DOT;
+# the CityData loads as a <city>; the same seed writes the same files; bad input exits 1 and a
+# bad command line 2, and neither touches what was written before.
+# Usage: generate_cli_test.sh VEDUTA_BINARY
+set -u
+veduta=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+. "$(dirname "$0")/test_lib.sh"
+
+run generate --help
+check "help" rc_is 0
+check "help names the patterns" out_has "grid, organic, radial"
+
+run generate --pattern grid --radius 200 --seed 3 -o "$work/town.xml" --geojson "$work/gis" \
+    --gpkg "$work/town.gpkg" --dot "$work/streets.dot"
+check "grid town" rc_is 0
+check "summary" out_has "blocks: "
+check "lots counted" bash -c "grep -q '^lots: [1-9]' '$work/out'"
+for f in town.xml gis/streets.geojson gis/blocks.geojson gis/lots.geojson town.gpkg streets.dot; do
+    check "wrote $f" test -s "$work/$f"
+done
+check "dot graph" bash -c "head -1 '$work/streets.dot' | grep -qx 'graph streets {'"
+check "the town names its rules" grep -q "<Rulefile>.*FacadeStructure.xml</Rulefile>" "$work/town.xml"
+check "the town says how it was made" grep -q "<!-- grown by veduta generate: pattern grid, centre 0 0, radius 200 m, seed 3 -->" "$work/town.xml"
+
+# Relative to the working folder, as users type it.
+(cd "$work" && "$veduta" generate --pattern grid --radius 200 --seed 3 -o again.xml -q >"$work/out" 2>"$work/err")
+echo $? >"$work/rc"
+check "again" rc_is 0
+check "quiet" test ! -s "$work/out"
+check "the same seed writes the same town" cmp -s "$work/town.xml" "$work/again.xml"
+run generate --pattern grid --radius 200 --seed 4 -o "$work/other.xml" -q
+check "another seed writes another town" bash -c "! cmp -s '$work/town.xml' '$work/other.xml'"
+
+# The CityData is a <city>: it renders.
+cat >"$work/scene.xml" <<XML
+<scene version="1">
+  <camera position="0 -400 300" look_at="0 0 0" up="0 0 1" fov="50" resolution="32 18"/>
+  <city file="town.xml" seed="1"/>
+</scene>
+XML
+run preview "$work/scene.xml" -q -o "$work/town.png"
+check "the town previews" rc_is 0
+check "preview written" test -s "$work/town.png"
+
+# In map coordinates: the CityData and the layers in the CRS given.
+run generate --pattern radial --radius 150 --centre 487000 5425000 --crs EPSG:25832 -o "$work/utm.xml" \
+    --geojson "$work/utm" -q
+check "utm town" rc_is 0
+check "utm eastings" grep -q 'e="48[67][0-9][0-9][0-9]' "$work/utm.xml"
+check "geojson crs" grep -q "EPSG::25832" "$work/utm/streets.geojson"
+
+# Bad input: exit 1, nothing written, the older file kept.
+cp "$work/town.xml" "$work/kept.xml"
+run generate --pattern hexagons -o "$work/town.xml"
+check "unknown pattern exits 1" rc_is 1
+check "unknown pattern says so" err_has "'hexagons' is no pattern"
+check "older file kept" cmp -s "$work/town.xml" "$work/kept.xml"
+printf 'o: S(80)\np1: S(len) -> F(len' >"$work/bad.txt"
+run generate --pattern "$work/bad.txt" -o "$work/town.xml"
+check "bad rule file exits 1" rc_is 1
+check "bad rule file names its place" err_has "bad.txt:2:"
+run generate --lots hexagons -o "$work/town.xml" --radius 100
+check "unknown lots exits 1" rc_is 1
+check "unknown lots names the option" err_has "--lots"
+check "older file still kept" cmp -s "$work/town.xml" "$work/kept.xml"
+: >"$work/plain"
+run generate --radius 100 -o "$work/town.xml" --gpkg "$work/plain/town.gpkg"
+check "unwritable output exits 3" rc_is 3
+check "older file kept after a failed write" cmp -s "$work/town.xml" "$work/kept.xml"
+
+# A bad command line: exit 2.
+run generate --radius 0 -o "$work/x.xml"
+check "radius 0 exits 2" rc_is 2
+run generate --centre 1 -o "$work/x.xml"
+check "one centre number exits 2" rc_is 2
+run generate
+check "no output exits 2" rc_is 2
+
+summary generate_cli
