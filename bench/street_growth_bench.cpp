@@ -5,7 +5,7 @@
 // grows the word graph and the street graph from the initial word. Then a town of 10 km² (a
 // window of radius 1784 m) of the grid: grown with its blocks (growCity), and grown and built
 // with lots and Gründerzeit buildings (generateCity), which the issue asks for in ≤ 10 s on 2
-// cores.
+// cores (docs/performance.md, "Building a city").
 //
 //   build/release/bench/bench_street_growth --benchmark_repetitions=5
 #include <cmath>

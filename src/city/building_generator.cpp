@@ -14,6 +14,33 @@
 
 namespace veduta {
 
+namespace {
+
+// The mesh a building's walls and roof are collected in, and its facades' terminals: each
+// thread's, reused from building to building (welding copies the mesh out without spare room),
+// so that they do not grow afresh each time.
+struct BuildingBuffers {
+    Mesh baked;
+    std::vector<Terminal> terminals;
+};
+
+BuildingBuffers &threadBuffers() {
+    thread_local BuildingBuffers buffers;
+    return buffers;
+}
+
+Mesh &startBakedMesh() {
+    Mesh &baked = threadBuffers().baked;
+    for (auto *v : {&baked.positions, &baked.normals, &baked.tangents}) v->clear();
+    baked.uvs.clear();
+    baked.bitangentSigns.clear();
+    baked.indices.clear();
+    baked.triangleMaterials.clear();
+    return baked;
+}
+
+}  // namespace
+
 size_t BuildingGenerator::PrototypeKeyHash::operator()(const PrototypeKey &key) const {
     uint32_t h = hashValues({key.model});
     for (MaterialId m : key.materials) h = mix32(h ^ m);
@@ -45,12 +72,14 @@ PrototypeId BuildingGenerator::prototypeFor(const PrototypeKey &key) {
     return id;
 }
 
-BuildingGenerator::PrototypeKey BuildingGenerator::keyFor(const Terminal &terminal, const MaterialSet &materials) {
+BuildingGenerator::PrototypeKey BuildingGenerator::keyFor(const Terminal &terminal,
+                                                          const MaterialSet &materials) const {
     const Asset &model = assets_[terminal.model];
     PrototypeKey key;
     key.model = terminal.model;
     for (size_t s = 0; s < model.surfaces.size(); ++s) key.materials[s] = materials[model.surfaces[s]];
     if (terminal.texture) {
+        std::lock_guard lock(textureMutex_);
         auto [it, added] = textureChoices_.try_emplace(terminal.texture);
         if (added) it->second = palette_.forTexture(*terminal.texture);
         key.materials[0] = it->second.in(materials);
@@ -78,7 +107,7 @@ void BuildingGenerator::addWallPiece(const Asset &model, const Transform &modelT
 // The roof closes the walls at the eaves: buildRoof's slopes pass over the wall tops there,
 // overhang or not (roof_shapes.h).
 void BuildingGenerator::addRoof(const BuildingSpec &building, const BuildingContext &context, Mesh &baked,
-                                std::vector<std::string> &warnings) const {
+                                MadeBuilding &made, std::vector<std::string> &warnings) const {
     const Footprint &footprint = building.footprint;
     RoofOptions options = roofOptionsFor(footprint, building.settings, context.heights, seed_, building.id);
     RoofResult roof = buildRoof({footprint.points, {}, footprint.base}, context.heights.building, options);
@@ -91,26 +120,15 @@ void BuildingGenerator::addRoof(const BuildingSpec &building, const BuildingCont
     }
     float ridge = footprint.base + context.heights.building;
     for (const Vec3f &p : roof.mesh.positions) ridge = std::max(ridge, p.z);
-    builder_.recordBuilding({building.id,
-                             footprint.base,
-                             footprint.base + context.heights.building,
-                             ridge,
-                             std::string(roofTypeName(roof.built)),
-                             {footprint.points}});
+    made.record = BuildingRecord{building.id,
+                                 footprint.base,
+                                 footprint.base + context.heights.building,
+                                 ridge,
+                                 std::string(roofTypeName(roof.built)),
+                                 {footprint.points}};
     for (MaterialId &m : roof.mesh.triangleMaterials)
         m = m == RoofGableWall ? context.materials[MaterialCategory::Wall] : context.materials[MaterialCategory::Roof];
     baked.append(roof.mesh, Transform{});
-}
-
-// The mesh a building's walls and roof are collected in: one buffer reused from building to
-// building (welding copies it out without spare room), so that it does not grow afresh each time.
-Mesh &BuildingGenerator::startBakedMesh() {
-    for (auto *v : {&baked_.positions, &baked_.normals, &baked_.tangents}) v->clear();
-    baked_.uvs.clear();
-    baked_.bitangentSigns.clear();
-    baked_.indices.clear();
-    baked_.triangleMaterials.clear();
-    return baked_;
 }
 
 BuildingGenerator::BuildingContext BuildingGenerator::contextFor(uint32_t id, ObjectId objectId,
@@ -120,12 +138,13 @@ BuildingGenerator::BuildingContext BuildingGenerator::contextFor(uint32_t id, Ob
 }
 
 void BuildingGenerator::emitFacade(const BuildingContext &building, const StartShape &start, float alongPerimeter,
-                                   Mesh &baked, BuildingStats &stats, std::vector<std::string> &warnings) {
-    terminals_.clear();
+                                   Mesh &baked, MadeBuilding &made, std::vector<std::string> &warnings) const {
+    std::vector<Terminal> &terminals = threadBuffers().terminals;
+    terminals.clear();
     if (grammar_.findRule(start.symbol)) {
         try {
             deriveFacade(grammar_, start.symbol, {start.width, start.height}, building.properties, {seed_, building.id},
-                         terminals_, warnings, limits_);
+                         terminals, warnings, limits_);
         } catch (const InputError &e) {
             // A limit is mostly hit by a facade's size, not by the rules.
             throw InputError(e.loc(),
@@ -142,10 +161,10 @@ void BuildingGenerator::emitFacade(const BuildingContext &building, const StartS
         wall.model = plainWall_;
         wall.shapeToFacade = Transform::translate({start.width / 2, start.height / 2, 0});
         wall.size = {start.width, start.height};
-        terminals_.push_back(wall);
+        terminals.push_back(wall);
     }
-    stats.terminals += terminals_.size();
-    for (const Terminal &terminal : terminals_) {
+    made.stats.terminals += terminals.size();
+    for (const Terminal &terminal : terminals) {
         const Asset &model = assets_[terminal.model];
         Transform modelToFacadeFrame = modelToFacade(model, terminal);
         PrototypeKey key = keyFor(terminal, building.materials);
@@ -153,37 +172,58 @@ void BuildingGenerator::emitFacade(const BuildingContext &building, const StartS
             addWallPiece(model, modelToFacadeFrame, start.facadeToWorld, alongPerimeter, terminal, key, baked);
             continue;
         }
-        Instance instance;
-        instance.objectToWorld = start.facadeToWorld * modelToFacadeFrame;
-        instance.prototype = prototypeFor(key);
-        instance.objectId = building.objectId;
-        instance.buildingId = building.id;
-        builder_.addInstance(instance);
-        ++stats.instances;
+        made.instances.push_back({start.facadeToWorld * modelToFacadeFrame, key});
+        ++made.stats.instances;
     }
 }
 
-BuildingStats BuildingGenerator::generate(const BuildingSpec &spec, std::vector<std::string> &warnings) {
+BuildingGenerator::MadeBuilding BuildingGenerator::make(const BuildingSpec &spec,
+                                                        std::vector<std::string> &warnings) const {
+    MadeBuilding made;
+    made.objectId = spec.objectId;
+    made.id = spec.id;
     BuildingContext building = contextFor(spec.id, spec.objectId, spec.settings);
-    BuildingStats stats;
     Mesh &baked = startBakedMesh();
     for (const StartShape &start : makeStartShapes(spec.footprint, building.heights.building))
-        emitFacade(building, start, spec.footprint.perimeterBefore(start.edge), baked, stats, warnings);
-    addRoof(spec, building, baked, warnings);
-    stats.bakedTriangles = baked.triangleCount();
-    builder_.addWorldMesh(weldVertices(baked), spec.objectId, spec.id);
-    return stats;
+        emitFacade(building, start, spec.footprint.perimeterBefore(start.edge), baked, made, warnings);
+    addRoof(spec, building, baked, made, warnings);
+    made.stats.bakedTriangles = baked.triangleCount();
+    made.mesh = weldVertices(baked);
+    return made;
+}
+
+BuildingStats BuildingGenerator::add(MadeBuilding &&made) {
+    for (const MadeBuilding::Placement &placement : made.instances) {
+        Instance instance;
+        instance.objectToWorld = placement.objectToWorld;
+        instance.prototype = prototypeFor(placement.prototype);
+        instance.objectId = made.objectId;
+        instance.buildingId = made.id;
+        builder_.addInstance(instance);
+    }
+    // A building has its mesh and record; a lone facade has no record, and a mesh only where
+    // its rules baked walls.
+    bool building = made.record.has_value();
+    if (building) builder_.recordBuilding(std::move(*made.record));
+    if (building || made.mesh.triangleCount() > 0) builder_.addWorldMesh(std::move(made.mesh), made.objectId, made.id);
+    return made.stats;
+}
+
+BuildingStats BuildingGenerator::generate(const BuildingSpec &spec, std::vector<std::string> &warnings) {
+    return add(make(spec, warnings));
 }
 
 BuildingStats BuildingGenerator::generateFacade(const FacadeSpec &spec, std::vector<std::string> &warnings) {
     BuildingContext building = contextFor(spec.id, spec.objectId, spec.settings);
     StartShape start{spec.startSymbol, 0, spec.width, spec.height, spec.facadeToWorld};
-    BuildingStats stats;
+    MadeBuilding made;
+    made.objectId = spec.objectId;
+    made.id = spec.id;
     Mesh &baked = startBakedMesh();
-    emitFacade(building, start, 0, baked, stats, warnings);
-    stats.bakedTriangles = baked.triangleCount();
-    if (baked.triangleCount() > 0) builder_.addWorldMesh(weldVertices(baked), spec.objectId, spec.id);
-    return stats;
+    emitFacade(building, start, 0, baked, made, warnings);
+    made.stats.bakedTriangles = baked.triangleCount();
+    made.mesh = weldVertices(baked);
+    return add(std::move(made));
 }
 
 }  // namespace veduta

@@ -7,6 +7,8 @@
 
 #include <array>
 #include <cstdint>
+#include <mutex>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -60,21 +62,45 @@ void buildAt(const FileLoc &loc, Build &&build) {
 
 class BuildingGenerator {
   public:
-    BuildingGenerator(const Grammar &grammar, const AssetLibrary &assets, RenderSceneBuilder &builder, uint32_t seed,
-                      const DerivationLimits &limits = {});
-
-    // Emits one building into the builder. Warnings are appended as "file:line:col: message";
-    // problems in the rules or settings throw InputError.
-    BuildingStats generate(const BuildingSpec &building, std::vector<std::string> &warnings);
-    BuildingStats generateFacade(const FacadeSpec &facade, std::vector<std::string> &warnings);
-
-  private:
     static constexpr size_t kMaxSurfaces = 4;  // checked against the library when constructed
+    // A model in a building's materials: one prototype of the scene.
     struct PrototypeKey {
         uint32_t model = 0;
         std::array<MaterialId, kMaxSurfaces> materials{};
         bool operator==(const PrototypeKey &) const = default;
     };
+
+    // A building made and not yet in the scene: what generate() adds to the builder.
+    struct MadeBuilding {
+        ObjectId objectId = 0;
+        uint32_t id = 0;
+        Mesh mesh;  // walls and roof, welded
+        struct Placement {
+            Transform objectToWorld;
+            PrototypeKey prototype;
+        };
+        std::vector<Placement> instances;      // the models, in the order the rules placed them
+        std::optional<BuildingRecord> record;  // none for a lone facade
+        BuildingStats stats;
+    };
+
+    BuildingGenerator(const Grammar &grammar, const AssetLibrary &assets, RenderSceneBuilder &builder, uint32_t seed,
+                      const DerivationLimits &limits = {});
+
+    // Emits one building into the builder: add(make(building)). Warnings are appended as
+    // "file:line:col: message"; problems in the rules or settings throw InputError.
+    BuildingStats generate(const BuildingSpec &building, std::vector<std::string> &warnings);
+    BuildingStats generateFacade(const FacadeSpec &facade, std::vector<std::string> &warnings);
+
+    // The building, made without touching the builder: many threads may make buildings at
+    // once (each with warnings of its own) while nothing adds to the builder. Throws InputError
+    // as generate does, with the warnings before the error appended.
+    MadeBuilding make(const BuildingSpec &building, std::vector<std::string> &warnings) const;
+    // Adds a made building to the builder: its prototypes (each new one when first used, so
+    // buildings added in one order give one scene), instances, mesh and record.
+    BuildingStats add(MadeBuilding &&building);
+
+  private:
     struct PrototypeKeyHash {
         size_t operator()(const PrototypeKey &key) const;
     };
@@ -89,13 +115,12 @@ class BuildingGenerator {
     };
     BuildingContext contextFor(uint32_t id, ObjectId objectId, const SettingsStack &settings) const;
     void emitFacade(const BuildingContext &building, const StartShape &start, float alongPerimeter, Mesh &baked,
-                    BuildingStats &stats, std::vector<std::string> &warnings);
-    Mesh &startBakedMesh();
+                    MadeBuilding &made, std::vector<std::string> &warnings) const;
     PrototypeId prototypeFor(const PrototypeKey &key);
-    PrototypeKey keyFor(const Terminal &terminal, const MaterialSet &materials);
+    PrototypeKey keyFor(const Terminal &terminal, const MaterialSet &materials) const;
     void addWallPiece(const Asset &model, const Transform &modelToFacade, const Transform &facadeToWorld,
                       float alongPerimeter, const Terminal &terminal, const PrototypeKey &key, Mesh &baked) const;
-    void addRoof(const BuildingSpec &building, const BuildingContext &context, Mesh &baked,
+    void addRoof(const BuildingSpec &building, const BuildingContext &context, Mesh &baked, MadeBuilding &made,
                  std::vector<std::string> &warnings) const;
 
     const Grammar &grammar_;
@@ -106,9 +131,9 @@ class BuildingGenerator {
     DerivationLimits limits_;
     uint32_t plainWall_;  // Wall0, for walls the rules have no start rule for
     std::unordered_map<PrototypeKey, PrototypeId, PrototypeKeyHash> prototypes_;
-    std::unordered_map<const std::string *, MaterialPalette::TextureChoice> textureChoices_;
-    std::vector<Terminal> terminals_;  // reused from building to building
-    Mesh baked_;                       // likewise
+    // What each texture of the rules stands for, found when first needed by any thread.
+    mutable std::mutex textureMutex_;
+    mutable std::unordered_map<const std::string *, MaterialPalette::TextureChoice> textureChoices_;
 };
 
 }  // namespace veduta

@@ -2,12 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <unordered_map>
 
 #include <fmt/format.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
 
 #include "city/assets.h"
 #include "city/building_generator.h"
@@ -154,37 +158,111 @@ void warnOfSharedId(std::unordered_map<uint32_t, FileLoc> &lotOfId, uint32_t id,
                     lot.toString(), id, first->second.toString()));
 }
 
+// Every block's lots, cut on all cores: a block's lots depend on the block, the streets and the
+// seed alone, so they are the same on any number of threads. An error is the first block's in
+// order, as one thread would meet it.
+std::vector<std::vector<IdentifiedLot>> lotsOfBlocks(const CityData &data, const StreetNetwork &streets,
+                                                     const SettingsMap &ruleFileSettings, uint32_t seed) {
+    std::vector<std::vector<IdentifiedLot>> lots(data.blocks.size());
+    std::vector<std::exception_ptr> errors(data.blocks.size());
+    tbb::parallel_for(size_t(0), data.blocks.size(), [&](size_t b) {
+        try {
+            const CityBlock &block = data.blocks[b];
+            lots[b] = lotsOf(block, streets, settingsFor(data, block, nullptr, ruleFileSettings), seed);
+        } catch (...) {
+            errors[b] = std::current_exception();
+        }
+    });
+    for (const std::exception_ptr &error : errors)
+        if (error) std::rethrow_exception(error);
+    return lots;
+}
+
+// A lot's building, ready to be made: its spec, its rule file, where the input describes it, and
+// the warnings it has had so far.
+struct PlannedBuilding {
+    BuildingSpec spec;
+    RuleFileBuilder *rules = nullptr;
+    FileLoc loc;
+    std::vector<std::string> warnings;
+};
+
+std::vector<PlannedBuilding> planBuildings(const CityData &data, std::vector<std::vector<IdentifiedLot>> &lots,
+                                           uint32_t seed, ObjectId objectId, const LandscapeGround *landscape,
+                                           const std::vector<std::unique_ptr<RuleFileBuilder>> &ruleFiles) {
+    std::vector<PlannedBuilding> planned;
+    std::unordered_map<uint32_t, FileLoc> lotOfId;
+    for (size_t b = 0; b < data.blocks.size(); ++b) {
+        const CityBlock &block = data.blocks[b];
+        for (size_t l = 0; l < lots[b].size(); ++l) {
+            PlannedBuilding &p = planned.emplace_back();
+            uint32_t id = cityBuildingId(objectId, lots[b][l].identity);
+            const CityLot *given = block.lots.empty() ? nullptr : &block.lots[l];
+            p.loc = given ? given->loc : block.loc;
+            warnOfSharedId(lotOfId, id, p.loc, p.warnings);
+            // Bilke 2009 picks one of several rule files at random (L1276).
+            uint32_t pick = hashValues({seed, id, streamTag(RandomStream::RuleFileChoice)});
+            p.rules = ruleFiles[pick % ruleFiles.size()].get();
+            p.spec.id = id;
+            p.spec.objectId = objectId;
+            p.spec.footprint = std::move(lots[b][l].footprint);
+            if (landscape) seatOnGround(p.spec.footprint, landscape->ground, p.loc, id, p.warnings);
+            p.spec.settings = settingsFor(data, block, given, p.rules->loaded.rules.settings);
+        }
+    }
+    return planned;
+}
+
+// Makes the buildings on all cores, a batch at a time (so that what is made waits for the
+// builder only briefly), and adds them to the builder in their order: the scene is the same
+// for any number of threads, the first error in order is the one thrown, with every warning
+// before it.
+void buildAll(std::vector<PlannedBuilding> &planned, const LandscapeGround *landscape, RenderSceneBuilder &builder,
+              std::vector<std::string> &warnings) {
+    constexpr size_t kBatch = 256;
+    for (size_t first = 0; first < planned.size(); first += kBatch) {
+        size_t end = std::min(planned.size(), first + kBatch);
+        std::vector<std::optional<BuildingGenerator::MadeBuilding>> made(end - first);
+        std::vector<std::exception_ptr> errors(end - first);
+        tbb::parallel_for(first, end, [&](size_t i) {
+            try {
+                made[i - first] = planned[i].rules->generator.make(planned[i].spec, planned[i].warnings);
+            } catch (...) {
+                errors[i - first] = std::current_exception();
+            }
+        });
+        for (size_t i = first; i < end; ++i) {
+            PlannedBuilding &p = planned[i];
+            warnings.insert(warnings.end(), p.warnings.begin(), p.warnings.end());
+            if (errors[i - first]) buildAt(p.loc, [&] { std::rethrow_exception(errors[i - first]); });
+            p.rules->generator.add(std::move(*made[i - first]));
+            if (landscape) addPlinth(p.spec, builder);
+        }
+    }
+}
+
 uint32_t buildCity(const CityData &data, uint32_t seed, ObjectId objectId, const FileLoc &fileLoc,
                    const LandscapeGround *landscape, RenderSceneBuilder &builder, std::vector<std::string> &warnings) {
     warnings.insert(warnings.end(), data.warnings.begin(), data.warnings.end());
     if (landscape) warnIfHeightsIgnored(data, fileLoc, warnings);
     auto ruleFiles = readRuleFiles(fileLoc, data, seed, builder, warnings);
     StreetNetwork streets = streetNetworkOf(data);
-    addStreets(streets, landscape, objectId, builder);
-    std::unordered_map<uint32_t, FileLoc> lotOfId;
-    uint32_t built = 0;
-    for (const CityBlock &block : data.blocks) {
-        SettingsStack blockSettings = settingsFor(data, block, nullptr, ruleFiles.front()->loaded.rules.settings);
-        std::vector<IdentifiedLot> lots = lotsOf(block, streets, blockSettings, seed);
-        for (size_t l = 0; l < lots.size(); ++l, ++built) {
-            uint32_t id = cityBuildingId(objectId, lots[l].identity);
-            const CityLot *given = block.lots.empty() ? nullptr : &block.lots[l];
-            warnOfSharedId(lotOfId, id, given ? given->loc : block.loc, warnings);
-            // Bilke 2009 picks one of several rule files at random (L1276).
-            uint32_t pick = hashValues({seed, id, streamTag(RandomStream::RuleFileChoice)});
-            RuleFileBuilder &rules = *ruleFiles[pick % ruleFiles.size()];
-            BuildingSpec spec;
-            spec.id = id;
-            spec.objectId = objectId;
-            spec.footprint = std::move(lots[l].footprint);
-            if (landscape)
-                seatOnGround(spec.footprint, landscape->ground, given ? given->loc : block.loc, id, warnings);
-            spec.settings = settingsFor(data, block, given, rules.loaded.rules.settings);
-            buildAt(given ? given->loc : block.loc, [&] { rules.generator.generate(spec, warnings); });
-            if (landscape) addPlinth(spec, builder);
-        }
+    // The street surface while the lots are cut: neither reads what the other makes, and the
+    // lots do not touch the builder. A street error comes first, as it did one after the other.
+    std::vector<std::vector<IdentifiedLot>> lots;
+    std::exception_ptr lotError;
+    tbb::task_group streetWork;
+    streetWork.run([&] { addStreets(streets, landscape, objectId, builder); });
+    try {
+        lots = lotsOfBlocks(data, streets, ruleFiles.front()->loaded.rules.settings, seed);
+    } catch (...) {
+        lotError = std::current_exception();
     }
-    return built;
+    streetWork.wait();
+    if (lotError) std::rethrow_exception(lotError);
+    std::vector<PlannedBuilding> planned = planBuildings(data, lots, seed, objectId, landscape, ruleFiles);
+    buildAll(planned, landscape, builder, warnings);
+    return uint32_t(planned.size());
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 
 namespace veduta {
@@ -89,6 +90,21 @@ struct WeldKey {
     auto operator<=>(const WeldKey &) const = default;
 };
 
+// The key's fields mixed into 64 bits (splitmix64's finaliser after each).
+uint64_t hashOf(const WeldKey &key) {
+    uint64_t h = 0;
+    auto add = [&h](uint64_t x) {
+        h ^= x + 0x9e3779b97f4a7c15ull;
+        h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
+        h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
+        h ^= h >> 31;
+    };
+    for (int64_t p : key.position) add(uint64_t(p));
+    for (int32_t n : key.normal) add(uint32_t(n));
+    for (int32_t u : key.uv) add(uint32_t(u));
+    return h;
+}
+
 int64_t onGrid(float x, float step) { return int64_t(std::floor(double(x) / step + 0.5)); }
 
 WeldKey weldKey(const Mesh &m, size_t v, bool withNormals, bool withUvs) {
@@ -105,30 +121,31 @@ WeldKey weldKey(const Mesh &m, size_t v, bool withNormals, bool withUvs) {
 Mesh weldVertices(const Mesh &mesh) {
     size_t count = mesh.positions.size();
     bool withNormals = hasNormals(mesh), withUvs = mesh.uvs.size() == count && count > 0;
-    std::vector<WeldKey> keys(count);
-    std::vector<uint32_t> order(count), first(count), remap(count);
-    for (size_t v = 0; v < count; ++v) keys[v] = weldKey(mesh, v, withNormals, withUvs);
-    // Sorting by key, then by index, puts each group together with its first vertex in front.
-    for (size_t v = 0; v < count; ++v) order[v] = uint32_t(v);
-    std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
-        auto c = keys[a] <=> keys[b];
-        return c != 0 ? c < 0 : a < b;
-    });
-    for (size_t i = 0; i < count; ++i)
-        first[order[i]] = i > 0 && keys[order[i]] == keys[order[i - 1]] ? first[order[i - 1]] : order[i];
-
-    Mesh welded;
-    size_t kept = 0;
-    for (size_t v = 0; v < count; ++v) kept += first[v] == v;
-    welded.positions.reserve(kept);
-    if (withNormals) welded.normals.reserve(kept);
-    if (withUvs) welded.uvs.reserve(kept);
+    // An open-addressing table from key to welded vertex, at most half full: each vertex finds
+    // the first one of its key in a probe or two, where sorting the keys took most of the time
+    // of baking a building.
+    size_t capacity = std::bit_ceil(2 * count + 2), mask = capacity - 1;
+    constexpr uint32_t kEmpty = UINT32_MAX;
+    std::vector<uint32_t> slots(capacity, kEmpty), remap(count), kept;
+    std::vector<WeldKey> keptKeys;
     for (size_t v = 0; v < count; ++v) {
-        if (first[v] != v) {
-            remap[v] = remap[first[v]];
-            continue;
+        WeldKey key = weldKey(mesh, v, withNormals, withUvs);
+        size_t slot = hashOf(key) & mask;
+        while (slots[slot] != kEmpty && keptKeys[slots[slot]] != key) slot = (slot + 1) & mask;
+        if (slots[slot] == kEmpty) {
+            // The first vertex of its key is kept, in the order the vertices come.
+            slots[slot] = uint32_t(kept.size());
+            kept.push_back(uint32_t(v));
+            keptKeys.push_back(key);
         }
-        remap[v] = uint32_t(welded.positions.size());
+        remap[v] = slots[slot];
+    }
+    // Copied out without spare room: a city's buildings keep their meshes.
+    Mesh welded;
+    welded.positions.reserve(kept.size());
+    if (withNormals) welded.normals.reserve(kept.size());
+    if (withUvs) welded.uvs.reserve(kept.size());
+    for (uint32_t v : kept) {
         welded.positions.push_back(mesh.positions[v]);
         if (withNormals) welded.normals.push_back(mesh.normals[v]);
         if (withUvs) welded.uvs.push_back(mesh.uvs[v]);
