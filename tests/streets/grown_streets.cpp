@@ -4,10 +4,20 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <sstream>
 
 #include "streets/street_rule_file.h"
+#include "test_paths.h"
 
 namespace veduta::test {
+
+std::string patternText(const std::string &name) {
+    std::ifstream file(sourceFile("rules/streets/" + name + ".txt"));
+    std::stringstream text;
+    text << file.rdbuf();
+    return text.str();
+}
 
 GrownStreets::GrownStreets(const std::string &rulesText, RandomDraws &draws) :
     rules(parseStreetRules(rulesText, "rules.txt")),

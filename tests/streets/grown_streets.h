@@ -11,6 +11,9 @@
 
 namespace veduta::test {
 
+// The text of a pattern shipped in rules/streets/ ("grid", "organic", "radial").
+std::string patternText(const std::string &name);
+
 // A rule set grown with the constraints inside a window round the origin.
 struct GrownStreets {
     GrownStreets(const std::string &rulesText, RandomDraws &draws);

@@ -4,12 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <numbers>
-#include <sstream>
 
 #include "streets/grown_streets.h"
-#include "test_paths.h"
 
 namespace veduta {
 namespace {
@@ -93,13 +90,6 @@ TEST(StreetHierarchyClasses, TheLongestStrokeIsTheMainStreet) {
     EXPECT_EQ(std::count(classes.begin(), classes.end(), StreetClass::Major), 0);
 }
 
-std::string patternText(const std::string &name) {
-    std::ifstream file(test::sourceFile("rules/streets/" + name + ".txt"));
-    std::stringstream text;
-    text << file.rdbuf();
-    return text.str();
-}
-
 class StreetHierarchyOfPatterns : public testing::TestWithParam<const char *> {};
 
 // On grown networks: strokes partition the edges, and the main streets hold at least the share
@@ -108,7 +98,7 @@ TEST_P(StreetHierarchyOfPatterns, MainStreetsHoldTheirShare) {
     for (uint32_t seed = 1; seed <= 4; ++seed) {
         SCOPED_TRACE(seed);
         SeededDraws draws(seed);
-        test::GrownStreets town(patternText(GetParam()), draws);
+        test::GrownStreets town(test::patternText(GetParam()), draws);
         town.grow(400);
         std::vector<PlanarPoint> points;
         for (const StreetVertex &v : town.streets.graph().vertices()) points.push_back({v.position.x, v.position.y});

@@ -1,26 +1,15 @@
 // The pattern rule sets shipped in rules/streets/, grown with many seeds.
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
-
 #include "streets/grown_streets.h"
-#include "test_paths.h"
 
 namespace veduta {
 namespace {
 
-std::string patternText(const std::string &name) {
-    std::ifstream file(test::sourceFile("rules/streets/" + name + ".txt"));
-    std::stringstream text;
-    text << file.rdbuf();
-    return text.str();
-}
-
 class StreetPatterns : public testing::TestWithParam<const char *> {};
 
 TEST_P(StreetPatterns, GrowSoundNetworksWithBlocksForEverySeed) {
-    std::string rules = patternText(GetParam());
+    std::string rules = test::patternText(GetParam());
     ASSERT_FALSE(rules.empty());
     for (uint32_t seed = 1; seed <= 8; ++seed) {
         SCOPED_TRACE(seed);
