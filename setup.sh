@@ -46,6 +46,15 @@ elif [ "$mode" = stills ]; then
     cmake --build --preset release -j "$jobs"
     find scenes -name '*.xml' | sort | while read -r scene; do
         name=$(echo "${scene#scenes/}" | sed 's/\.xml$//; s|/|_|g')
+        # Scenes on the data in ../shared are left out where it is not there.
+        missing=0
+        for needed in $(grep -o '\.\./\.\./shared/[^"]*' "$scene"); do
+            [ -e "$(dirname "$scene")/$needed" ] || missing=1
+        done
+        if [ $missing = 1 ]; then
+            echo "setup: $scene needs ../shared, which is not there; left out"
+            continue
+        fi
         build/release/src/veduta render "$scene" --res 960x540 --spp 256 --max-depth 8 \
             -o "build/stills/$name.exr" --png "renders/stills/$name.png"
     done
