@@ -68,12 +68,18 @@ class SceneAssembler {
                 {inst.transform, it->second, override, inst.objectId, inst.buildingId, uint32_t(i + 1)});
         }
         // The cities are read first: their streets are cut into the landscape's terrain, and
-        // then they are built on it.
+        // then they are built on it. The landscape's files are read before them, so that a grown
+        // town's streets keep to its ground.
+        std::optional<LandscapeData> land;
+        if (d_.landscape)
+            land = within(d_.landscape->loc, "<landscape>",
+                          [&] { return readLandscape(*d_.landscape, d_.georeference, warnings_); });
         std::vector<CityData> cities;
         std::vector<LocalPolygon> streetAreas;
         for (const CityDesc &city : d_.cities) {
-            cities.push_back(within(city.loc, elementName(city),
-                                    [&] { return readCity(city, d_.georeference, seedOf(city.seed)); }));
+            cities.push_back(within(city.loc, elementName(city), [&] {
+                return readCity(city, d_.georeference, seedOf(city.seed), land ? &*land : nullptr);
+            }));
             if (!d_.landscape) continue;
             for (LocalPolygon &piece : streetAreaPieces(streetNetworkOf(cities.back())))
                 streetAreas.push_back(std::move(piece));
@@ -81,8 +87,8 @@ class SceneAssembler {
         std::optional<LandscapeGround> landscape;
         if (d_.landscape) {
             landscape = within(d_.landscape->loc, "<landscape>", [&] {
-                return generateLandscape(*d_.landscape, seedOf(d_.landscape->seed), d_.georeference, streetAreas,
-                                         builder_, warnings_);
+                return generateLandscape(*d_.landscape, std::move(*land), seedOf(d_.landscape->seed), d_.georeference,
+                                         streetAreas, builder_, warnings_);
             });
         }
         GroundHeight ground = landscape ? landscape->ground : GroundHeight();

@@ -17,6 +17,7 @@
 #include "city/building_generator.h"
 #include "city/building_rules.h"
 #include "city/city_data.h"
+#include "city/ground_environment.h"
 #include "city/grown_city.h"
 #include "city/lot_subdivision.h"
 #include "city/osm_import.h"
@@ -305,7 +306,8 @@ Vec2f growthCentre(const CityGrowthDesc &growth, const std::optional<Georeferenc
     return {float(centre.easting), float(centre.northing)};
 }
 
-CityData growSceneCity(const CityDesc &city, const std::optional<Georeference> &georeference, uint32_t seed) {
+CityData growSceneCity(const CityDesc &city, const std::optional<Georeference> &georeference, uint32_t seed,
+                       const LandscapeData *landscape) {
     const CityGrowthDesc &desc = *city.growth;
     if (!std::filesystem::is_regular_file(desc.streets))
         throw InputError(desc.streetsLoc, fmt::format("cannot read the street rule file {}", desc.streets.string()));
@@ -317,6 +319,13 @@ CityData growSceneCity(const CityDesc &city, const std::optional<Georeference> &
     growth.hierarchy.majorWidth = desc.majorWidth;
     growth.hierarchy.minorWidth = desc.minorWidth;
     growth.hierarchy.majorShare = desc.majorShare;
+    std::optional<GroundEnvironment> ground;
+    if (landscape && georeference) {
+        LocalFrame frame = MapProjection(crsByEpsg(georeference->epsg), *georeference).frame();
+        ground.emplace(&landscape->grid, frame, streetObstacles(landscape->objects, frame),
+                       Vec2d{growth.centre.x, growth.centre.y});
+        growth.environment = &*ground;
+    }
     std::vector<std::string> warnings;
     CityData data = growCity(rules, growth, warnings);
     for (const std::string &w : warnings) data.warnings.push_back(fmt::format("{}: {}", city.loc.toString(), w));
@@ -327,10 +336,11 @@ CityData growSceneCity(const CityDesc &city, const std::optional<Georeference> &
     return data;
 }
 
-CityData readCity(const CityDesc &city, const std::optional<Georeference> &georeference, uint32_t seed) {
+CityData readCity(const CityDesc &city, const std::optional<Georeference> &georeference, uint32_t seed,
+                  const LandscapeData *landscape) {
     if (!city.growth && !std::filesystem::is_regular_file(city.file))
         throw InputError(city.fileLoc, fmt::format("cannot read the city file {}", city.file.string()));
-    CityData data = city.growth ? growSceneCity(city, georeference, seed) : readCityFile(city, georeference);
+    CityData data = city.growth ? growSceneCity(city, georeference, seed, landscape) : readCityFile(city, georeference);
     if (data.ruleFiles.empty() && !city.rules.empty()) {
         if (!std::filesystem::is_regular_file(city.rules))
             throw InputError(city.rulesLoc, fmt::format("cannot read the rule file {}", city.rules.string()));

@@ -25,8 +25,11 @@ namespace veduta {
 // data's centre). The scene reads its cities first: their streets are cut into a landscape
 // before the city is built on it. A <generate> (city.growth) grows the city from its street
 // rules with `seed` (the city's resolved seed) instead, at its centre, with the growth's
-// warnings at the element. Throws InputError.
-CityData readCity(const CityDesc &city, const std::optional<Georeference> &georeference, uint32_t seed);
+// warnings at the element; on the scene's `landscape` (read, not yet built) its streets keep
+// off slopes too steep, water, forest and the land beyond the DGM (ground_environment.h).
+// Throws InputError.
+CityData readCity(const CityDesc &city, const std::optional<Georeference> &georeference, uint32_t seed,
+                  const LandscapeData *landscape = nullptr);
 
 // Builds the streets and every lot of the city read by readCity with `seed`, the city's
 // resolved seed (buildRenderScene). Each building's id is cityBuildingId of the city's object

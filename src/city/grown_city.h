@@ -27,6 +27,9 @@ struct CityGrowth {
     StreetConstraints constraints;
     GrowthLimits limits;
     StreetHierarchy hierarchy;  // the widths of main and minor streets
+    // The ground the streets may not cross (ground_environment.h), in the rules' frame; none:
+    // open ground everywhere. It must outlive growCity.
+    const StreetEnvironment *environment = nullptr;
 };
 
 // What the growth came to, besides the city.

@@ -219,9 +219,56 @@ class SegmentClearance {
     std::map<std::pair<int64_t, int64_t>, std::vector<uint32_t>> buckets_;
 };
 
+// What the landscape makes of an object: an area draped on the terrain, a ribbon, trees.
+bool drapesAsArea(const AtkisObject &o) {
+    LandClass c = landClass(o);
+    return o.geometry == AtkisGeometry::Area && c != LandClass::Other && c != LandClass::Parcel;
+}
+bool drawsAsRibbon(const AtkisObject &o) {
+    LandClass c = landClass(o);
+    return o.geometry == AtkisGeometry::Line && (c == LandClass::Road || c == LandClass::Path || c == LandClass::Rail);
+}
+bool plantsTreesIn(const LandscapeDesc &land, const AtkisObject &o) {
+    return land.trees && treeStand(landClass(o), treeKind(o)).spacing > 0;
+}
+
+// Nothing a layer holds goes unsaid: a layer with objects the landscape does not draw says
+// how many, and of which Objektarten.
+void reportUndrawn(const LandscapeDesc &land, const DataFileDesc &d, const AtkisData &layer,
+                   std::vector<std::string> &warnings) {
+    std::map<std::string, size_t> undrawn;
+    for (const AtkisObject &o : layer.objects) {
+        if (drapesAsArea(o) || drawsAsRibbon(o) || plantsTreesIn(land, o)) continue;
+        std::string kind = o.type ? std::to_string(o.type) : "no Objektart";
+        if (!o.typeName.empty()) kind += " " + o.typeName;
+        if (landClass(o) == LandClass::Parcel) kind += " (parcels: cadastre, not land cover)";
+        ++undrawn[kind];
+    }
+    if (layer.objects.empty()) {
+        warnings.push_back(fmt::format("{}: {} holds no objects", d.loc.toString(), d.file.string()));
+        return;
+    }
+    size_t count = 0;
+    std::vector<std::pair<size_t, std::string>> kinds;
+    for (const auto &[kind, n] : undrawn) {
+        count += n;
+        kinds.push_back({n, kind});
+    }
+    if (count == 0) return;
+    std::sort(kinds.rbegin(), kinds.rend());
+    std::string list;
+    for (size_t k = 0; k < std::min<size_t>(kinds.size(), 5); ++k)
+        list += fmt::format("{}{} × {}", k ? ", " : "", kinds[k].first, kinds[k].second);
+    if (kinds.size() > 5) list += fmt::format(" and {} more kinds", kinds.size() - 5);
+    warnings.push_back(
+        fmt::format("{}: {}: {} of its {} objects are of kinds the landscape does not draw ({}); "
+                    "docs/draping.md lists those it does",
+                    d.loc.toString(), d.file.string(), count, layer.objects.size(), list));
+}
+
 class LandscapeBuilder {
   public:
-    LandscapeBuilder(const LandscapeDesc &land, uint32_t seed, const Georeference &georef,
+    LandscapeBuilder(const LandscapeDesc &land, LandscapeData data, uint32_t seed, const Georeference &georef,
                      const std::vector<LocalPolygon> &streetAreas, RenderSceneBuilder &builder,
                      std::vector<std::string> &warnings) :
         land_(land),
@@ -229,14 +276,9 @@ class LandscapeBuilder {
         frame_(MapProjection(crsByEpsg(georef.epsg), georef).frame()),
         streetAreas_(streetAreas),
         builder_(builder),
-        warnings_(warnings) {
-        grid_ = readTerrain(land, georef.epsg, warnings);
-        for (const DataFileDesc &d : land.layers) {
-            AtkisData layer = readLayer(d, georef, warnings);
-            reportUndrawn(d, layer);
-            for (AtkisObject &o : layer.objects) objects_.push_back(std::move(o));
-        }
-    }
+        warnings_(warnings),
+        grid_(std::move(data.grid)),
+        objects_(std::move(data.objects)) {}
 
     LandscapeGround build() {
         addTerrain();
@@ -251,52 +293,7 @@ class LandscapeBuilder {
     }
 
   private:
-    // What the landscape makes of an object: an area draped on the terrain, a ribbon, trees.
-    static bool drapesAsArea(const AtkisObject &o) {
-        LandClass c = landClass(o);
-        return o.geometry == AtkisGeometry::Area && c != LandClass::Other && c != LandClass::Parcel;
-    }
-    static bool drawsAsRibbon(const AtkisObject &o) {
-        LandClass c = landClass(o);
-        return o.geometry == AtkisGeometry::Line &&
-            (c == LandClass::Road || c == LandClass::Path || c == LandClass::Rail);
-    }
-    bool plantsTrees(const AtkisObject &o) const {
-        return land_.trees && treeStand(landClass(o), treeKind(o)).spacing > 0;
-    }
-
-    // Nothing a layer holds goes unsaid: a layer with objects the landscape does not draw says
-    // how many, and of which Objektarten.
-    void reportUndrawn(const DataFileDesc &d, const AtkisData &layer) {
-        std::map<std::string, size_t> undrawn;
-        for (const AtkisObject &o : layer.objects) {
-            if (drapesAsArea(o) || drawsAsRibbon(o) || plantsTrees(o)) continue;
-            std::string kind = o.type ? std::to_string(o.type) : "no Objektart";
-            if (!o.typeName.empty()) kind += " " + o.typeName;
-            if (landClass(o) == LandClass::Parcel) kind += " (parcels: cadastre, not land cover)";
-            ++undrawn[kind];
-        }
-        if (layer.objects.empty()) {
-            warnings_.push_back(fmt::format("{}: {} holds no objects", d.loc.toString(), d.file.string()));
-            return;
-        }
-        size_t count = 0;
-        std::vector<std::pair<size_t, std::string>> kinds;
-        for (const auto &[kind, n] : undrawn) {
-            count += n;
-            kinds.push_back({n, kind});
-        }
-        if (count == 0) return;
-        std::sort(kinds.rbegin(), kinds.rend());
-        std::string list;
-        for (size_t k = 0; k < std::min<size_t>(kinds.size(), 5); ++k)
-            list += fmt::format("{}{} × {}", k ? ", " : "", kinds[k].first, kinds[k].second);
-        if (kinds.size() > 5) list += fmt::format(" and {} more kinds", kinds.size() - 5);
-        warnings_.push_back(
-            fmt::format("{}: {}: {} of its {} objects are of kinds the landscape does not draw ({}); "
-                        "docs/draping.md lists those it does",
-                        d.loc.toString(), d.file.string(), count, layer.objects.size(), list));
-    }
+    bool plantsTrees(const AtkisObject &o) const { return plantsTreesIn(land_, o); }
 
     void addTerrain() {
         std::vector<DrapeArea> areas;
@@ -469,13 +466,35 @@ class LandscapeBuilder {
 
 }  // namespace
 
-LandscapeGround generateLandscape(const LandscapeDesc &land, uint32_t seed,
+LandscapeData readLandscape(const LandscapeDesc &land, const std::optional<Georeference> &georeference,
+                            std::vector<std::string> &warnings) {
+    if (!georeference)
+        throw InputError(land.loc, "a <landscape> needs the scene's <georeference crs=\"EPSG:…\" origin=\"E N\">");
+    LandscapeData data;
+    data.grid = readTerrain(land, georeference->epsg, warnings);
+    for (const DataFileDesc &d : land.layers) {
+        AtkisData layer = readLayer(d, *georeference, warnings);
+        reportUndrawn(land, d, layer, warnings);
+        for (AtkisObject &o : layer.objects) data.objects.push_back(std::move(o));
+    }
+    return data;
+}
+
+LandscapeGround generateLandscape(const LandscapeDesc &land, LandscapeData data, uint32_t seed,
                                   const std::optional<Georeference> &georeference,
                                   const std::vector<LocalPolygon> &streetAreas, RenderSceneBuilder &builder,
                                   std::vector<std::string> &warnings) {
     if (!georeference)
         throw InputError(land.loc, "a <landscape> needs the scene's <georeference crs=\"EPSG:…\" origin=\"E N\">");
-    return LandscapeBuilder(land, seed, *georeference, streetAreas, builder, warnings).build();
+    return LandscapeBuilder(land, std::move(data), seed, *georeference, streetAreas, builder, warnings).build();
+}
+
+LandscapeGround generateLandscape(const LandscapeDesc &land, uint32_t seed,
+                                  const std::optional<Georeference> &georeference,
+                                  const std::vector<LocalPolygon> &streetAreas, RenderSceneBuilder &builder,
+                                  std::vector<std::string> &warnings) {
+    return generateLandscape(land, readLandscape(land, georeference, warnings), seed, georeference, streetAreas,
+                             builder, warnings);
 }
 
 }  // namespace veduta

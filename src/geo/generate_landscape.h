@@ -9,7 +9,9 @@
 #include <vector>
 
 #include "description/scene_description.h"
+#include "geo/atkis.h"
 #include "geo/ground_height.h"
+#include "geo/height_grid.h"
 #include "geo/terrain_surface.h"
 #include "geodesy/georeference.h"
 #include "scene/render_scene.h"
@@ -26,6 +28,19 @@ struct LandscapeGround {
 // A plain polygon in the local frame (x east, y north, metres from the origin), either winding.
 using LocalPolygon = std::vector<Vec2d>;
 
+// What a <landscape>'s files hold, read: the DGM (tiles mosaicked) and the objects of its ATKIS
+// layers, in the scene's CRS. Read before the cities, whose streets may grow on it.
+struct LandscapeData {
+    HeightGrid grid;
+    std::vector<AtkisObject> objects;
+};
+
+// Reads the landscape's DGM and layers, with a warning for each layer's objects the landscape
+// does not draw. Throws InputError (a landscape without georeference, a DGM in another CRS,
+// bad data).
+LandscapeData readLandscape(const LandscapeDesc &landscape, const std::optional<Georeference> &georeference,
+                            std::vector<std::string> &warnings);
+
 // Emits the terrain (one mesh, a material per land class), the ribbons and the trees (an
 // instance of a prototype each) into `builder`, in the local frame of the georeference's
 // origin. `streetAreas`, the pieces of the cities' streets and sidewalks (their union is the
@@ -33,6 +48,11 @@ using LocalPolygon = std::vector<Vec2d>;
 // trees keep off them as off ribbons. `seed` is the landscape's resolved seed
 // (buildRenderScene). Throws InputError (a landscape without georeference, a DGM in another
 // CRS, bad data).
+LandscapeGround generateLandscape(const LandscapeDesc &landscape, LandscapeData data, uint32_t seed,
+                                  const std::optional<Georeference> &georeference,
+                                  const std::vector<LocalPolygon> &streetAreas, RenderSceneBuilder &builder,
+                                  std::vector<std::string> &warnings);
+// The same, reading the landscape's files first (readLandscape).
 LandscapeGround generateLandscape(const LandscapeDesc &landscape, uint32_t seed,
                                   const std::optional<Georeference> &georeference,
                                   const std::vector<LocalPolygon> &streetAreas, RenderSceneBuilder &builder,

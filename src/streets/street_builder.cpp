@@ -45,6 +45,7 @@ QueryResult StreetBuilder::queryGraph(const WordNode &asking, std::span<float> i
     float angle = inOut[0], length = inOut[1];
     Vec3f heading = moveTurtle(asking.turtle, Word{'&', {angle}}).heading;
     SegmentPlan plan = planSegment(graph_, start, heading, length, constraints_);
+    limitByGround(start.position, plan);
     if (plan.code != QueryResult::Failed) {
         inOut[0] = angle + plan.turnDegrees;
         inOut[1] = plan.length;
@@ -119,6 +120,11 @@ void StreetBuilder::draw(NodeId placeholder, const WordNode &f) {
         ++counts_.snapped;
         cutOffBeyond(f.id);
         break;
+    case SegmentTarget::Ground:
+        vertexOf_[f.id] = graph_.addVertex(plan.end);
+        ++counts_.stopped;
+        cutOffBeyond(f.id);
+        break;
     default:
         vertexOf_[f.id] = graph_.splitEdge(plan.edge, plan.end);
         ++counts_.split;
@@ -134,7 +140,28 @@ SegmentPlan StreetBuilder::planFor(NodeId placeholder, const SegmentStart &start
         if (answer.asking == placeholder && answer.heading == f.turtle.heading && answer.inOut[1] == length &&
             answer.graphSize == graphSize())
             return answer.plan;
-    return planSegment(graph_, start, f.turtle.heading, length, constraints_);
+    SegmentPlan plan = planSegment(graph_, start, f.turtle.heading, length, constraints_);
+    limitByGround(start.position, plan);
+    return plan;
+}
+
+// The ground stops a street as a street met does: where it leaves less than minLength the street
+// is refused, else it ends where the ground stops it, with nothing beyond.
+void StreetBuilder::limitByGround(const Vec3f &from, SegmentPlan &plan) const {
+    if (!environment_ || plan.target == SegmentTarget::None || plan.length <= 0) return;
+    Vec3f direction = (plan.end - from) / plan.length;
+    float free = environment_->freeLength(from, direction, plan.length);
+    if (free >= plan.length) return;
+    if (free < constraints_.minLength) {
+        plan = SegmentPlan{};
+        return;
+    }
+    plan.code = QueryResult::Intersection;
+    plan.target = SegmentTarget::Ground;
+    plan.end = from + direction * free;
+    plan.length = free;
+    plan.vertex = kNoVertex;
+    plan.edge = UINT32_MAX;
 }
 
 void StreetBuilder::cutOff(NodeId id) {

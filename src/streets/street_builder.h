@@ -15,8 +15,9 @@
 
 namespace veduta {
 
-// The ground's say in a street (the ?E query): water, forest or a slope too steep, sampled by
-// whoever knows the terrain and the map (a layer above this one).
+// The ground's say in a street: water, forest or a slope too steep, sampled by whoever knows the
+// terrain and the map (a layer above this one). It answers the ?E query, and it stops every
+// street the builder draws, as a street met does.
 class StreetEnvironment {
   public:
     virtual ~StreetEnvironment() = default;
@@ -31,6 +32,7 @@ struct StreetCounts {
     size_t snapped = 0;   // ended on an existing vertex (NN, or led to the end of a street met)
     size_t split = 0;     // ended on a street met, which was cut there
     size_t refused = 0;   // no street: FAILED, and the words after it cut off
+    size_t stopped = 0;   // ended where the ground stops it (StreetEnvironment), nothing beyond
 };
 
 class StreetBuilder final : public ExpansionObserver {
@@ -72,6 +74,7 @@ class StreetBuilder final : public ExpansionObserver {
     SegmentStart startOf(NodeId id, const Vec3f &position) const;
     void draw(NodeId placeholder, const WordNode &f);
     SegmentPlan planFor(NodeId placeholder, const SegmentStart &start, const WordNode &f) const;
+    void limitByGround(const Vec3f &from, SegmentPlan &plan) const;
     void cutOff(NodeId id);
     void cutOffBeyond(NodeId id);
 

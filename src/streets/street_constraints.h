@@ -26,6 +26,7 @@ enum class SegmentTarget {
     NewVertex,  // Normal: a new street end at `end`
     Vertex,     // NN, or an intersection led to an end of the street it met: `vertex`
     EdgeSplit,  // an intersection: `edge` is cut at `end`
+    Ground,     // an intersection with ground it must not cross (StreetEnvironment): a new end at `end`
 };
 
 struct SegmentPlan {

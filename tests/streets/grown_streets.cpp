@@ -19,10 +19,10 @@ std::string patternText(const std::string &name) {
     return text.str();
 }
 
-GrownStreets::GrownStreets(const std::string &rulesText, RandomDraws &draws) :
+GrownStreets::GrownStreets(const std::string &rulesText, RandomDraws &draws, const StreetEnvironment *environment) :
     rules(parseStreetRules(rulesText, "rules.txt")),
     words(rules.initialWord),
-    streets(words),
+    streets(words, {}, environment),
     growth(words, rules.rules, streets.nodeQuery(), draws, &streets) {}
 
 GrowthResult GrownStreets::grow(float radius, size_t expansions) {

@@ -16,7 +16,8 @@ std::string patternText(const std::string &name);
 
 // A rule set grown with the constraints inside a window round the origin.
 struct GrownStreets {
-    GrownStreets(const std::string &rulesText, RandomDraws &draws);
+    // The environment, when given, must outlive the town.
+    GrownStreets(const std::string &rulesText, RandomDraws &draws, const StreetEnvironment *environment = nullptr);
     GrowthResult grow(float radius, size_t expansions = kMaxRewrittenWords);
 
     StreetRuleSet rules;

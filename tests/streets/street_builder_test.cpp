@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <tuple>
 
@@ -116,6 +117,34 @@ TEST(StreetBuilder, AStreetMetIsCutAndWhatLiesBeyondIsCutOff) {
     EXPECT_TRUE(graph.vertex(3).isStatic);
     EXPECT_NEAR(graph.vertex(3).position.x, 5, 1e-5f);
     EXPECT_NEAR(graph.vertex(3).position.y, 0, 1e-5f);
+}
+
+// Ground no street may cross east of x = 200 (as water would be).
+struct WaterEastOf final : StreetEnvironment {
+    float shore = 200;
+    float freeLength(const Vec3f &start, const Vec3f &direction, float length) const override {
+        if (direction.x <= 0 || start.x + direction.x * length <= shore) return length;
+        return std::max(0.0f, (shore - start.x) / direction.x);
+    }
+};
+
+TEST(StreetBuilder, TheGroundStopsEveryStreetAsAStreetMetWould) {
+    WaterEastOf water;
+    for (uint32_t seed = 1; seed <= 4; ++seed) {
+        SCOPED_TRACE(seed);
+        SeededDraws draws(seed);
+        Town town(test::patternText("grid"), draws, &water);
+        EXPECT_EQ(town.grow(500).stop, GrowthStop::Exhausted);
+        const StreetGraph &graph = town.streets.graph();
+        size_t onTheShore = 0;
+        for (const StreetVertex &v : graph.vertices()) {
+            EXPECT_LE(v.position.x, water.shore + 1e-3f);
+            onTheShore += std::abs(v.position.x - water.shore) < 1e-3f;
+        }
+        EXPECT_GT(town.streets.counts().stopped, 3u);
+        EXPECT_GE(onTheShore, town.streets.counts().stopped);
+        test::expectSoundNetwork(graph);
+    }
 }
 
 }  // namespace
