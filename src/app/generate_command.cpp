@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,10 +19,12 @@
 #include "city/city_data_writer.h"
 #include "city/city_layers.h"
 #include "city/generate_city.h"
+#include "city/ground_environment.h"
 #include "city/grown_city.h"
 #include "city/lot_subdivision.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "geo/generate_landscape.h"
 #include "io/output_files.h"
 #include "streets/street_graph_dot.h"
 #include "streets/street_rule_file.h"
@@ -41,6 +44,8 @@ struct GenerateArgs {
     std::string rules;
     std::string lots;
     StreetHierarchy hierarchy;
+    std::string dgm;
+    std::vector<std::string> atkis;
     std::string output, geojson, gpkg, dot;
     bool quiet = false;
 };
@@ -86,6 +91,18 @@ void writeOutputs(const GenerateArgs &args, const CityData &city, const CityGrow
     outputs.commit();
 }
 
+// The DGM and ATKIS layers the town grows on, read as a <landscape> reads them, with the centre
+// as the frame's origin.
+std::optional<LandscapeData> groundOf(const GenerateArgs &args, int epsg, std::vector<std::string> &warnings) {
+    if (args.dgm.empty()) return std::nullopt;
+    if (epsg == 0)
+        throw InputError(FileLoc{"--dgm"}, "a town on a DGM needs --crs, the CRS of the DGM and of --centre");
+    LandscapeDesc land;
+    land.dgm.push_back({args.dgm, FileLoc{args.dgm}, 0});
+    for (const std::string &layer : args.atkis) land.layers.push_back({layer, FileLoc{layer}, 0});
+    return readLandscape(land, Georeference{epsg, args.centre[0], args.centre[1]}, warnings);
+}
+
 void runGenerate(const GenerateArgs &args) {
     auto start = std::chrono::steady_clock::now();
     int epsg = epsgOption(args.crs, "--crs");
@@ -100,6 +117,13 @@ void runGenerate(const GenerateArgs &args) {
     growth.seed = args.seed;
     growth.hierarchy = args.hierarchy;
     std::vector<std::string> warnings;
+    std::optional<LandscapeData> land = groundOf(args, epsg, warnings);
+    std::optional<GroundEnvironment> ground;
+    if (land) {
+        LocalFrame frame{{args.centre[0], args.centre[1]}};
+        ground.emplace(&land->grid, frame, streetObstacles(land->objects, frame), Vec2d{0, 0});
+        growth.environment = &*ground;
+    }
     CityGrowthReport report;
     CityData city = growCity(streetRules, growth, warnings, &report);
     city.ruleFiles = {fs::absolute(rules)};
@@ -136,6 +160,9 @@ void addGenerateCommand(CLI::App &app, int &exitCode) {
         ->capture_default_str();
     cmd->add_option("--seed", args->seed, "Seed of every random choice")->capture_default_str();
     cmd->add_option("--crs", args->crs, "EPSG:<code> of the centre and the files' coordinates (a projected CRS)");
+    cmd->add_option("--dgm", args->dgm, "DGM to grow on (needs --crs): streets keep off slopes over 12 % and its edge");
+    cmd->add_option("--atkis", args->atkis, "ATKIS layer(s) whose water and forest the streets keep off (with --dgm)")
+        ->needs("--dgm");
     cmd->add_option("--rules", args->rules, "Building rule file the CityData names (default: the Gründerzeit rules)");
     cmd->add_option("--lots", args->lots,
                     "LotSubdivision of every block: perimeter, recursive, obb, skeleton, schrader");

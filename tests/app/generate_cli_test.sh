@@ -52,6 +52,17 @@ check "utm town" rc_is 0
 check "utm eastings" grep -q 'e="48[67][0-9][0-9][0-9]' "$work/utm.xml"
 check "geojson crs" grep -q "EPSG::25832" "$work/utm/streets.geojson"
 
+# On a DGM (the hillside of scenes/hillside-town.xml, 300 m square round the centre, rising 13 %
+# to the north): no street leaves it.
+dgm=$(dirname "$0")/../../data/hillside/dgm.asc
+run generate --pattern grid --radius 400 --centre 500000 5330150 --crs EPSG:25832 --dgm "$dgm" -o "$work/hill.xml"
+check "hillside town" rc_is 0
+check "hillside streets" bash -c "grep -q '^streets: [1-9]' '$work/out'"
+check "no point off the DGM" awk -F'"' '/<Point id=.* e=/ { if ($4 < 499847.5 || $4 > 500147.5 || $6 < 5329997.5 || $6 > 5330297.5) bad = 1 } END { exit bad }' "$work/hill.xml"
+run generate --dgm "$dgm" -o "$work/x.xml"
+check "a DGM without a CRS exits 1" rc_is 1
+check "a DGM without a CRS says so" err_has "needs --crs"
+
 # Bad input: exit 1, nothing written, the older file kept.
 cp "$work/town.xml" "$work/kept.xml"
 run generate --pattern hexagons -o "$work/town.xml"
