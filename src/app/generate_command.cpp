@@ -131,7 +131,7 @@ void runGenerate(const GenerateArgs &args) {
         city.settings["LotSubdivision"] = settingValue(args.lots, FileLoc{"--lots"});
         lotSettingsFrom(SettingsStack({&city.settings}));  // an unknown name is an error even without blocks
     }
-    cutLots(city, buildingRules.rules.settings, args.seed);
+    cutLots(city, buildingRules.rules.settings, args.seed, warnings);
     writeOutputs(args, city, report, epsg);
 
     for (const std::string &w : warnings) std::fprintf(stderr, "veduta: warning: %s\n", w.c_str());

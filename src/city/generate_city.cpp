@@ -70,7 +70,7 @@ StreetNetwork streetNetworkOf(const CityData &data) {
 }
 
 std::vector<IdentifiedLot> lotsOf(const CityBlock &block, const StreetNetwork &streets,
-                                  const SettingsStack &blockSettings, uint32_t seed) {
+                                  const SettingsStack &blockSettings, uint32_t seed, size_t *slivers) {
     std::vector<IdentifiedLot> lots;
     if (!block.lots.empty()) {
         for (const CityLot &lot : block.lots) lots.push_back({{lot.points, lot.streetEdges, lot.base}, lot.sourceId});
@@ -79,6 +79,10 @@ std::vector<IdentifiedLot> lotsOf(const CityBlock &block, const StreetNetwork &s
     LotSettings settings = lotSettingsFrom(blockSettings);
     std::vector<BuildableArea> areas = buildableAreas(block.points, streets);
     for (uint32_t a = 0; a < areas.size(); ++a) {
+        if (!isSimplePolygon(areas[a].outline)) {
+            if (slivers) ++*slivers;
+            continue;
+        }
         Block piece{areas[a].outline, areas[a].streetEdges, block.base};
         uint32_t pieceId = hashValues({block.sourceId, a});
         for (Footprint &lot : subdivideBlock(piece, settings, seed, pieceId, block.loc)) {
@@ -89,15 +93,28 @@ std::vector<IdentifiedLot> lotsOf(const CityBlock &block, const StreetNetwork &s
     return lots;
 }
 
-void cutLots(CityData &data, const SettingsMap &ruleFileSettings, uint32_t seed) {
+// The warning for pieces of blocks left without lots, at the city's place.
+void warnOfSlivers(size_t slivers, const FileLoc &where, std::vector<std::string> &warnings) {
+    if (slivers == 0) return;
+    std::string place = where.file.empty() ? std::string() : where.toString() + ": ";
+    warnings.push_back(
+        fmt::format("{}{} pieces of blocks that the streets leave are slivers no simple polygon in "
+                    "float (a few float steps wide) and were left without lots",
+                    place, slivers));
+}
+
+void cutLots(CityData &data, const SettingsMap &ruleFileSettings, uint32_t seed, std::vector<std::string> &warnings) {
     StreetNetwork streets = streetNetworkOf(data);
+    size_t slivers = 0;
     for (CityBlock &block : data.blocks) {
         if (!block.lots.empty()) continue;
-        for (IdentifiedLot &lot : lotsOf(block, streets, settingsFor(data, block, nullptr, ruleFileSettings), seed)) {
+        SettingsStack settings = settingsFor(data, block, nullptr, ruleFileSettings);
+        for (IdentifiedLot &lot : lotsOf(block, streets, settings, seed, &slivers)) {
             Footprint &f = lot.footprint;
             block.lots.push_back({std::move(f.points), std::move(f.streetEdges), f.base, {}, block.loc, lot.identity});
         }
     }
+    warnOfSlivers(slivers, {}, warnings);
 }
 
 uint32_t cityBuildingId(ObjectId city, uint32_t lotIdentity) {
@@ -163,19 +180,22 @@ void warnOfSharedId(std::unordered_map<uint32_t, FileLoc> &lotOfId, uint32_t id,
 // seed alone, so they are the same on any number of threads. An error is the first block's in
 // order, as one thread would meet it.
 std::vector<std::vector<IdentifiedLot>> lotsOfBlocks(const CityData &data, const StreetNetwork &streets,
-                                                     const SettingsMap &ruleFileSettings, uint32_t seed) {
+                                                     const SettingsMap &ruleFileSettings, uint32_t seed,
+                                                     size_t &slivers) {
     std::vector<std::vector<IdentifiedLot>> lots(data.blocks.size());
     std::vector<std::exception_ptr> errors(data.blocks.size());
+    std::vector<size_t> sliversOf(data.blocks.size(), 0);
     tbb::parallel_for(size_t(0), data.blocks.size(), [&](size_t b) {
         try {
             const CityBlock &block = data.blocks[b];
-            lots[b] = lotsOf(block, streets, settingsFor(data, block, nullptr, ruleFileSettings), seed);
+            lots[b] = lotsOf(block, streets, settingsFor(data, block, nullptr, ruleFileSettings), seed, &sliversOf[b]);
         } catch (...) {
             errors[b] = std::current_exception();
         }
     });
     for (const std::exception_ptr &error : errors)
         if (error) std::rethrow_exception(error);
+    for (size_t n : sliversOf) slivers += n;
     return lots;
 }
 
@@ -254,13 +274,15 @@ uint32_t buildCity(const CityData &data, uint32_t seed, ObjectId objectId, const
     std::exception_ptr lotError;
     tbb::task_group streetWork;
     streetWork.run([&] { addStreets(streets, landscape, objectId, builder); });
+    size_t slivers = 0;
     try {
-        lots = lotsOfBlocks(data, streets, ruleFiles.front()->loaded.rules.settings, seed);
+        lots = lotsOfBlocks(data, streets, ruleFiles.front()->loaded.rules.settings, seed, slivers);
     } catch (...) {
         lotError = std::current_exception();
     }
     streetWork.wait();
     if (lotError) std::rethrow_exception(lotError);
+    warnOfSlivers(slivers, fileLoc, warnings);
     std::vector<PlannedBuilding> planned = planBuildings(data, lots, seed, objectId, landscape, ruleFiles);
     buildAll(planned, landscape, builder, warnings);
     return uint32_t(planned.size());

@@ -62,13 +62,16 @@ struct IdentifiedLot {
 // Blockrandbebauung, and Müller's recursive subdivision where no ring of houses fits). The
 // draws of each piece the streets leave come from the seed, the block's identity and the
 // piece's place among them, never from the block's place in the file.
+// A piece that rounding to float left no simple polygon (a sliver a few float steps wide) gets
+// no lots; `slivers`, when given, counts such pieces.
 std::vector<IdentifiedLot> lotsOf(const CityBlock &block, const StreetNetwork &streets,
-                                  const SettingsStack &blockSettings, uint32_t seed);
+                                  const SettingsStack &blockSettings, uint32_t seed, size_t *slivers = nullptr);
 
 // Gives each block without lots of its own the lots lotsOf cuts from it with the block's
 // settings over `ruleFileSettings`: what `veduta generate` writes, so that its files hold the
 // lots the buildings will stand on. Each lot keeps its identity in sourceId.
-void cutLots(CityData &data, const SettingsMap &ruleFileSettings, uint32_t seed);
+// Pieces left without lots (see lotsOf) are counted in one warning.
+void cutLots(CityData &data, const SettingsMap &ruleFileSettings, uint32_t seed, std::vector<std::string> &warnings);
 
 // A city building's id, 1 to 2^24 − 1 so that the IndexBuilding pass (floats) holds it exactly:
 // a hash of the city's object id and its lot's identity. Two lots of a city may hash to one id

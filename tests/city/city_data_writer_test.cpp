@@ -24,7 +24,7 @@ CityData grownTownWithLots() {
     CityData city = growCity(readStreetRuleFile(test::sourceFile("rules/streets/grid.txt")), growth, warnings);
     std::filesystem::path rules = test::sourceFile("rules/gruenderzeit/FacadeStructure.xml");
     city.ruleFiles = {rules};
-    cutLots(city, BuildingRules(rules).rules.settings, 5);
+    cutLots(city, BuildingRules(rules).rules.settings, 5, warnings);
     return city;
 }
 

@@ -49,7 +49,7 @@ TEST_P(GrownLots, LieInsideTheirBlocksApartFromOneAnother) {
         std::vector<std::string> warnings;
         CityData city = growCity(rules, growth, warnings);
         city.settings["LotSubdivision"] = settingValue(GetParam().lots, {});
-        ASSERT_NO_THROW(cutLots(city, {}, seed));
+        ASSERT_NO_THROW(cutLots(city, {}, seed, warnings));
         for (const CityBlock &block : city.blocks) {
             ExactPolygon outline = exact(block.points);
             std::vector<ExactPolygon> pieces;
