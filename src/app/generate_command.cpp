@@ -25,6 +25,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "geo/generate_landscape.h"
+#include "geodesy/crs.h"
 #include "io/output_files.h"
 #include "streets/street_graph_dot.h"
 #include "streets/street_rule_file.h"
@@ -106,6 +107,12 @@ std::optional<LandscapeData> groundOf(const GenerateArgs &args, int epsg, std::v
 void runGenerate(const GenerateArgs &args) {
     auto start = std::chrono::steady_clock::now();
     int epsg = epsgOption(args.crs, "--crs");
+    // The town is laid out in metres and placed by adding the centre: a projected CRS's.
+    if (epsg != 0 && !crsByEpsg(epsg).projected)
+        throw InputError(FileLoc{"--crs"},
+                         fmt::format("EPSG:{} is not a projected CRS; give one in metres, such as "
+                                     "EPSG:25832 (UTM 32N) or EPSG:31467 (Gauss-Krüger 3)",
+                                     epsg));
     fs::path rules = args.rules.empty() ? shippedBuildingRules("--rules") : fs::path(args.rules);
     if (!fs::is_regular_file(rules))
         throw InputError(FileLoc{"--rules"}, fmt::format("cannot read the rule file {}", rules.string()));
@@ -132,9 +139,8 @@ void runGenerate(const GenerateArgs &args) {
         lotSettingsFrom(SettingsStack({&city.settings}));  // an unknown name is an error even without blocks
     }
     cutLots(city, buildingRules.rules.settings, args.seed, warnings);
-    writeOutputs(args, city, report, epsg);
-
     for (const std::string &w : warnings) std::fprintf(stderr, "veduta: warning: %s\n", w.c_str());
+    writeOutputs(args, city, report, epsg);
     if (args.quiet) return;
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("expansions: %zu\nstreets: %zu\nmajor_streets: %zu\nblocks: %zu\nlots: %zu\nseconds: %.3f\n",

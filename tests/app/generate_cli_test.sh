@@ -59,6 +59,9 @@ run generate --pattern grid --radius 400 --centre 500000 5330150 --crs EPSG:2583
 check "hillside town" rc_is 0
 check "hillside streets" bash -c "grep -q '^streets: [1-9]' '$work/out'"
 check "no point off the DGM" awk -F'"' '/<Point id=.* e=/ { if ($4 < 499847.5 || $4 > 500147.5 || $6 < 5329997.5 || $6 > 5330297.5) bad = 1 } END { exit bad }' "$work/hill.xml"
+run generate --crs EPSG:4326 --centre 9 48 -o "$work/x.xml"
+check "a geographic CRS exits 1" rc_is 1
+check "a geographic CRS says so" err_has "not a projected CRS"
 run generate --dgm "$dgm" -o "$work/x.xml"
 check "a DGM without a CRS exits 1" rc_is 1
 check "a DGM without a CRS says so" err_has "needs --crs"
