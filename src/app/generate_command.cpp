@@ -46,6 +46,7 @@ struct GenerateArgs {
     std::string lots;
     StreetHierarchy hierarchy;
     std::string dgm;
+    float maxGrade = GroundLimits().maxGrade;
     std::vector<std::string> atkis;
     std::string output, geojson, gpkg, dot;
     bool quiet = false;
@@ -128,7 +129,8 @@ void runGenerate(const GenerateArgs &args) {
     std::optional<GroundEnvironment> ground;
     if (land) {
         LocalFrame frame{{args.centre[0], args.centre[1]}};
-        ground.emplace(&land->grid, frame, streetObstacles(land->objects, frame), Vec2d{0, 0});
+        ground.emplace(&land->grid, frame, streetObstacles(land->objects, frame), Vec2d{0, 0},
+                       GroundLimits{args.maxGrade});
         growth.environment = &*ground;
     }
     CityGrowthReport report;
@@ -167,6 +169,10 @@ void addGenerateCommand(CLI::App &app, int &exitCode) {
     cmd->add_option("--seed", args->seed, "Seed of every random choice")->capture_default_str();
     cmd->add_option("--crs", args->crs, "EPSG:<code> of the centre and the files' coordinates (a projected CRS)");
     cmd->add_option("--dgm", args->dgm, "DGM to grow on (needs --crs): streets keep off slopes over 12 % and its edge");
+    cmd->add_option("--max-grade", args->maxGrade, "Steepest a street may climb on the DGM, rise over run")
+        ->check(CLI::Range(0.001f, 1.0f))
+        ->needs("--dgm")
+        ->capture_default_str();
     cmd->add_option("--atkis", args->atkis, "ATKIS layer(s) whose water and forest the streets keep off (with --dgm)")
         ->needs("--dgm");
     cmd->add_option("--rules", args->rules, "Building rule file the CityData names (default: the Gründerzeit rules)");

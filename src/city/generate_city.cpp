@@ -345,7 +345,7 @@ CityData growSceneCity(const CityDesc &city, const std::optional<Georeference> &
     if (landscape && georeference) {
         LocalFrame frame = MapProjection(crsByEpsg(georeference->epsg), *georeference).frame();
         ground.emplace(&landscape->grid, frame, streetObstacles(landscape->objects, frame),
-                       Vec2d{growth.centre.x, growth.centre.y});
+                       Vec2d{growth.centre.x, growth.centre.y}, GroundLimits{desc.maxGrade});
         growth.environment = &*ground;
     }
     std::vector<std::string> warnings;

@@ -147,7 +147,8 @@ struct CityGrowthDesc {
     FileLoc centreLoc;
     float radius = 500;
     float majorWidth = 12, minorWidth = 7, majorShare = 0.25f;  // the street hierarchy's
-    std::string lots;  // the LotSubdivision of its blocks; empty: the rule file's, or perimeter lots
+    float maxGrade = 0.12f;  // the steepest a street may climb on a <landscape>'s DGM, rise over run
+    std::string lots;        // the LotSubdivision of its blocks; empty: the rule file's, or perimeter lots
     FileLoc lotsLoc;
 };
 

@@ -445,6 +445,7 @@ class SceneFileReader {
         growth.majorWidth = e.number("major_width", growth.majorWidth, 1, 100);
         growth.minorWidth = e.number("minor_width", growth.minorWidth, 1, 100);
         growth.majorShare = e.number("major_share", growth.majorShare, 0, 1);
+        growth.maxGrade = e.number("max_grade", growth.maxGrade, 0.001f, 1);
         if (e.has("lots")) {
             growth.lots = e.string("lots");
             growth.lotsLoc = e.attributeLoc("lots");

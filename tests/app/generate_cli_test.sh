@@ -52,13 +52,19 @@ check "utm town" rc_is 0
 check "utm eastings" grep -q 'e="48[67][0-9][0-9][0-9]' "$work/utm.xml"
 check "geojson crs" grep -q "EPSG::25832" "$work/utm/streets.geojson"
 
-# On a DGM (the hillside of scenes/hillside-town.xml, 300 m square round the centre, rising 13 %
+# On a DGM (the hillside of scenes/hillside-town.xml: nodes from 499850 5330000 to 500150 5330300, rising 13 %
 # to the north): no street leaves it.
 dgm=$(dirname "$0")/../../data/hillside/dgm.asc
-run generate --pattern grid --radius 400 --centre 500000 5330150 --crs EPSG:25832 --dgm "$dgm" -o "$work/hill.xml"
+run generate --pattern grid --radius 400 --seed 4 --centre 500000 5330150 --crs EPSG:25832 --dgm "$dgm" -o "$work/hill.xml"
 check "hillside town" rc_is 0
 check "hillside streets" bash -c "grep -q '^streets: [1-9]' '$work/out'"
-check "no point off the DGM" awk -F'"' '/<Point id=.* e=/ { if ($4 < 499847.5 || $4 > 500147.5 || $6 < 5329997.5 || $6 > 5330297.5) bad = 1 } END { exit bad }' "$work/hill.xml"
+check "no point off the DGM" awk -F'"' '/<Point id=.* e=/ { if ($4 < 499850 || $4 > 500150 || $6 < 5330000 || $6 > 5330300) bad = 1 } END { exit bad }' "$work/hill.xml"
+streets12=$(sed -n 's/^streets: //p' "$work/out")
+run generate --pattern grid --radius 400 --seed 4 --centre 500000 5330150 --crs EPSG:25832 --dgm "$dgm" --max-grade 0.15 \
+    -o "$work/hill15.xml"
+check "hillside town at 15 %" rc_is 0
+check "at 15 % the grid climbs the hill" bash -c "[ \$(sed -n 's/^streets: //p' '$work/out') -gt \$((3 * $streets12)) ]"
+check "no point off the DGM at 15 %" awk -F'"' '/<Point id=.* e=/ { if ($4 < 499850 || $4 > 500150 || $6 < 5330000 || $6 > 5330300) bad = 1 } END { exit bad }' "$work/hill15.xml"
 run generate --crs EPSG:4326 --centre 9 48 -o "$work/x.xml"
 check "a geographic CRS exits 1" rc_is 1
 check "a geographic CRS says so" err_has "not a projected CRS"

@@ -88,6 +88,8 @@ TEST(GeneratedTown, ErrorsAreAtTheirPlace) {
         "<scene version=\"1\"><generate streets=\"nowhere.txt\" rules=\"../rules/gruenderzeit/FacadeStructure.xml\"/>"
         "</scene>");
     EXPECT_NE(missing.find("test.xml:1:39: cannot read the street rule file"), std::string::npos) << missing;
+    std::string grade = errorOf(scene("max_grade=\"3\""));
+    EXPECT_NE(grade.find("max_grade"), std::string::npos) << grade;
     std::string centre = errorOf(scene("centre=\"1 2 3\""));
     EXPECT_NE(centre.find("centre takes two numbers"), std::string::npos) << centre;
     std::string far = errorOf(scene("centre=\"487400 5424700\""));
