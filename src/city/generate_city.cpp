@@ -93,6 +93,8 @@ std::vector<IdentifiedLot> lotsOf(const CityBlock &block, const StreetNetwork &s
     return lots;
 }
 
+namespace {
+
 // The warning for pieces of blocks left without lots, at the city's place.
 void warnOfSlivers(size_t slivers, const FileLoc &where, std::vector<std::string> &warnings) {
     if (slivers == 0) return;
@@ -103,13 +105,39 @@ void warnOfSlivers(size_t slivers, const FileLoc &where, std::vector<std::string
                     place, slivers));
 }
 
+// Every block's lots, cut on all cores: a block's lots depend on the block, the streets and the
+// seed alone, so they are the same on any number of threads. An error is the first block's in
+// order, as one thread would meet it.
+std::vector<std::vector<IdentifiedLot>> lotsOfBlocks(const CityData &data, const StreetNetwork &streets,
+                                                     const SettingsMap &ruleFileSettings, uint32_t seed,
+                                                     size_t &slivers) {
+    std::vector<std::vector<IdentifiedLot>> lots(data.blocks.size());
+    std::vector<std::exception_ptr> errors(data.blocks.size());
+    std::vector<size_t> sliversOf(data.blocks.size(), 0);
+    tbb::parallel_for(size_t(0), data.blocks.size(), [&](size_t b) {
+        try {
+            const CityBlock &block = data.blocks[b];
+            lots[b] = lotsOf(block, streets, settingsFor(data, block, nullptr, ruleFileSettings), seed, &sliversOf[b]);
+        } catch (...) {
+            errors[b] = std::current_exception();
+        }
+    });
+    for (const std::exception_ptr &error : errors)
+        if (error) std::rethrow_exception(error);
+    for (size_t n : sliversOf) slivers += n;
+    return lots;
+}
+
+}  // namespace
+
 void cutLots(CityData &data, const SettingsMap &ruleFileSettings, uint32_t seed, std::vector<std::string> &warnings) {
-    StreetNetwork streets = streetNetworkOf(data);
     size_t slivers = 0;
-    for (CityBlock &block : data.blocks) {
+    std::vector<std::vector<IdentifiedLot>> lots =
+        lotsOfBlocks(data, streetNetworkOf(data), ruleFileSettings, seed, slivers);
+    for (size_t b = 0; b < data.blocks.size(); ++b) {
+        CityBlock &block = data.blocks[b];
         if (!block.lots.empty()) continue;
-        SettingsStack settings = settingsFor(data, block, nullptr, ruleFileSettings);
-        for (IdentifiedLot &lot : lotsOf(block, streets, settings, seed, &slivers)) {
+        for (IdentifiedLot &lot : lots[b]) {
             Footprint &f = lot.footprint;
             block.lots.push_back({std::move(f.points), std::move(f.streetEdges), f.base, {}, block.loc, lot.identity});
         }
@@ -174,29 +202,6 @@ void warnOfSharedId(std::unordered_map<uint32_t, FileLoc> &lotOfId, uint32_t id,
         fmt::format("{}: this lot's building has the id {} of the one at {} (a hash collision): they "
                     "share their random choices and their IndexBuilding id",
                     lot.toString(), id, first->second.toString()));
-}
-
-// Every block's lots, cut on all cores: a block's lots depend on the block, the streets and the
-// seed alone, so they are the same on any number of threads. An error is the first block's in
-// order, as one thread would meet it.
-std::vector<std::vector<IdentifiedLot>> lotsOfBlocks(const CityData &data, const StreetNetwork &streets,
-                                                     const SettingsMap &ruleFileSettings, uint32_t seed,
-                                                     size_t &slivers) {
-    std::vector<std::vector<IdentifiedLot>> lots(data.blocks.size());
-    std::vector<std::exception_ptr> errors(data.blocks.size());
-    std::vector<size_t> sliversOf(data.blocks.size(), 0);
-    tbb::parallel_for(size_t(0), data.blocks.size(), [&](size_t b) {
-        try {
-            const CityBlock &block = data.blocks[b];
-            lots[b] = lotsOf(block, streets, settingsFor(data, block, nullptr, ruleFileSettings), seed, &sliversOf[b]);
-        } catch (...) {
-            errors[b] = std::current_exception();
-        }
-    });
-    for (const std::exception_ptr &error : errors)
-        if (error) std::rethrow_exception(error);
-    for (size_t n : sliversOf) slivers += n;
-    return lots;
 }
 
 // A lot's building, ready to be made: its spec, its rule file, where the input describes it, and
