@@ -3,7 +3,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
+#include <string>
 
 #include <tbb/task_arena.h>
 
@@ -25,10 +27,23 @@ RenderScene exampleScene(const std::filesystem::path &file) {
     return buildRenderScene(readSceneText(text.str(), file.string(), file.parent_path()));
 }
 
+// Whether every file under ../shared the scene names is there (scenes/heuneburg-town.xml
+// stands on its DGM): a scene without its data is left out, as its golden test skips.
+bool hasItsSharedData(const std::filesystem::path &scene) {
+    std::ifstream in(scene);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string marker = "\"../../shared/";
+    for (size_t at = text.find(marker); at != std::string::npos; at = text.find(marker, at + 1)) {
+        size_t end = text.find('"', at + 1);
+        if (!std::filesystem::exists(scene.parent_path() / text.substr(at + 1, end - at - 1))) return false;
+    }
+    return true;
+}
+
 std::vector<std::filesystem::path> exampleScenes() {
     std::vector<std::filesystem::path> files;
     for (const auto &entry : std::filesystem::recursive_directory_iterator(test::sourceFile("scenes"))) {
-        if (entry.path().extension() == ".xml") files.push_back(entry.path());
+        if (entry.path().extension() == ".xml" && hasItsSharedData(entry.path())) files.push_back(entry.path());
     }
     std::sort(files.begin(), files.end());
     return files;
