@@ -1,10 +1,12 @@
 #include "io/mesh_import.h"
 
+#include <assimp/BaseImporter.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <fmt/format.h>
 #include <assimp/Importer.hpp>
 #include <cmath>
+#include <set>
 
 #include "core/error.h"
 #include "core/file_extension.h"
@@ -80,18 +82,39 @@ Mesh toMesh(const MapMesh &in, const std::filesystem::path &file) {
     return mesh;
 }
 
+// Leaves the importer only the readers that claim `extension` (lower case, without the dot).
+// Where they all turn a file down, Assimp would offer it to every other reader it has, and some
+// of those read past the end of a short file (5.2.5's MD5 token search, found by
+// fuzz/mesh_fuzzer.cpp): the extension decides the format. Assimp forgets the readers it is
+// told to unregister, so they are deleted here.
+void keepReadersOf(Assimp::Importer &importer, const std::string &extension) {
+    for (size_t i = importer.GetImporterCount(); i-- > 0;) {
+        Assimp::BaseImporter *reader = importer.GetImporter(i);
+        std::set<std::string> extensions;
+        reader->GetExtensionList(extensions);
+        if (extensions.count(extension)) continue;
+        importer.UnregisterLoader(reader);
+        delete reader;
+    }
+}
+
 }  // namespace
 
 Mesh importMesh(const std::filesystem::path &file) {
     if (!std::filesystem::is_regular_file(file)) throw InputError({file.string()}, "no such mesh file");
     // Assimp's PLY reader loops for ever on a malformed header line ("elemen 0") or a cut
     // body; veduta's own reader (io/ply_file.h) names the line instead.
-    if (lowercaseExtension(file) == ".ply") return toMesh(readPlyFile(file), file);
-    if (lowercaseExtension(file) == ".gml")
+    std::string extension = lowercaseExtension(file);
+    if (extension == ".ply") return toMesh(readPlyFile(file), file);
+    if (extension == ".gml")
         throw InputError({file.string()},
                          "a .gml file is no mesh; CityGML buildings come into a scene with "
                          "<citygml file=\"…\"/> (docs/citygml.md)");
     Assimp::Importer importer;
+    if (extension.empty())
+        throw InputError({file.string()},
+                         "a mesh file needs an extension that names its format (.obj, .gltf, .glb, …)");
+    keepReadersOf(importer, extension.substr(1));
     // Normals are the file's own; we do not invent smooth normals for faceted models. Assimp
     // checks what its reader built (face indices, counts) before the other steps use it.
     const aiScene *scene = importer.ReadFile(file.string(),

@@ -44,6 +44,25 @@ TEST_F(MeshImport, PlyWithAMisspeltHeaderLineIsRefusedAtOnce) {
     EXPECT_EQ(error.rfind(file.string() + ":8: ", 0), 0u) << error;
 }
 
+// A .gltf that no glTF reader takes: Assimp went on to offer it to all its readers, and the MD5
+// reader's token search read past the end of the file (found by fuzz/mesh_gltf under ASan).
+// Only the readers of the extension see the file now.
+TEST_F(MeshImport, AFileNoReaderOfItsExtensionTakesIsRefused) {
+    std::ifstream in(test::sourceFile("fuzz/regressions/mesh_gltf/md5_token_search_reads_past_the_end.gltf"),
+                     std::ios::binary);
+    std::string text((std::istreambuf_iterator<char>(in)), {});
+    ASSERT_FALSE(text.empty());
+    auto file = folder_.write("md5.gltf", text);
+    std::string error = test::inputErrorOf([&] { importMesh(file); });
+    EXPECT_EQ(error.rfind(file.string() + ": cannot read mesh: ", 0), 0u) << error;
+    // An OBJ in a file named .stl is an STL file to read, not an OBJ to guess.
+    auto misnamed = folder_.write("triangle.stl", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    EXPECT_NE(test::inputErrorOf([&] { importMesh(misnamed); }), "no error");
+    auto bare = folder_.write("triangle", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    EXPECT_EQ(test::inputErrorOf([&] { importMesh(bare); }),
+              bare.string() + ": a mesh file needs an extension that names its format (.obj, .gltf, .glb, …)");
+}
+
 TEST_F(MeshImport, CutPlyIsRefused) {
     std::string whole = kQuadHeader + kQuadBody;
     auto file = folder_.write("cut.ply", whole.substr(0, whole.size() - 8));
