@@ -325,3 +325,53 @@ def rosette_height(x, y):
 
 write_png("ornament_egg_and_dart_normal.png", O, O, 3, normal_map(cached(egg_and_dart_height, O), O, 6.0))
 write_png("ornament_rosette_normal.png", O, O, 3, normal_map(cached(rosette_height, O), O, 6.0))
+
+# --- Facades of the futuristic city's prisms (rules/futuristic/materials.xml) ---
+# Each image is one bay of 3 m by one storey of 3.5 m (texture_size="3 3.5"); the prisms repeat
+# it a whole number of times along and up each wall, so no pane is cut at a corner.
+
+
+def frame_distance(x, y):
+    """How far (0 … 0.5) a pixel lies from the tile's edge, as a fraction of the tile."""
+    u, v = (x + 0.5) / S, (y + 0.5) / S
+    return min(u, 1 - u, v, 1 - v)
+
+
+def curtain_diffuse(x, y):
+    v = (y + 0.5) / S
+    if frame_distance(x, y) < 0.03 or abs((x + 0.5) / S - 0.5) < 0.012:
+        return (0.72, 0.74, 0.77)  # anodised aluminium mullions and transoms
+    if v > 0.78:
+        return (0.1, 0.11, 0.13)  # the spandrel panel in front of the slab
+    g = 0.1 + 0.06 * (1 - v) + 0.03 * (fbm(x, y, S, 81, 3, 16) - 0.5)
+    return (g * 0.85, g, g * 1.2)
+
+
+def curtain_reflection(x, y):
+    v = (y + 0.5) / S
+    if frame_distance(x, y) < 0.03 or abs((x + 0.5) / S - 0.5) < 0.012:
+        return (0.3,)
+    return (0.35,) if v > 0.78 else (0.8,)
+
+
+def ribbon_diffuse(x, y):
+    v = (y + 0.5) / S
+    if 0.12 < v < 0.6:
+        if abs((x + 0.5) / S - 0.5) < 0.008 or frame_distance(x, y) < 0.008:
+            return (0.2, 0.21, 0.23)  # the thin frames between the panes
+        g = 0.12 + 0.05 * (0.6 - v) + 0.02 * (fbm(x, y, S, 83, 3, 16) - 0.5)
+        return (g * 0.9, g, g * 1.15)
+    joint = abs(v - 0.8) < 0.006 or abs((x + 0.5) / S - 0.25) < 0.004 or abs((x + 0.5) / S - 0.75) < 0.004
+    g = 0.78 + 0.04 * (fbm(x, y, S, 84, 3, 16) - 0.5)
+    return (g * 0.6,) * 3 if joint else (g, g * 0.99, g * 0.96)  # white composite panels
+
+
+def ribbon_reflection(x, y):
+    v = (y + 0.5) / S
+    return (0.75,) if 0.12 < v < 0.6 else (0.15,)
+
+
+write_png("facade_curtain_diffuse.png", S, S, 3, curtain_diffuse)
+write_png("facade_curtain_reflection.png", S, S, 1, curtain_reflection)
+write_png("facade_ribbon_diffuse.png", S, S, 3, ribbon_diffuse)
+write_png("facade_ribbon_reflection.png", S, S, 1, ribbon_reflection)

@@ -74,14 +74,14 @@ class SceneAssembler {
         if (d_.landscape)
             land = within(d_.landscape->loc, "<landscape>",
                           [&] { return readLandscape(*d_.landscape, d_.georeference, warnings_); });
-        std::vector<CityData> cities;
+        std::vector<SceneCity> cities;
         std::vector<LocalPolygon> streetAreas;
         for (const CityDesc &city : d_.cities) {
             cities.push_back(within(city.loc, elementName(city), [&] {
                 return readCity(city, d_.georeference, seedOf(city.seed), land ? &*land : nullptr);
             }));
             if (!d_.landscape) continue;
-            for (LocalPolygon &piece : streetAreaPieces(streetNetworkOf(cities.back())))
+            for (LocalPolygon &piece : streetAreaPieces(streetNetworkOf(cities.back().data)))
                 streetAreas.push_back(std::move(piece));
         }
         std::optional<LandscapeGround> landscape;

@@ -333,8 +333,8 @@ Vec2f growthCentre(const CityGrowthDesc &growth, const std::optional<Georeferenc
     return {float(centre.easting), float(centre.northing)};
 }
 
-CityData growSceneCity(const CityDesc &city, const std::optional<Georeference> &georeference, uint32_t seed,
-                       const LandscapeData *landscape) {
+SceneCity growSceneCity(const CityDesc &city, const std::optional<Georeference> &georeference, uint32_t seed,
+                        const LandscapeData *landscape) {
     const CityGrowthDesc &desc = *city.growth;
     if (!std::filesystem::is_regular_file(desc.streets))
         throw InputError(desc.streetsLoc, fmt::format("cannot read the street rule file {}", desc.streets.string()));
@@ -353,27 +353,31 @@ CityData growSceneCity(const CityDesc &city, const std::optional<Georeference> &
                        Vec2d{growth.centre.x, growth.centre.y}, GroundLimits{desc.maxGrade});
         growth.environment = &*ground;
     }
+    SceneCity read;
+    read.levels = {desc.levels, desc.levelSpacing, desc.liftReach, desc.streetThickness};
     std::vector<std::string> warnings;
-    CityData data = growCity(rules, growth, warnings);
-    for (const std::string &w : warnings) data.warnings.push_back(fmt::format("{}: {}", city.loc.toString(), w));
+    read.data = growCity(rules, growth, warnings);
     if (!desc.lots.empty()) {
-        data.settings["LotSubdivision"] = settingValue(desc.lots, desc.lotsLoc);
-        lotSettingsFrom(SettingsStack({&data.settings}));  // an unknown name is an error even without blocks
+        read.data.settings["LotSubdivision"] = settingValue(desc.lots, desc.lotsLoc);
+        lotSettingsFrom(SettingsStack({&read.data.settings}));  // an unknown name is an error even without blocks
     }
-    return data;
+    read.upperLevels = growUpperLevels(rules, growth, desc.levels, read.data.settings, warnings);
+    for (const std::string &w : warnings) read.data.warnings.push_back(fmt::format("{}: {}", city.loc.toString(), w));
+    return read;
 }
 
-CityData readCity(const CityDesc &city, const std::optional<Georeference> &georeference, uint32_t seed,
-                  const LandscapeData *landscape) {
+SceneCity readCity(const CityDesc &city, const std::optional<Georeference> &georeference, uint32_t seed,
+                   const LandscapeData *landscape) {
     if (!city.growth && !std::filesystem::is_regular_file(city.file))
         throw InputError(city.fileLoc, fmt::format("cannot read the city file {}", city.file.string()));
-    CityData data = city.growth ? growSceneCity(city, georeference, seed, landscape) : readCityFile(city, georeference);
-    if (data.ruleFiles.empty() && !city.rules.empty()) {
+    SceneCity read = city.growth ? growSceneCity(city, georeference, seed, landscape)
+                                 : SceneCity{readCityFile(city, georeference), {}, {}};
+    if (read.data.ruleFiles.empty() && !city.rules.empty()) {
         if (!std::filesystem::is_regular_file(city.rules))
             throw InputError(city.rulesLoc, fmt::format("cannot read the rule file {}", city.rules.string()));
-        data.ruleFiles.push_back(city.rules);
+        read.data.ruleFiles.push_back(city.rules);
     }
-    return data;
+    return read;
 }
 
 namespace {
@@ -394,10 +398,26 @@ uint32_t withWarnings(std::vector<std::string> &out, Build build) {
 
 }  // namespace
 
-uint32_t generateCity(const CityDesc &city, const CityData &data, uint32_t seed, const LandscapeGround *landscape,
+// The ground's junctions, on the landscape's terrain where there is one.
+std::vector<Vec3f> groundJunctions(const CityData &data, const LandscapeGround *landscape) {
+    std::vector<Vec3f> junctions;
+    for (Vec2f p : junctionsOf(streetNetworkOf(data))) {
+        float z = 0;
+        if (landscape)
+            if (std::optional<double> ground = landscape->surface->heightAt({p.x, p.y})) z = float(*ground);
+        junctions.push_back(lift(p, z));
+    }
+    return junctions;
+}
+
+uint32_t generateCity(const CityDesc &city, const SceneCity &read, uint32_t seed, const LandscapeGround *landscape,
                       RenderSceneBuilder &builder, std::vector<std::string> &out) {
     return withWarnings(out, [&](std::vector<std::string> &warnings) {
-        return buildCity(data, seed, city.objectId, city.fileLoc, landscape, builder, warnings);
+        uint32_t built = buildCity(read.data, seed, city.objectId, city.fileLoc, landscape, builder, warnings);
+        if (read.upperLevels.empty()) return built;
+        return built +
+            buildUpperLevels(read.upperLevels, groundJunctions(read.data, landscape), read.levels, seed, city.objectId,
+                             builder);
     });
 }
 

@@ -10,6 +10,7 @@
 
 #include "city/city_data.h"
 #include "city/footprint.h"
+#include "city/futuristic_city.h"
 #include "city/street_geometry.h"
 #include "description/scene_description.h"
 #include "geo/generate_landscape.h"
@@ -26,21 +27,28 @@ namespace veduta {
 // before the city is built on it. A <generate> (city.growth) grows the city from its street
 // rules with `seed` (the city's resolved seed) instead, at its centre, with the growth's
 // warnings at the element; on the scene's `landscape` (read, not yet built) its streets keep
-// off slopes too steep, water, forest and the land beyond the DGM (ground_environment.h).
+// off slopes too steep, water, forest and the land beyond the DGM (ground_environment.h); with
+// levels > 1 the same rules grow its upper levels too (futuristic_city.h).
 // Throws InputError.
-CityData readCity(const CityDesc &city, const std::optional<Georeference> &georeference, uint32_t seed,
-                  const LandscapeData *landscape = nullptr);
+struct SceneCity {
+    CityData data;  // the ground level
+    std::vector<UpperLevel> upperLevels;
+    StreetLevels levels;
+};
+SceneCity readCity(const CityDesc &city, const std::optional<Georeference> &georeference, uint32_t seed,
+                   const LandscapeData *landscape = nullptr);
 
 // Builds the streets and every lot of the city read by readCity with `seed`, the city's
 // resolved seed (buildRenderScene). Each building's id is cityBuildingId of the city's object
 // id and its lot's identity (lotsOf), so adding a lot or a block leaves the other buildings as
-// they were. Returns how many buildings it built. With a `landscape`, the streets lie on its
+// they were. A futuristic city's upper levels follow (buildUpperLevels), over the ground's
+// junctions. Returns how many buildings it built. With a `landscape`, the streets lie on its
 // terrain (streetsOnTerrain) and every building stands on its ground with a plinth, as a
 // <buildings> building without base does: the terrain decides, the points' heights u are
 // ignored (a warning says so where one is not 0). Warnings (a clockwise block, probabilities
 // renormalised, two buildings of one id …) are appended once each as "file:line:col: message";
 // errors throw InputError.
-uint32_t generateCity(const CityDesc &city, const CityData &data, uint32_t seed, const LandscapeGround *landscape,
+uint32_t generateCity(const CityDesc &city, const SceneCity &read, uint32_t seed, const LandscapeGround *landscape,
                       RenderSceneBuilder &builder, std::vector<std::string> &warnings);
 // The same for a city made in memory (as the benchmark does); errors about the city as a
 // whole (no rule file) have no place in a file.

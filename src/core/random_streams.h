@@ -30,6 +30,8 @@ enum class RandomStream : uint32_t {
     TreeTurtle = 2,                      // a tree's angle, length and width jitter (under its TreeModel key)
     TreePlacement = 0x54524550u,         // "TREP": a tree's place, kind, variant, size and turn in its object
     StreetRules = 0x5354524cu,           // "STRL": a street L-system's U[], random(), assignment odds and rule choice
+    StreetLevel = 0x534c564cu,           // "SLVL": the seed of a futuristic city's upper street level
+    LiftStop = 0x4c494654u,              // "LIFT": where a lift's platform stands on its way
 
     // Identities: not random, but hashed like the draws and kept apart from them.
     CityDataBlock = 0x4344424bu,  // "CDBK": a CityData block, from the ids of its outline's points
@@ -58,6 +60,8 @@ inline constexpr RandomStream kAllRandomStreams[] = {
     RandomStream::TreeTurtle,
     RandomStream::TreePlacement,
     RandomStream::StreetRules,
+    RandomStream::StreetLevel,
+    RandomStream::LiftStop,
     RandomStream::CityDataBlock,
     RandomStream::CityDataLot,
     RandomStream::OsmWay,

@@ -150,6 +150,11 @@ struct CityGrowthDesc {
     float maxGrade = 0.12f;  // the steepest a street may climb on a <landscape>'s DGM, rise over run
     std::string lots;        // the LotSubdivision of its blocks; empty: the rule file's, or perimeter lots
     FileLoc lotsLoc;
+    // A futuristic city's street levels (docs/futuristic.md), the ground's included: 1 is an
+    // ordinary town. The upper ones lie `levelSpacing` apart, joined by lifts between junctions
+    // at most `liftReach` apart in plan; their streets are `streetThickness` thick.
+    unsigned levels = 1;
+    float levelSpacing = 40, liftReach = 15, streetThickness = 1;
 };
 
 struct CityDesc {

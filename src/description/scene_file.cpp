@@ -446,6 +446,11 @@ class SceneFileReader {
         growth.minorWidth = e.number("minor_width", growth.minorWidth, 1, 100);
         growth.majorShare = e.number("major_share", growth.majorShare, 0, 1);
         growth.maxGrade = e.number("max_grade", growth.maxGrade, 0.001f, 1);
+        growth.levels = unsigned(e.integer("levels", int(growth.levels), 1, 16));
+        growth.streetThickness = e.number("street_thickness", growth.streetThickness, 0.1f, 10);
+        // A level's prisms stand up to 18 m high on its streets, under the next level's streets.
+        growth.levelSpacing = e.number("level_spacing", growth.levelSpacing, 18 + growth.streetThickness, 1000);
+        growth.liftReach = e.number("lift_reach", growth.liftReach, 0, 1000);
         if (e.has("lots")) {
             growth.lots = e.string("lots");
             growth.lotsLoc = e.attributeLoc("lots");
