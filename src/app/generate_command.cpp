@@ -29,6 +29,7 @@
 #include "io/output_files.h"
 #include "streets/street_graph_dot.h"
 #include "streets/street_rule_file.h"
+#include "streets/tensor_field.h"
 
 namespace veduta {
 
@@ -57,8 +58,9 @@ fs::path patternFile(const std::string &pattern) {
     if (fs::is_regular_file(pattern)) return pattern;
     for (const char *shipped : {"grid", "organic", "radial"})
         if (pattern == shipped) return shippedFile(fs::path("rules/streets") / (pattern + ".txt"), "--pattern");
-    throw InputError(FileLoc{"--pattern"},
-                     fmt::format("'{}' is no pattern: give grid, organic, radial or a street rule file", pattern));
+    throw InputError(
+        FileLoc{"--pattern"},
+        fmt::format("'{}' is no pattern: give grid, organic, radial, tensor or a street rule file", pattern));
 }
 
 // How the file was made, for its comment (which XML does not let hold "--").
@@ -117,7 +119,10 @@ void runGenerate(const GenerateArgs &args) {
     fs::path rules = args.rules.empty() ? shippedBuildingRules("--rules") : fs::path(args.rules);
     if (!fs::is_regular_file(rules))
         throw InputError(FileLoc{"--rules"}, fmt::format("cannot read the rule file {}", rules.string()));
-    StreetRuleSet streetRules = readStreetRuleFile(patternFile(args.pattern));
+    // "tensor" before any file of that name: the pattern names are the option's own words.
+    bool tensor = args.pattern == "tensor";
+    std::optional<StreetRuleSet> streetRules;
+    if (!tensor) streetRules = readStreetRuleFile(patternFile(args.pattern));
     BuildingRules buildingRules(rules);
 
     CityGrowth growth;
@@ -134,7 +139,8 @@ void runGenerate(const GenerateArgs &args) {
         growth.environment = &*ground;
     }
     CityGrowthReport report;
-    CityData city = growCity(streetRules, growth, warnings, &report);
+    CityData city = tensor ? traceCity(townField(args.seed, args.radius), {}, growth, warnings, &report)
+                           : growCity(*streetRules, growth, warnings, &report);
     city.ruleFiles = {fs::absolute(rules)};
     if (!args.lots.empty()) {
         city.settings["LotSubdivision"] = settingValue(args.lots, FileLoc{"--lots"});
@@ -145,20 +151,23 @@ void runGenerate(const GenerateArgs &args) {
     writeOutputs(args, city, report, epsg);
     if (args.quiet) return;
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("expansions: %zu\nstreets: %zu\nmajor_streets: %zu\nblocks: %zu\nlots: %zu\nseconds: %.3f\n",
-                report.growth.expansions, city.streets.size(), report.majorStreets, city.blocks.size(), lotCount(city),
-                seconds);
+    if (tensor) std::printf("streamlines: %zu\n", report.streamlines);
+    else std::printf("expansions: %zu\n", report.growth.expansions);
+    std::printf("streets: %zu\nmajor_streets: %zu\nblocks: %zu\nlots: %zu\nseconds: %.3f\n", city.streets.size(),
+                report.majorStreets, city.blocks.size(), lotCount(city), seconds);
 }
 
 }  // namespace
 
 void addGenerateCommand(CLI::App &app, int &exitCode) {
     auto args = std::make_shared<GenerateArgs>();
-    CLI::App *cmd =
-        app.add_subcommand("generate",
-                           "Grow a town from a street L-system (grid, organic, radial or a rule file) and write it as "
-                           "CityData, with GeoJSON/GeoPackage layers and a DOT graph");
-    cmd->add_option("--pattern", args->pattern, "grid, organic, radial (rules/streets/) or a street rule file")
+    CLI::App *cmd = app.add_subcommand(
+        "generate",
+        "Grow a town from a street L-system (grid, organic, radial or a rule file) or a tensor field and write it as "
+        "CityData, with GeoJSON/GeoPackage layers and a DOT graph");
+    cmd->add_option("--pattern", args->pattern,
+                    "grid, organic, radial (rules/streets/), a street rule file, or tensor (streets traced through a "
+                    "seeded tensor field)")
         ->capture_default_str();
     cmd->add_option("--centre", args->centre, "Where the town lies: E N, map coordinates of --crs (else local metres)")
         ->expected(2)

@@ -18,7 +18,7 @@ uint32_t levelSeed(uint32_t seed, unsigned index) {
     return index == 0 ? seed : hashValues({seed, index, streamTag(RandomStream::StreetLevel)});
 }
 
-std::vector<UpperLevel> growUpperLevels(const StreetRuleSet &rules, const CityGrowth &ground, unsigned count,
+std::vector<UpperLevel> growUpperLevels(const GrowLevel &grow, const CityGrowth &ground, unsigned count,
                                         const SettingsMap &lotSettings, std::vector<std::string> &warnings) {
     std::vector<UpperLevel> levels;
     for (unsigned index = 1; index < count; ++index) {
@@ -26,7 +26,7 @@ std::vector<UpperLevel> growUpperLevels(const StreetRuleSet &rules, const CityGr
         growth.seed = levelSeed(ground.seed, index);
         growth.environment = nullptr;
         std::vector<std::string> found;
-        UpperLevel level{index, growth.seed, growCity(rules, growth, found)};
+        UpperLevel level{index, growth.seed, grow(growth, found)};
         level.city.settings = lotSettings;
         cutLots(level.city, {}, level.seed, found);
         for (const std::string &w : found) warnings.push_back(fmt::format("level {}: {}", index, w));

@@ -5,6 +5,7 @@
 // slabs with crossing solids, their buildings floating prisms of U[7, 18] m. docs/futuristic.md.
 #pragma once
 
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -13,7 +14,6 @@
 #include "city/grown_city.h"
 #include "city/street_geometry.h"
 #include "scene/render_scene.h"
-#include "streets/street_rules.h"
 
 namespace veduta {
 
@@ -35,10 +35,14 @@ struct UpperLevel {
 // The seed of level `index` of a city grown with `seed`: level 0, the ground, keeps the city's.
 uint32_t levelSeed(uint32_t seed, unsigned index);
 
-// Levels 1 … count − 1, each grown with `ground`'s rules, window and limits but its own seed and
-// no environment (they float over slopes and water alike), its blocks cut into lots with
-// `lotSettings`. Warnings: growCity's and cutLots', each after "level n: ".
-std::vector<UpperLevel> growUpperLevels(const StreetRuleSet &rules, const CityGrowth &ground, unsigned count,
+// How the ground's streets grew, for the levels above to grow alike: growCity with its rules, or
+// traceCity with its field.
+using GrowLevel = std::function<CityData(const CityGrowth &, std::vector<std::string> &)>;
+
+// Levels 1 … count − 1, each grown as the ground was, with `ground`'s window and limits but its
+// own seed and no environment (they float over slopes and water alike), its blocks cut into lots
+// with `lotSettings`. Warnings: the growth's and cutLots', each after "level n: ".
+std::vector<UpperLevel> growUpperLevels(const GrowLevel &grow, const CityGrowth &ground, unsigned count,
                                         const SettingsMap &lotSettings, std::vector<std::string> &warnings);
 
 // The nodes where three or more streets meet: where a lift may stop.

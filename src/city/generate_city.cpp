@@ -336,9 +336,20 @@ Vec2f growthCentre(const CityGrowthDesc &growth, const std::optional<Georeferenc
 SceneCity growSceneCity(const CityDesc &city, const std::optional<Georeference> &georeference, uint32_t seed,
                         const LandscapeData *landscape) {
     const CityGrowthDesc &desc = *city.growth;
-    if (!std::filesystem::is_regular_file(desc.streets))
-        throw InputError(desc.streetsLoc, fmt::format("cannot read the street rule file {}", desc.streets.string()));
-    StreetRuleSet rules = readStreetRuleFile(desc.streets);
+    GrowLevel grow;
+    if (desc.tensor) {
+        grow = [](const CityGrowth &growth, std::vector<std::string> &warnings) {
+            return traceCity(townField(growth.seed, growth.radius), {}, growth, warnings);
+        };
+    } else {
+        if (!std::filesystem::is_regular_file(desc.streets))
+            throw InputError(desc.streetsLoc,
+                             fmt::format("cannot read the street rule file {}", desc.streets.string()));
+        grow = [rules = readStreetRuleFile(desc.streets)](const CityGrowth &growth,
+                                                          std::vector<std::string> &warnings) {
+            return growCity(rules, growth, warnings);
+        };
+    }
     CityGrowth growth;
     growth.centre = growthCentre(desc, georeference);
     growth.radius = desc.radius;
@@ -356,12 +367,12 @@ SceneCity growSceneCity(const CityDesc &city, const std::optional<Georeference> 
     SceneCity read;
     read.levels = {desc.levels, desc.levelSpacing, desc.liftReach, desc.streetThickness};
     std::vector<std::string> warnings;
-    read.data = growCity(rules, growth, warnings);
+    read.data = grow(growth, warnings);
     if (!desc.lots.empty()) {
         read.data.settings["LotSubdivision"] = settingValue(desc.lots, desc.lotsLoc);
         lotSettingsFrom(SettingsStack({&read.data.settings}));  // an unknown name is an error even without blocks
     }
-    read.upperLevels = growUpperLevels(rules, growth, desc.levels, read.data.settings, warnings);
+    read.upperLevels = growUpperLevels(grow, growth, desc.levels, read.data.settings, warnings);
     for (const std::string &w : warnings) read.data.warnings.push_back(fmt::format("{}: {}", city.loc.toString(), w));
     return read;
 }

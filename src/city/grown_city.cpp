@@ -43,26 +43,10 @@ CityData cityOf(const std::vector<PlanarPoint> &points, const std::vector<Planar
     return city;
 }
 
-}  // namespace
-
-CityData growCity(const StreetRuleSet &rules, const CityGrowth &growth, std::vector<std::string> &warnings,
-                  CityGrowthReport *report) {
-    CityGrowthReport local;
-    CityGrowthReport &r = report ? *report : local;
-    SeededDraws draws(growth.seed);
-    WordGraph words(rules.initialWord);
-    StreetBuilder streets(words, growth.constraints, growth.environment);
-    StreetGrowth grower(words, rules.rules, streets.nodeQuery(), draws, &streets);
-    r.growth = grower.grow({{0, 0}, growth.radius}, growth.limits);
-    r.streets = streets.counts();
-    warnings.insert(warnings.end(), grower.warnings().begin(), grower.warnings().end());
-    if (r.growth.stop != GrowthStop::Exhausted)
-        warnings.push_back(
-            fmt::format("the street growth stopped at a limit after {} expansions, with {} "
-                        "placeholders left: the town is smaller than its window",
-                        r.growth.expansions, grower.pendingCount()));
-
-    const StreetGraph &graph = streets.graph();
+// The city of a street graph in the rules' frame: its ground level's streets, classified, and
+// its blocks, moved to the growth's centre. Fills the report's graph, block and street counts.
+CityData cityOfGraph(const StreetGraph &graph, const CityGrowth &growth, std::vector<std::string> &warnings,
+                     CityGrowthReport &r) {
     std::vector<PlanarEdge> edges = groundEdges(graph, growth.constraints, r.otherLevelStreets);
     std::vector<PlanarPoint> points;
     // Moved in float, as the blocks' outlines are kept: a point and the block corners on it agree.
@@ -95,6 +79,43 @@ CityData growCity(const StreetRuleSet &rules, const CityGrowth &growth, std::vec
             fmt::format("{} streets above or below the ground level were left out", r.otherLevelStreets));
     r.graph = graph;
     return city;
+}
+
+}  // namespace
+
+CityData growCity(const StreetRuleSet &rules, const CityGrowth &growth, std::vector<std::string> &warnings,
+                  CityGrowthReport *report) {
+    CityGrowthReport local;
+    CityGrowthReport &r = report ? *report : local;
+    SeededDraws draws(growth.seed);
+    WordGraph words(rules.initialWord);
+    StreetBuilder streets(words, growth.constraints, growth.environment);
+    StreetGrowth grower(words, rules.rules, streets.nodeQuery(), draws, &streets);
+    r.growth = grower.grow({{0, 0}, growth.radius}, growth.limits);
+    r.streets = streets.counts();
+    warnings.insert(warnings.end(), grower.warnings().begin(), grower.warnings().end());
+    if (r.growth.stop != GrowthStop::Exhausted)
+        warnings.push_back(
+            fmt::format("the street growth stopped at a limit after {} expansions, with {} "
+                        "placeholders left: the town is smaller than its window",
+                        r.growth.expansions, grower.pendingCount()));
+    return cityOfGraph(streets.graph(), growth, warnings, r);
+}
+
+CityData traceCity(const TensorField &field, const StreamlineSettings &settings, const CityGrowth &growth,
+                   std::vector<std::string> &warnings, CityGrowthReport *report) {
+    CityGrowthReport local;
+    CityGrowthReport &r = report ? *report : local;
+    TracedStreets traced =
+        traceStreets(field, {{0, 0}, growth.radius}, settings, growth.constraints, growth.environment);
+    r.streets = traced.counts;
+    r.streamlines = traced.streamlines.size();
+    if (traced.limitReached)
+        warnings.push_back(
+            fmt::format("the tracing stopped at its limit of {} streamlines: the town is smaller "
+                        "than its window",
+                        settings.maxStreamlines));
+    return cityOfGraph(traced.graph, growth, warnings, r);
 }
 
 }  // namespace veduta

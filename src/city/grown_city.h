@@ -15,6 +15,8 @@
 #include "streets/street_growth.h"
 #include "streets/street_hierarchy.h"
 #include "streets/street_rules.h"
+#include "streets/tensor_field.h"
+#include "streets/tensor_streets.h"
 
 namespace veduta {
 
@@ -41,6 +43,7 @@ struct CityGrowthReport {
     size_t blocks = 0;
     size_t blocksWithStreetsInside = 0;  // left out: generateCity cuts no block with a hole
     size_t otherLevelStreets = 0;        // left out: only the ground level becomes a city yet
+    size_t streamlines = 0;              // traced (traceCity); 0 for a town grown by rules
 };
 
 // The city the rules grow: a point per street vertex (heights 0: generateCity puts the city on
@@ -50,5 +53,11 @@ struct CityGrowthReport {
 // and why.
 CityData growCity(const StreetRuleSet &rules, const CityGrowth &growth, std::vector<std::string> &warnings,
                   CityGrowthReport *report = nullptr);
+
+// The same for streets traced through a tensor field (tensor_streets.h; docs/tensor-streets.md)
+// in the rules' frame, instead of grown by rules: the window, centre, seed, constraints,
+// hierarchy and environment of `growth` as growCity takes them (its limits are the rules').
+CityData traceCity(const TensorField &field, const StreamlineSettings &settings, const CityGrowth &growth,
+                   std::vector<std::string> &warnings, CityGrowthReport *report = nullptr);
 
 }  // namespace veduta

@@ -32,6 +32,8 @@ enum class RandomStream : uint32_t {
     StreetRules = 0x5354524cu,           // "STRL": a street L-system's U[], random(), assignment odds and rule choice
     StreetLevel = 0x534c564cu,           // "SLVL": the seed of a futuristic city's upper street level
     LiftStop = 0x4c494654u,              // "LIFT": where a lift's platform stands on its way
+    TensorNoise = 0x544e5349u,           // "TNSI": the noise that turns a tensor field's directions
+    TensorLayout = 0x544c4159u,          // "TLAY": the basis fields of a seeded tensor-field town
 
     // Identities: not random, but hashed like the draws and kept apart from them.
     CityDataBlock = 0x4344424bu,  // "CDBK": a CityData block, from the ids of its outline's points
@@ -62,6 +64,8 @@ inline constexpr RandomStream kAllRandomStreams[] = {
     RandomStream::StreetRules,
     RandomStream::StreetLevel,
     RandomStream::LiftStop,
+    RandomStream::TensorNoise,
+    RandomStream::TensorLayout,
     RandomStream::CityDataBlock,
     RandomStream::CityDataLot,
     RandomStream::OsmWay,

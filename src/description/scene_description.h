@@ -141,6 +141,7 @@ struct BuildingGroupDesc {
 struct CityGrowthDesc {
     std::filesystem::path streets;  // the street rule file, resolved against the scene's folder
     FileLoc streetsLoc;
+    bool tensor = false;  // pattern="tensor": the streets are traced through a seeded tensor field instead
     // Where the town lies: map coordinates of the scene's CRS, or local metres without a
     // <georeference>.
     double centreE = 0, centreN = 0;

@@ -433,8 +433,17 @@ class SceneFileReader {
         city.loc = e.loc();
         city.fileLoc = city.loc;
         CityGrowthDesc &growth = city.growth.emplace();
-        growth.streets = pathAttribute(e, "streets");
-        growth.streetsLoc = e.attributeLoc("streets");
+        if (e.has("pattern")) {
+            if (e.has("streets")) e.failAt("pattern", "give either streets (a rule file) or pattern, not both");
+            if (e.string("pattern") != "tensor")
+                e.failAt("pattern",
+                         fmt::format("unknown pattern '{}'; the one pattern without a rule file is tensor",
+                                     e.string("pattern")));
+            growth.tensor = true;
+        } else {
+            growth.streets = pathAttribute(e, "streets");
+            growth.streetsLoc = e.attributeLoc("streets");
+        }
         city.rules = pathAttribute(e, "rules");
         city.rulesLoc = e.attributeLoc("rules");
         std::vector<double> centre = e.has("centre") ? e.doubles("centre") : std::vector<double>{0, 0};

@@ -12,6 +12,7 @@ trap 'rm -rf "$work"' EXIT
 run generate --help
 check "help" rc_is 0
 check "help names the patterns" out_has "grid, organic, radial"
+check "help names the tensor field" out_has "tensor (streets traced"
 
 run generate --pattern grid --radius 200 --seed 3 -o "$work/town.xml" --geojson "$work/gis" \
     --gpkg "$work/town.gpkg" --dot "$work/streets.dot"
@@ -44,6 +45,16 @@ XML
 run preview "$work/scene.xml" -q -o "$work/town.png"
 check "the town previews" rc_is 0
 check "preview written" test -s "$work/town.png"
+
+# Through a tensor field (docs/tensor-streets.md): streamlines instead of expansions, the same
+# outputs, the same town for the same seed.
+run generate --pattern tensor --radius 300 --seed 5 -o "$work/tensor.xml" --geojson "$work/tensor-gis"
+check "tensor town" rc_is 0
+check "tensor streamlines" bash -c "grep -q '^streamlines: [1-9]' '$work/out'"
+check "tensor lots" bash -c "grep -q '^lots: [1-9]' '$work/out'"
+check "tensor layers" test -s "$work/tensor-gis/lots.geojson"
+run generate --pattern tensor --radius 300 --seed 5 -o "$work/tensor-again.xml" -q
+check "the same seed traces the same town" cmp -s "$work/tensor.xml" "$work/tensor-again.xml"
 
 # In map coordinates: the CityData and the layers in the CRS given.
 run generate --pattern radial --radius 150 --centre 487000 5425000 --crs EPSG:25832 -o "$work/utm.xml" \

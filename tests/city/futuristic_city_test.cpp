@@ -41,7 +41,10 @@ TEST(UpperLevels, GrowWithTheirOwnSeedsAndCutLotsInsideTheirBlocks) {
     ground.radius = 250;
     ground.seed = 5;
     std::vector<std::string> warnings;
-    std::vector<UpperLevel> levels = growUpperLevels(rules, ground, 3, {}, warnings);
+    auto grow = [&](const CityGrowth &growth, std::vector<std::string> &found) {
+        return growCity(rules, growth, found);
+    };
+    std::vector<UpperLevel> levels = growUpperLevels(grow, ground, 3, {}, warnings);
     ASSERT_EQ(levels.size(), 2u);
     EXPECT_EQ(levels[0].index, 1u);
     EXPECT_EQ(levels[1].index, 2u);

@@ -69,6 +69,24 @@ TEST(GeneratedTown, IsTheSameOnAnyNumberOfThreads) {
     EXPECT_EQ(sceneHash(one), sceneHash(four));
 }
 
+std::string tensorScene(const std::string &attributes) {
+    return fmt::format(
+        "<scene version=\"1\"><generate {} rules=\"../rules/gruenderzeit/FacadeStructure.xml\"/></scene>", attributes);
+}
+
+// pattern="tensor": streets traced through the seeded field, built as any grown town.
+TEST(GeneratedTown, ATensorFieldTownIsBuiltAsAnyOther) {
+    RenderScene built = build(tensorScene("pattern=\"tensor\" radius=\"250\" seed=\"8\""));
+    EXPECT_GT(built.buildings.size(), 40u);
+    EXPECT_EQ(sceneHash(built), sceneHash(build(tensorScene("pattern=\"tensor\" radius=\"250\" seed=\"8\""))));
+    EXPECT_NE(sceneHash(built), sceneHash(build(tensorScene("pattern=\"tensor\" radius=\"250\" seed=\"9\""))));
+    EXPECT_EQ(
+        test::inputErrorOf([] { build(tensorScene("pattern=\"tensor\" streets=\"../rules/streets/grid.txt\"")); }),
+        "test.xml:1:39: give either streets (a rule file) or pattern, not both");
+    EXPECT_EQ(test::inputErrorOf([] { build(tensorScene("pattern=\"voronoi\"")); }),
+              "test.xml:1:39: unknown pattern 'voronoi'; the one pattern without a rule file is tensor");
+}
+
 TEST(GeneratedTown, LiesAtItsCentreInTheScenesCrs) {
     RenderScene local = build(scene("radius=\"150\" centre=\"400 -300\""));
     Vec2f middle = streetsMiddle(local);

@@ -37,8 +37,11 @@ struct Case {
 class GrownLots : public testing::TestWithParam<Case> {};
 
 TEST_P(GrownLots, LieInsideTheirBlocksApartFromOneAnother) {
-    StreetRuleSet rules =
-        readStreetRuleFile(test::sourceFile(std::string("rules/streets/") + GetParam().pattern + ".txt"));
+    // The tensor field is the one pattern without a rule file (docs/tensor-streets.md).
+    bool tensor = std::string(GetParam().pattern) == "tensor";
+    StreetRuleSet rules;
+    if (!tensor)
+        rules = readStreetRuleFile(test::sourceFile(std::string("rules/streets/") + GetParam().pattern + ".txt"));
     bool schrader = std::string(GetParam().lots) == "schrader";
     size_t lots = 0;
     for (uint32_t seed = 1; seed <= 5; ++seed) {
@@ -47,7 +50,8 @@ TEST_P(GrownLots, LieInsideTheirBlocksApartFromOneAnother) {
         growth.radius = 300;
         growth.seed = seed;
         std::vector<std::string> warnings;
-        CityData city = growCity(rules, growth, warnings);
+        CityData city = tensor ? traceCity(townField(seed, growth.radius), {}, growth, warnings)
+                               : growCity(rules, growth, warnings);
         city.settings["LotSubdivision"] = settingValue(GetParam().lots, {});
         ASSERT_NO_THROW(cutLots(city, {}, seed, warnings));
         for (const CityBlock &block : city.blocks) {
@@ -77,7 +81,8 @@ TEST_P(GrownLots, LieInsideTheirBlocksApartFromOneAnother) {
 INSTANTIATE_TEST_SUITE_P(Patterns, GrownLots,
                          testing::Values(Case{"grid", "perimeter"}, Case{"organic", "perimeter"},
                                          Case{"radial", "perimeter"}, Case{"grid", "schrader"},
-                                         Case{"organic", "schrader"}, Case{"radial", "schrader"}),
+                                         Case{"organic", "schrader"}, Case{"radial", "schrader"},
+                                         Case{"tensor", "perimeter"}, Case{"tensor", "schrader"}),
                          [](const testing::TestParamInfo<Case> &c) {
                              return std::string(c.param.pattern) + "_" + c.param.lots;
                          });
