@@ -137,6 +137,7 @@ void runGenerate(const GenerateArgs &args) {
         ground.emplace(&land->grid, frame, streetObstacles(land->objects, frame), Vec2d{0, 0},
                        GroundLimits{args.maxGrade});
         growth.environment = &*ground;
+        growth.roads = existingRoads(land->objects, frame, {0, 0}, args.radius);
     }
     CityGrowthReport report;
     CityData city = tensor ? traceCity(townField(args.seed, args.radius), {}, growth, warnings, &report)

@@ -25,6 +25,7 @@ std::vector<UpperLevel> growUpperLevels(const GrowLevel &grow, const CityGrowth 
         CityGrowth growth = ground;
         growth.seed = levelSeed(ground.seed, index);
         growth.environment = nullptr;
+        growth.roads.clear();  // the ground's roads stay on the ground
         std::vector<std::string> found;
         UpperLevel level{index, growth.seed, grow(growth, found)};
         level.city.settings = lotSettings;

@@ -40,7 +40,7 @@ uint32_t levelSeed(uint32_t seed, unsigned index);
 using GrowLevel = std::function<CityData(const CityGrowth &, std::vector<std::string> &)>;
 
 // Levels 1 … count − 1, each grown as the ground was, with `ground`'s window and limits but its
-// own seed and no environment (they float over slopes and water alike), its blocks cut into lots
+// own seed, no environment (they float over slopes and water alike) and no roads, its blocks cut into lots
 // with `lotSettings`. Warnings: the growth's and cutLots', each after "level n: ".
 std::vector<UpperLevel> growUpperLevels(const GrowLevel &grow, const CityGrowth &ground, unsigned count,
                                         const SettingsMap &lotSettings, std::vector<std::string> &warnings);

@@ -360,9 +360,11 @@ SceneCity growSceneCity(const CityDesc &city, const std::optional<Georeference> 
     std::optional<GroundEnvironment> ground;
     if (landscape && georeference) {
         LocalFrame frame = MapProjection(crsByEpsg(georeference->epsg), *georeference).frame();
-        ground.emplace(&landscape->grid, frame, streetObstacles(landscape->objects, frame),
-                       Vec2d{growth.centre.x, growth.centre.y}, GroundLimits{desc.maxGrade});
+        Vec2d centre{growth.centre.x, growth.centre.y};
+        ground.emplace(&landscape->grid, frame, streetObstacles(landscape->objects, frame), centre,
+                       GroundLimits{desc.maxGrade});
         growth.environment = &*ground;
+        growth.roads = existingRoads(landscape->objects, frame, centre, growth.radius);
     }
     SceneCity read;
     read.levels = {desc.levels, desc.levelSpacing, desc.liftReach, desc.streetThickness};

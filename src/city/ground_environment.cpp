@@ -84,4 +84,55 @@ std::vector<LocalPolygon> streetObstacles(const std::vector<AtkisObject> &object
     return obstacles;
 }
 
+namespace {
+
+// The part of the segment from p to q within `reach` of the origin, as parameters t0 < t1 of
+// p + t (q − p) in [0, 1]; none when it misses the circle.
+std::optional<std::pair<double, double>> withinReach(Vec2d p, Vec2d q, double reach) {
+    Vec2d d{q.x - p.x, q.y - p.y};
+    double a = d.x * d.x + d.y * d.y, b = 2 * (p.x * d.x + p.y * d.y), c = p.x * p.x + p.y * p.y - reach * reach;
+    if (a == 0) return c <= 0 ? std::optional(std::pair(0.0, 1.0)) : std::nullopt;
+    double disc = b * b - 4 * a * c;
+    if (disc < 0) return std::nullopt;
+    double t0 = std::max(0.0, (-b - std::sqrt(disc)) / (2 * a)), t1 = std::min(1.0, (-b + std::sqrt(disc)) / (2 * a));
+    if (t0 >= t1) return std::nullopt;
+    return std::pair(t0, t1);
+}
+
+}  // namespace
+
+std::vector<std::vector<Vec2f>> existingRoads(const std::vector<AtkisObject> &objects, const LocalFrame &frame,
+                                              Vec2d centre, double reach) {
+    std::vector<std::vector<Vec2f>> roads;
+    for (const AtkisObject &o : objects) {
+        if (o.geometry != AtkisGeometry::Line || landClass(o) != LandClass::Road) continue;
+        for (const MapLine &line : o.lines) {
+            std::vector<Vec2f> run;
+            auto flush = [&] {
+                if (run.size() >= 2) roads.push_back(run);
+                run.clear();
+            };
+            auto local = [&](const MapPoint &m) {
+                return Vec2d{m.easting - frame.origin.easting - centre.x,
+                             m.northing - frame.origin.northing - centre.y};
+            };
+            for (size_t i = 0; i + 1 < line.size(); ++i) {
+                Vec2d p = local(line[i]), q = local(line[i + 1]);
+                std::optional<std::pair<double, double>> inside = withinReach(p, q, reach);
+                if (!inside) {
+                    flush();
+                    continue;
+                }
+                auto at = [&](double t) { return Vec2f{float(p.x + t * (q.x - p.x)), float(p.y + t * (q.y - p.y))}; };
+                if (inside->first > 0) flush();  // it comes in across the edge of the window
+                if (run.empty()) run.push_back(at(inside->first));
+                run.push_back(at(inside->second));
+                if (inside->second < 1) flush();  // and leaves it
+            }
+            flush();
+        }
+    }
+    return roads;
+}
+
 }  // namespace veduta

@@ -47,4 +47,10 @@ class GroundEnvironment final : public StreetEnvironment {
 // The outlines of the ATKIS areas no street crosses: water, standing and flowing, and forest.
 std::vector<LocalPolygon> streetObstacles(const std::vector<AtkisObject> &objects, const LocalFrame &frame);
 
+// The roads already on the map that a town grows onto (CityGrowth::roads): the ATKIS road lines
+// (LandClass::Road) in metres from `centre` of the frame, cut at the circle of `reach` round it:
+// each run of a line inside the circle, a piece crossing the circle ending on it.
+std::vector<std::vector<Vec2f>> existingRoads(const std::vector<AtkisObject> &objects, const LocalFrame &frame,
+                                              Vec2d centre, double reach);
+
 }  // namespace veduta

@@ -89,7 +89,7 @@ CityData growCity(const StreetRuleSet &rules, const CityGrowth &growth, std::vec
     CityGrowthReport &r = report ? *report : local;
     SeededDraws draws(growth.seed);
     WordGraph words(rules.initialWord);
-    StreetBuilder streets(words, growth.constraints, growth.environment);
+    StreetBuilder streets(words, growth.constraints, growth.environment, growth.roads);
     StreetGrowth grower(words, rules.rules, streets.nodeQuery(), draws, &streets);
     r.growth = grower.grow({{0, 0}, growth.radius}, growth.limits);
     r.streets = streets.counts();

@@ -32,6 +32,10 @@ struct CityGrowth {
     // The ground the streets may not cross (ground_environment.h), in the rules' frame; none:
     // open ground everywhere. It must outlive growCity.
     const StreetEnvironment *environment = nullptr;
+    // The roads already there (existingRoads, ground_environment.h), in the rules' frame: growCity
+    // seeds them into the street graph as static streets that the rules' streets meet, and they
+    // become streets of the city. traceCity does not take them yet.
+    std::vector<std::vector<Vec2f>> roads;
 };
 
 // What the growth came to, besides the city.

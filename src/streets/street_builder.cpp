@@ -14,13 +14,14 @@ constexpr float kSamePoint = 1e-3f;
 }  // namespace
 
 StreetBuilder::StreetBuilder(const WordGraph &words, const StreetConstraints &constraints,
-                             const StreetEnvironment *environment) :
+                             const StreetEnvironment *environment, std::span<const std::vector<Vec2f>> roads) :
     words_(words), constraints_(constraints), environment_(environment) {
     vertexOf_.assign(words.size(), kNoVertex);
     cutOff_.assign(words.size(), false);
     if (words.size() == 0) return;
     // The root stands where the turtle starts; the initial word's streets are drawn from there.
     vertexOf_[0] = graph_.addVertex(Turtle{}.position);
+    for (const std::vector<Vec2f> &road : roads) addRoad(road);
     for (NodeId id = 0; id < words.size(); ++id)
         if (words.node(id).word.symbol == 'F' && !cutOff_[id]) draw(kNoNode, words.node(id));
 }
@@ -97,6 +98,25 @@ SegmentStart StreetBuilder::startOf(NodeId id, const Vec3f &position) const {
     VertexId v = vertexOf(node->id);
     if (v != kNoVertex && length(graph_.vertex(v).position - position) <= kSamePoint) return {position, v};
     return {position};
+}
+
+namespace {
+
+constexpr float kSameRoadPoint = 1e-3f;
+
+}  // namespace
+
+void StreetBuilder::addRoad(std::span<const Vec2f> road) {
+    VertexId previous = kNoVertex;
+    for (Vec2f p : road) {
+        Vec3f at{p.x, p.y, 0};
+        VertexId v = kNoVertex;
+        for (VertexId near : graph_.verticesNear(at, at, kSameRoadPoint))
+            if (length(graph_.vertex(near).position - at) < kSameRoadPoint && graph_.vertex(near).isStatic) v = near;
+        if (v == kNoVertex) v = graph_.addVertex(at, true);
+        if (previous != kNoVertex && v != previous) graph_.addEdge(previous, v);
+        previous = v;
+    }
 }
 
 void StreetBuilder::draw(NodeId placeholder, const WordNode &f) {

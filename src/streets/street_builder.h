@@ -37,10 +37,15 @@ struct StreetCounts {
 
 class StreetBuilder final : public ExpansionObserver {
   public:
-    // The word graph's root is the first vertex. The words, and the environment when there is
-    // one, must outlive the builder.
+    // The word graph's root is the first vertex. `roads`, polylines in the ground plane, are the
+    // streets already there (an ATKIS or OSM road network): static vertices and edges, seeded
+    // before the initial word is drawn, which the rules' streets meet as any other street (they
+    // snap to them, end on them or cut them), so that a town grows onto the roads it is given.
+    // Consecutive road points closer than a millimetre are one; roads join where they share a
+    // point. The words, and the environment when there is one, must outlive the builder.
     explicit StreetBuilder(const WordGraph &words, const StreetConstraints &constraints = {},
-                           const StreetEnvironment *environment = nullptr);
+                           const StreetEnvironment *environment = nullptr,
+                           std::span<const std::vector<Vec2f>> roads = {});
 
     // ?I(angle, length, result) and ?E(…): the street the asking node's `&(angle)F(length)`
     // would draw, tried against the graph or the ground; corrects angle and length.
@@ -73,6 +78,7 @@ class StreetBuilder final : public ExpansionObserver {
     QueryResult queryGround(const WordNode &asking, std::span<float> inOut) const;
     SegmentStart startOf(NodeId id, const Vec3f &position) const;
     void draw(NodeId placeholder, const WordNode &f);
+    void addRoad(std::span<const Vec2f> road);
     SegmentPlan planFor(NodeId placeholder, const SegmentStart &start, const WordNode &f) const;
     void limitByGround(const Vec3f &from, SegmentPlan &plan) const;
     void cutOff(NodeId id);

@@ -76,6 +76,18 @@ run generate --pattern grid --radius 400 --seed 4 --centre 500000 5330150 --crs 
 check "hillside town at 15 %" rc_is 0
 check "at 15 % the grid climbs the hill" bash -c "[ \$(sed -n 's/^streets: //p' '$work/out') -gt \$((3 * $streets12)) ]"
 check "no point off the DGM at 15 %" awk -F'"' '/<Point id=.* e=/ { if ($4 < 499850 || $4 > 500150 || $6 < 5330000 || $6 > 5330300) bad = 1 } END { exit bad }' "$work/hill15.xml"
+# With the ATKIS roads of data/landscape (a Straße through 530300 5326780, 120 m south of the
+# centre): the road's points are static streets of the town, and the grid's streets end on it.
+land=$(dirname "$0")/../../data/landscape
+run generate --pattern grid --radius 250 --seed 2 --centre 530350 5326900 --crs EPSG:25832 --dgm "$land/dgm.asc" \
+    --max-grade 0.5 --atkis "$land/traffic.geojson" -o "$work/road.xml"
+check "town on a road" rc_is 0
+check "the road is a street of the town" grep -q '<Point id="[0-9]*" e="530300" n="5326780" />' "$work/road.xml"
+# The road runs 530000 5326760 – 530300 5326780 – 530600 5326790: no point lies south of it.
+check "nothing grows south of the road" awk -F'"' '/<Point id=.* e=/ {
+    road = $4 <= 530300 ? 5326760 + ($4 - 530000) * 20 / 300 : 5326780 + ($4 - 530300) * 10 / 300
+    if ($6 < road - 0.01) bad = 1 } END { exit bad }' "$work/road.xml"
+
 run generate --crs EPSG:4326 --centre 9 48 -o "$work/x.xml"
 check "a geographic CRS exits 1" rc_is 1
 check "a geographic CRS says so" err_has "not a projected CRS"

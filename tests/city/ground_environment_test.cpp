@@ -69,6 +69,33 @@ TEST(GroundEnvironment, ObstaclesAreTheWaterAndForestAreas) {
     EXPECT_EQ(obstacles[2][0].x, 30);  // in the local frame
 }
 
+TEST(GroundEnvironment, ExistingRoadsAreTheRoadLinesInTheWindow) {
+    auto line = [](int type, std::vector<MapPoint> points) {
+        AtkisObject o;
+        o.type = type;
+        o.geometry = AtkisGeometry::Line;
+        o.lines = {std::move(points)};
+        return o;
+    };
+    // A road leaving the window and coming back, a path, a river line.
+    std::vector<AtkisObject> objects = {line(3101, {{1000, 0}, {1050, 0}, {1300, 0}, {1060, 20}, {1040, 40}}),
+                                        line(3102, {{1000, 0}, {1000, 50}}), line(5101, {{1000, 0}, {1010, 50}})};
+    LocalFrame frame{{900, 0}};
+    std::vector<std::vector<Vec2f>> roads = existingRoads(objects, frame, {100, 0}, 100);
+    ASSERT_EQ(roads.size(), 2u);  // the road's two runs inside; the path and the river are no roads
+    auto points = [](const std::vector<Vec2f> &road) {
+        std::vector<std::pair<float, float>> out;
+        for (Vec2f p : road) out.emplace_back(p.x, p.y);
+        return out;
+    };
+    using Points = std::vector<std::pair<float, float>>;
+    // From the rules' origin at 1000 0, cut where the road crosses the window's edge (100 m out).
+    EXPECT_EQ(points(roads[0]), (Points{{0, 0}, {50, 0}, {100, 0}}));
+    ASSERT_EQ(roads[1].size(), 3u);
+    EXPECT_NEAR(std::hypot(roads[1][0].x, roads[1][0].y), 100, 1e-3);
+    EXPECT_EQ(points(roads[1]).back(), (std::pair<float, float>{40, 40}));
+}
+
 // The hillside of scenes/hillside-town.xml rises 13 % to the north. A grid grown on it in a
 // window wider than the DGM keeps to the DGM, and no street climbs more than the grade allowed:
 // at 12 % only the streets across the slope are built, at 15 % the grid climbs it too.

@@ -149,3 +149,46 @@ TEST(StreetBuilder, TheGroundStopsEveryStreetAsAStreetMetWould) {
 
 }  // namespace
 }  // namespace veduta
+
+namespace veduta {
+namespace {
+
+double distanceToSegmentForTest(Vec2f p, Vec2f a, Vec2f b) {
+    Vec2f ab = b - a, ap = p - a;
+    double t = std::clamp(double(dot(ap, ab)) / double(dot(ab, ab)), 0.0, 1.0);
+    double x = a.x + t * ab.x - p.x, y = a.y + t * ab.y - p.y;
+    return std::sqrt(x * x + y * y);
+}
+
+// A road already there (CityGrowth::roads), a slanted line through the window with a bend: the
+// grid's streets meet it as any street, ending on it or cutting it, and it stays static.
+TEST(StreetBuilder, ARoadAlreadyThereIsMetByTheStreetsThatGrowOntoIt) {
+    std::vector<std::vector<Vec2f>> roads{{{-400, -150}, {0, 130}, {400, 200}}};
+    for (uint32_t seed = 1; seed <= 4; ++seed) {
+        SCOPED_TRACE(seed);
+        SeededDraws draws(seed);
+        StreetRuleSet rules = parseStreetRules(test::patternText("grid"), "grid.txt");
+        WordGraph words(rules.initialWord);
+        StreetBuilder streets(words, {}, nullptr, roads);
+        StreetGrowth growth(words, rules.rules, streets.nodeQuery(), draws, &streets);
+        EXPECT_EQ(growth.grow({{0, 0}, 350}, {}).stop, GrowthStop::Exhausted);
+        const StreetGraph &graph = streets.graph();
+        // The road's three points, static, and each street that met it split it or ended on it.
+        for (VertexId v : {1u, 2u, 3u}) EXPECT_TRUE(graph.vertex(v).isStatic);
+        EXPECT_EQ(graph.vertex(2).position, (Vec3f{0, 130, 0}));
+        EXPECT_GT(streets.counts().split + streets.counts().snapped, 5u);
+        // Every vertex on the road lies on one of its two pieces, and some streets meet it there.
+        size_t onTheRoad = 0;
+        for (const StreetVertex &v : graph.vertices()) {
+            Vec2f p{v.position.x, v.position.y};
+            double d = std::min(distanceToSegmentForTest(p, roads[0][0], roads[0][1]),
+                                distanceToSegmentForTest(p, roads[0][1], roads[0][2]));
+            onTheRoad += d < 1e-3 && v.edges.size() >= 3;
+        }
+        EXPECT_GT(onTheRoad, 3u);
+        test::expectSoundNetwork(graph);
+    }
+}
+
+}  // namespace
+}  // namespace veduta
