@@ -22,6 +22,7 @@
 #include "city/ground_environment.h"
 #include "city/grown_city.h"
 #include "city/lot_subdivision.h"
+#include "city/osm_import.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "geo/generate_landscape.h"
@@ -49,6 +50,7 @@ struct GenerateArgs {
     std::string dgm;
     float maxGrade = GroundLimits().maxGrade;
     std::vector<std::string> atkis;
+    std::string osm;
     std::string output, geojson, gpkg, dot;
     bool quiet = false;
 };
@@ -139,6 +141,16 @@ void runGenerate(const GenerateArgs &args) {
         growth.environment = &*ground;
         growth.roads = existingRoads(land->objects, frame, {0, 0}, args.radius);
     }
+    if (!args.osm.empty()) {
+        if (!fs::is_regular_file(args.osm))
+            throw InputError(FileLoc{"--osm"}, fmt::format("cannot read the road file {}", args.osm));
+        OsmImportOptions options;
+        options.georeference = Georeference{epsg, args.centre[0], args.centre[1]};
+        CityData osm = importOsm(args.osm, options);
+        warnings.insert(warnings.end(), osm.warnings.begin(), osm.warnings.end());
+        for (std::vector<Vec2f> &road : roadsInWindow(streetLines(osm), {0, 0}, args.radius))
+            growth.roads.push_back(std::move(road));
+    }
     CityGrowthReport report;
     CityData city = tensor ? traceCity(townField(args.seed, args.radius), {}, growth, warnings, &report)
                            : growCity(*streetRules, growth, warnings, &report);
@@ -183,8 +195,12 @@ void addGenerateCommand(CLI::App &app, int &exitCode) {
         ->check(CLI::Range(0.001f, 1.0f))
         ->needs("--dgm")
         ->capture_default_str();
-    cmd->add_option("--atkis", args->atkis, "ATKIS layer(s) whose water and forest the streets keep off (with --dgm)")
+    cmd->add_option("--atkis", args->atkis,
+                    "ATKIS layer(s) whose water and forest the streets keep off and whose roads they grow onto (with "
+                    "--dgm)")
         ->needs("--dgm");
+    cmd->add_option("--osm", args->osm, "OpenStreetMap file whose highways the streets grow onto (with --crs)")
+        ->needs("--crs");
     cmd->add_option("--rules", args->rules, "Building rule file the CityData names (default: the Gründerzeit rules)");
     cmd->add_option("--lots", args->lots,
                     "LotSubdivision of every block: perimeter, recursive, obb, skeleton, schrader");

@@ -366,6 +366,20 @@ SceneCity growSceneCity(const CityDesc &city, const std::optional<Georeference> 
         growth.environment = &*ground;
         growth.roads = existingRoads(landscape->objects, frame, centre, growth.radius);
     }
+    std::vector<std::string> roadWarnings;  // the road file's own, "file: way id: message"
+    if (!desc.roads.empty()) {
+        if (!georeference)
+            throw InputError(desc.roadsLoc, "roads from OpenStreetMap need the scene's <georeference> to be placed");
+        if (!std::filesystem::is_regular_file(desc.roads))
+            throw InputError(desc.roadsLoc, fmt::format("cannot read the road file {}", desc.roads.string()));
+        OsmImportOptions options;
+        options.georeference = georeference;
+        CityData osm = importOsm(desc.roads, options);
+        roadWarnings = std::move(osm.warnings);
+        for (std::vector<Vec2f> &road :
+             roadsInWindow(streetLines(osm), {growth.centre.x, growth.centre.y}, growth.radius))
+            growth.roads.push_back(std::move(road));
+    }
     SceneCity read;
     read.levels = {desc.levels, desc.levelSpacing, desc.liftReach, desc.streetThickness};
     std::vector<std::string> warnings;
@@ -376,6 +390,7 @@ SceneCity growSceneCity(const CityDesc &city, const std::optional<Georeference> 
     }
     read.upperLevels = growUpperLevels(grow, growth, desc.levels, read.data.settings, warnings);
     for (const std::string &w : warnings) read.data.warnings.push_back(fmt::format("{}: {}", city.loc.toString(), w));
+    read.data.warnings.insert(read.data.warnings.end(), roadWarnings.begin(), roadWarnings.end());
     return read;
 }
 

@@ -101,38 +101,53 @@ std::optional<std::pair<double, double>> withinReach(Vec2d p, Vec2d q, double re
 
 }  // namespace
 
+std::vector<std::vector<Vec2f>> roadsInWindow(const std::vector<std::vector<Vec2d>> &lines, Vec2d centre,
+                                              double reach) {
+    std::vector<std::vector<Vec2f>> roads;
+    for (const std::vector<Vec2d> &line : lines) {
+        std::vector<Vec2f> run;
+        auto flush = [&] {
+            if (run.size() >= 2) roads.push_back(run);
+            run.clear();
+        };
+        for (size_t i = 0; i + 1 < line.size(); ++i) {
+            Vec2d p{line[i].x - centre.x, line[i].y - centre.y}, q{line[i + 1].x - centre.x, line[i + 1].y - centre.y};
+            std::optional<std::pair<double, double>> inside = withinReach(p, q, reach);
+            if (!inside) {
+                flush();
+                continue;
+            }
+            auto at = [&](double t) { return Vec2f{float(p.x + t * (q.x - p.x)), float(p.y + t * (q.y - p.y))}; };
+            if (inside->first > 0) flush();  // it comes in across the edge of the window
+            if (run.empty()) run.push_back(at(inside->first));
+            run.push_back(at(inside->second));
+            if (inside->second < 1) flush();  // and leaves it
+        }
+        flush();
+    }
+    return roads;
+}
+
+std::vector<std::vector<Vec2d>> streetLines(const CityData &data) {
+    std::vector<std::vector<Vec2d>> lines;
+    for (const CityStreet &s : data.streets)
+        lines.push_back(
+            {{data.points[s.start].e, data.points[s.start].n}, {data.points[s.end].e, data.points[s.end].n}});
+    return lines;
+}
+
 std::vector<std::vector<Vec2f>> existingRoads(const std::vector<AtkisObject> &objects, const LocalFrame &frame,
                                               Vec2d centre, double reach) {
-    std::vector<std::vector<Vec2f>> roads;
+    std::vector<std::vector<Vec2d>> lines;
     for (const AtkisObject &o : objects) {
         if (o.geometry != AtkisGeometry::Line || landClass(o) != LandClass::Road) continue;
         for (const MapLine &line : o.lines) {
-            std::vector<Vec2f> run;
-            auto flush = [&] {
-                if (run.size() >= 2) roads.push_back(run);
-                run.clear();
-            };
-            auto local = [&](const MapPoint &m) {
-                return Vec2d{m.easting - frame.origin.easting - centre.x,
-                             m.northing - frame.origin.northing - centre.y};
-            };
-            for (size_t i = 0; i + 1 < line.size(); ++i) {
-                Vec2d p = local(line[i]), q = local(line[i + 1]);
-                std::optional<std::pair<double, double>> inside = withinReach(p, q, reach);
-                if (!inside) {
-                    flush();
-                    continue;
-                }
-                auto at = [&](double t) { return Vec2f{float(p.x + t * (q.x - p.x)), float(p.y + t * (q.y - p.y))}; };
-                if (inside->first > 0) flush();  // it comes in across the edge of the window
-                if (run.empty()) run.push_back(at(inside->first));
-                run.push_back(at(inside->second));
-                if (inside->second < 1) flush();  // and leaves it
-            }
-            flush();
+            std::vector<Vec2d> &local = lines.emplace_back();
+            for (const MapPoint &m : line)
+                local.push_back({m.easting - frame.origin.easting, m.northing - frame.origin.northing});
         }
     }
-    return roads;
+    return roadsInWindow(lines, centre, reach);
 }
 
 }  // namespace veduta

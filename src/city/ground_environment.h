@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "city/city_data.h"
 #include "geo/atkis.h"
 #include "geo/generate_landscape.h"
 #include "geo/height_grid.h"
@@ -47,9 +48,17 @@ class GroundEnvironment final : public StreetEnvironment {
 // The outlines of the ATKIS areas no street crosses: water, standing and flowing, and forest.
 std::vector<LocalPolygon> streetObstacles(const std::vector<AtkisObject> &objects, const LocalFrame &frame);
 
-// The roads already on the map that a town grows onto (CityGrowth::roads): the ATKIS road lines
-// (LandClass::Road) in metres from `centre` of the frame, cut at the circle of `reach` round it:
-// each run of a line inside the circle, a piece crossing the circle ending on it.
+// Polylines of the local frame as roads a town grows onto (CityGrowth::roads): in metres from
+// `centre`, cut at the circle of `reach` round it: each run of a line inside the circle, a piece
+// crossing the circle ending on it.
+std::vector<std::vector<Vec2f>> roadsInWindow(const std::vector<std::vector<Vec2d>> &lines, Vec2d centre, double reach);
+
+// The streets of a CityData (an OpenStreetMap file's highways, importOsm) as lines of its frame,
+// for roadsInWindow.
+std::vector<std::vector<Vec2d>> streetLines(const CityData &data);
+
+// The roads already on the map of an ATKIS landscape: its road lines (LandClass::Road) in the
+// window, as roadsInWindow cuts them.
 std::vector<std::vector<Vec2f>> existingRoads(const std::vector<AtkisObject> &objects, const LocalFrame &frame,
                                               Vec2d centre, double reach);
 

@@ -151,6 +151,9 @@ struct CityGrowthDesc {
     float maxGrade = 0.12f;  // the steepest a street may climb on a <landscape>'s DGM, rise over run
     std::string lots;        // the LotSubdivision of its blocks; empty: the rule file's, or perimeter lots
     FileLoc lotsLoc;
+    // An OpenStreetMap file whose highways the town grows onto (docs/generate.md); empty: none.
+    std::filesystem::path roads;
+    FileLoc roadsLoc;
     // A futuristic city's street levels (docs/futuristic.md), the ground's included: 1 is an
     // ordinary town. The upper ones lie `levelSpacing` apart, joined by lifts between junctions
     // at most `liftReach` apart in plan; their streets are `streetThickness` thick.

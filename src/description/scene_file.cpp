@@ -464,6 +464,10 @@ class SceneFileReader {
             growth.lots = e.string("lots");
             growth.lotsLoc = e.attributeLoc("lots");
         }
+        if (e.has("roads")) {
+            growth.roads = pathAttribute(e, "roads");
+            growth.roadsLoc = e.attributeLoc("roads");
+        }
         city.seed = seedOverride(e);
         readObjectId(e, city.loc);
         e.checkLeaf();

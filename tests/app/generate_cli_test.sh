@@ -88,6 +88,17 @@ check "nothing grows south of the road" awk -F'"' '/<Point id=.* e=/ {
     road = $4 <= 530300 ? 5326760 + ($4 - 530000) * 20 / 300 : 5326780 + ($4 - 530300) * 10 / 300
     if ($6 < road - 0.01) bad = 1 } END { exit bad }' "$work/road.xml"
 
+# With the highways of data/hillside/town.osm (a small town round 500000 5330150): its streets are
+# the town's too, and they bound the grid that grows inside them.
+run generate --pattern grid --radius 200 --seed 4 --centre 500000 5330150 --crs EPSG:25832 \
+    --osm "$(dirname "$0")/../../data/hillside/town.osm" -o "$work/osm.xml"
+check "town on OSM roads" rc_is 0
+check "an OSM node is a point of the town" grep -q '<Point id="[0-9]*" e="500000" n="5330084.0037" />' "$work/osm.xml"
+check "the grid keeps inside the OSM streets" awk -F'"' '/<Point id=.* e=/ { if ($6 < 5330080) bad = 1 } END { exit bad }' "$work/osm.xml"
+run generate --pattern grid --radius 200 --osm "$work/none.osm" --crs EPSG:25832 -o "$work/x.xml"
+check "a missing road file exits 1" rc_is 1
+check "and says so" err_has "--osm: cannot read the road file"
+
 run generate --crs EPSG:4326 --centre 9 48 -o "$work/x.xml"
 check "a geographic CRS exits 1" rc_is 1
 check "a geographic CRS says so" err_has "not a projected CRS"

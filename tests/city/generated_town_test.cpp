@@ -87,6 +87,18 @@ TEST(GeneratedTown, ATensorFieldTownIsBuiltAsAnyOther) {
               "test.xml:1:39: unknown pattern 'voronoi'; the one pattern without a rule file is tensor");
 }
 
+// roads="…osm": the highways of an OpenStreetMap file are streets the town grows onto.
+TEST(GeneratedTown, GrowsOntoTheRoadsOfAnOpenStreetMapFile) {
+    const char *georeference = "<georeference crs=\"EPSG:25832\" origin=\"500000 5330150\"/>";
+    RenderScene free = build(scene("radius=\"200\" seed=\"4\" centre=\"500000 5330150\"", georeference));
+    RenderScene onRoads = build(
+        scene("radius=\"200\" seed=\"4\" centre=\"500000 5330150\" roads=\"../data/hillside/town.osm\"", georeference));
+    EXPECT_GT(onRoads.buildings.size(), 0u);
+    EXPECT_NE(sceneHash(free), sceneHash(onRoads));
+    EXPECT_EQ(test::inputErrorOf([] { build(scene("roads=\"../data/hillside/town.osm\"")); }),
+              "test.xml:1:123: roads from OpenStreetMap need the scene's <georeference> to be placed");
+}
+
 TEST(GeneratedTown, LiesAtItsCentreInTheScenesCrs) {
     RenderScene local = build(scene("radius=\"150\" centre=\"400 -300\""));
     Vec2f middle = streetsMiddle(local);
