@@ -34,6 +34,8 @@ enum class RandomStream : uint32_t {
     LiftStop = 0x4c494654u,              // "LIFT": where a lift's platform stands on its way
     TensorNoise = 0x544e5349u,           // "TNSI": the noise that turns a tensor field's directions
     TensorLayout = 0x544c4159u,          // "TLAY": the basis fields of a seeded tensor-field town
+    SlgPlan = 0x534c4750u,               // "SLGP": a Spatial Landmark Graph's landmark jitter (slg/landmarks.h)
+    SlgParameters = 0x534c4756u,         // "SLGV": the rand() of Schrader's parameter cascade (slg/urban_geography.h)
 
     // Identities: not random, but hashed like the draws and kept apart from them.
     CityDataBlock = 0x4344424bu,  // "CDBK": a CityData block, from the ids of its outline's points
@@ -66,6 +68,8 @@ inline constexpr RandomStream kAllRandomStreams[] = {
     RandomStream::LiftStop,
     RandomStream::TensorNoise,
     RandomStream::TensorLayout,
+    RandomStream::SlgPlan,
+    RandomStream::SlgParameters,
     RandomStream::CityDataBlock,
     RandomStream::CityDataLot,
     RandomStream::OsmWay,

@@ -1,0 +1,89 @@
+#include "slg/plan_geometry.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_2_algorithms.h>
+
+#include <algorithm>
+#include <numbers>
+
+namespace veduta {
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_2;
+
+Point point(Vec2d p) { return {p.x, p.y}; }
+
+std::vector<Point> points(const Polygon2d &polygon) {
+    std::vector<Point> result;
+    result.reserve(polygon.size());
+    for (Vec2d p : polygon) result.push_back(point(p));
+    return result;
+}
+
+constexpr double kDegrees = 180 / std::numbers::pi;
+
+}  // namespace
+
+double signedArea(const Polygon2d &polygon) {
+    double twice = 0;
+    for (size_t i = 0; i < polygon.size(); ++i) twice += cross(polygon[i], polygon[(i + 1) % polygon.size()]);
+    return twice / 2;
+}
+
+Vec2d vertexMean(const Polygon2d &polygon) {
+    Vec2d sum;
+    for (Vec2d p : polygon) sum = sum + p;
+    return sum * (1.0 / double(polygon.size()));
+}
+
+double angle180(Vec2d a, Vec2d b) {
+    double cosine = dot(a, b) / (length(a) * length(b));
+    return std::acos(std::clamp(cosine, -1.0, 1.0)) * kDegrees;
+}
+
+double angle360(Vec2d a, Vec2d b) {
+    double turned = (std::atan2(b.y, b.x) - std::atan2(a.y, a.x)) * kDegrees;
+    if (turned < 0) turned += 360;
+    return turned >= 360 ? turned - 360 : turned;
+}
+
+Turn turnAt(Vec2d p, Vec2d q, Vec2d r) {
+    switch (CGAL::orientation(point(p), point(q), point(r))) {
+    case CGAL::LEFT_TURN: return Turn::Left;
+    case CGAL::RIGHT_TURN: return Turn::Right;
+    default: return Turn::Straight;
+    }
+}
+
+bool isReflexCorner(const Polygon2d &ccw, size_t i) {
+    size_t n = ccw.size();
+    return turnAt(ccw[(i + n - 1) % n], ccw[i], ccw[(i + 1) % n]) == Turn::Right;
+}
+
+std::optional<LineHit> intersectLines(Vec2d p, Vec2d u, Vec2d q, Vec2d v) {
+    double d = cross(u, v);
+    if (d == 0) return std::nullopt;
+    Vec2d w = q - p;
+    return LineHit{cross(w, v) / d, cross(w, u) / d};
+}
+
+Side sideOf(const Polygon2d &polygon, Vec2d p) {
+    std::vector<Point> outline = points(polygon);
+    switch (CGAL::bounded_side_2(outline.begin(), outline.end(), point(p), Kernel())) {
+    case CGAL::ON_BOUNDED_SIDE: return Side::Inside;
+    case CGAL::ON_BOUNDARY: return Side::Boundary;
+    default: return Side::Outside;
+    }
+}
+
+bool isSimple(const Polygon2d &polygon) {
+    if (polygon.size() < 3) return false;
+    for (size_t i = 0; i < polygon.size(); ++i)
+        if (polygon[i] == polygon[(i + 1) % polygon.size()]) return false;
+    std::vector<Point> outline = points(polygon);
+    return CGAL::is_simple_2(outline.begin(), outline.end(), Kernel());
+}
+
+}  // namespace veduta

@@ -1,0 +1,59 @@
+// The plane geometry of Schrader's Spatial Landmark Graph (digest-003 §2.5), in double: plans of
+// blocks, lots, storeys and rooms in metres. The orientation and containment tests go through
+// CGAL's exact predicates, so that a point on a line or a collinear corner is decided the same
+// way every time instead of folding on a rounding (the thesis's float tests do).
+#pragma once
+
+#include <cmath>
+#include <optional>
+#include <vector>
+
+namespace veduta {
+
+struct Vec2d {
+    double x = 0, y = 0;
+    Vec2d operator+(Vec2d o) const { return {x + o.x, y + o.y}; }
+    Vec2d operator-(Vec2d o) const { return {x - o.x, y - o.y}; }
+    Vec2d operator*(double s) const { return {x * s, y * s}; }
+    bool operator==(const Vec2d &) const = default;
+};
+
+inline double dot(Vec2d a, Vec2d b) { return a.x * b.x + a.y * b.y; }
+inline double cross(Vec2d a, Vec2d b) { return a.x * b.y - a.y * b.x; }
+inline double length(Vec2d v) { return std::hypot(v.x, v.y); }
+inline Vec2d normalized(Vec2d v) { return v * (1 / length(v)); }
+// The inward normal of an edge of a counter-clockwise outline: the edge turned left (eq 8).
+inline Vec2d leftNormal(Vec2d v) { return {-v.y, v.x}; }
+
+using Polygon2d = std::vector<Vec2d>;
+
+// Eq 27: the signed shoelace area, positive when the points run counter-clockwise.
+double signedArea(const Polygon2d &polygon);
+// Eq 28: the mean of the points (not the area's centroid), the thesis's centre of a city and
+// the apex of a tent roof.
+Vec2d vertexMean(const Polygon2d &polygon);
+// Eq 29: the angle between two directions in degrees, in [0, 180].
+double angle180(Vec2d a, Vec2d b);
+// Eq 30: the angle turned from direction a to direction b, counter-clockwise, in [0, 360).
+double angle360(Vec2d a, Vec2d b);
+
+enum class Turn { Left, Straight, Right };
+// Which way the path p → q → r turns at q, decided exactly.
+Turn turnAt(Vec2d p, Vec2d q, Vec2d r);
+// Whether the corner at points[i] of a counter-clockwise polygon is reflex (turns right).
+bool isReflexCorner(const Polygon2d &ccw, size_t i);
+
+// Eq 31–32: the parameters s, t at which p + s·u and q + t·v meet; none when parallel.
+struct LineHit {
+    double s = 0, t = 0;
+};
+std::optional<LineHit> intersectLines(Vec2d p, Vec2d u, Vec2d q, Vec2d v);
+
+enum class Side { Inside, Boundary, Outside };
+// Eq 33–34, exactly: where a point lies with respect to a simple polygon of either orientation.
+Side sideOf(const Polygon2d &polygon, Vec2d point);
+
+// Whether a polygon is simple (no two edges meet except neighbours at their shared point).
+bool isSimple(const Polygon2d &polygon);
+
+}  // namespace veduta
