@@ -24,11 +24,6 @@ class PlanRandom {
     double uniform(double a, double b, uint32_t what, uint32_t index = 0) const {
         return a + (b - a) * unit(what, index);
     }
-    // r(a, b) of eq 59–61: an integer from a to b, both included.
-    int integer(int a, int b, uint32_t what, uint32_t index = 0) const {
-        int drawn = a + int(unit(what, index) * double(b - a + 1));
-        return drawn > b ? b : drawn;
-    }
 
   private:
     uint32_t seed_, identity_;

@@ -212,14 +212,14 @@ struct Candidate {
     SlgPath path;
     Polygon2d polygon;
     std::vector<Vec2d> midpoints;
+    std::vector<SlgEdgeId> sortedEdges;  // to tell the same cycle
     double score = 0;
 };
 
 // Faces are cycles of one plane graph, so their insides meet exactly when an edge of one runs
 // inside the other, or when they are the same cycle.
 bool overlaps(const Candidate &a, const Candidate &b) {
-    std::set<SlgEdgeId> edgesA(a.path.edges.begin(), a.path.edges.end());
-    if (edgesA == std::set<SlgEdgeId>(b.path.edges.begin(), b.path.edges.end())) return true;
+    if (a.sortedEdges == b.sortedEdges) return true;
     for (Vec2d m : a.midpoints)
         if (sideOf(b.polygon, m) == Side::Inside) return true;
     for (Vec2d m : b.midpoints)
@@ -338,6 +338,8 @@ Subdivision subdivide(const Polygon2d &outline, const std::vector<EdgeLocation> 
             std::vector<double> runs = straightRuns(c.polygon);
             if (runs.size() < 3 || *std::ranges::min_element(runs) < shortest) continue;  // hard criterion 2
             c.midpoints = edgeMidpoints(c.polygon);
+            c.sortedEdges = c.path.edges;
+            std::ranges::sort(c.sortedEdges);
             c.score = softScore(c.polygon, targetArea);
             candidates.push_back(std::move(c));
         }
