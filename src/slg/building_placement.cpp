@@ -67,13 +67,7 @@ std::optional<Placement> placeBuilding(const PlanShape &lot, const FaceSides &si
     auto moved = moveSides(band->strip, band->stripSides, *distances, EdgeLocation::Gap);
     if (!moved) return std::nullopt;
     placement.footprint = std::move(moved->shape);
-    for (size_t k = 0; k < moved->source.size(); ++k) {
-        size_t e = moved->source[k];
-        if (e < sides.bottom.size()) placement.sides.bottom.push_back(k);
-        else if (e == band->stripSides.right.front()) placement.sides.right.push_back(k);
-        else if (e == band->stripSides.left.front()) placement.sides.left.push_back(k);
-        else placement.sides.top.push_back(k);
-    }
+    placement.sides = sidesAfterMove(band->stripSides, moved->source);
     return placement;
 }
 

@@ -21,7 +21,8 @@ struct FaceSides {
 // L1650–1666, for a face whose front is its edges 0 … frontEdges − 1, as a border face of a
 // subdivision comes (its path starts at its left landmark). The right side takes the edges from
 // the right landmark for as long as they run straight on; the left side likewise backwards from
-// the left landmark, never taking an edge the right side took.
+// the left landmark, never taking an edge the right side took. A face closed by one edge
+// behind its front (a chord between opposite landmarks) has that edge as both its sides.
 FaceSides fourSides(const Polygon2d &face, size_t frontEdges);
 
 // How far each side moves inwards, in metres; a negative distance moves it out.
@@ -49,6 +50,9 @@ std::optional<MovedShape> moveEdges(const PlanShape &shape, const std::vector<do
 // moveEdges with one distance for all the edges of each side.
 std::optional<MovedShape> moveSides(const PlanShape &shape, const FaceSides &sides, SideDistances distances,
                                     EdgeLocation gap);
+
+// The sides of a shape after moveEdges, found again through the edges its edges came from.
+FaceSides sidesAfterMove(const FaceSides &before, const std::vector<size_t> &source);
 
 // The total length of some edges of a shape.
 double sideLength(const PlanShape &shape, const std::vector<size_t> &edges);

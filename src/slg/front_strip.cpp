@@ -46,16 +46,6 @@ bool liesInside(const Polygon2d &strip, const PlanShape &face, const std::vector
     return true;
 }
 
-// The sides of a face whose edges were moved, found again through the edges they came from.
-FaceSides sidesAfterMove(const FaceSides &before, const std::vector<size_t> &source) {
-    FaceSides after;
-    for (size_t k = 0; k < source.size(); ++k)
-        for (auto [from, to] : {std::pair{&before.bottom, &after.bottom}, std::pair{&before.right, &after.right},
-                                std::pair{&before.top, &after.top}, std::pair{&before.left, &after.left}})
-            if (std::ranges::find(*from, source[k]) != from->end()) to->push_back(k);
-    return after;
-}
-
 }  // namespace
 
 std::optional<FrontStrip> cutFrontStrip(const PlanShape &face, const FaceSides &sides, double depth,

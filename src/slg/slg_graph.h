@@ -55,6 +55,7 @@ class SlgGraph {
     SlgEdgeId edgeBetween(SlgNodeId a, SlgNodeId b) const;
     // Deleting an edge keeps its nodes (the thesis's footnote 30).
     void removeEdge(SlgEdgeId e);
+    void setLocation(SlgEdgeId e, EdgeLocation location) { edges_.at(e).location = location; }
 
     // Eq 26: cuts edge e at start + (end − start)·t, 0 < t < 1. Edge e keeps its start and ends
     // at the new node; a new edge with e's location runs on to e's old end. Returns the node.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <set>
 
 #include "core/check.h"
@@ -39,6 +40,38 @@ double firstExit(const Polygon2d &outline, Vec2d origin, Vec2d direction, double
     return reach;
 }
 
+// Whether the segment between two points of the outline runs inside it.
+bool staysInside(const Polygon2d &outline, Vec2d a, Vec2d b) {
+    if (sideOf(outline, (a + b) * 0.5) != Side::Inside) return false;
+    for (size_t i = 0; i < outline.size(); ++i) {
+        Vec2d p = outline[i], q = outline[(i + 1) % outline.size()];
+        auto hit = intersectLines(a, b - a, p, q - p);
+        if (hit && hit->s > 1e-9 && hit->s < 1 - 1e-9 && hit->t > 1e-9 && hit->t < 1 - 1e-9) return false;
+    }
+    return true;
+}
+
+// Two landmarks on opposite sides whose rays cross no other ray (a storey's two apartments, a
+// narrow lot's front and back) would leave no inner edge, and neither face a path: the thesis's
+// reconstruction makes nothing there. A ray that leaves the outline near such a landmark whose
+// ray points back at it, within kChordTurn, is joined to it by a chord instead.
+void joinOppositeRays(SlgGraph &graph, const Polygon2d &outline, const std::vector<Ray> &rays) {
+    constexpr double kChordTurn = 10;  // degrees
+    double tangent = std::tan(kChordTurn * std::numbers::pi / 180);
+    for (const Ray &ray : rays) {
+        if (!ray.hits.empty() || !std::isfinite(ray.reach)) continue;
+        Vec2d exit = ray.origin + ray.direction * ray.reach;
+        for (const Ray &other : rays) {
+            if (&other == &ray || !other.hits.empty() || graph.edgeBetween(ray.landmark, other.landmark) != kNoSlgId)
+                continue;
+            bool facing = angle180(ray.direction, other.direction) > 180 - kChordTurn;
+            if (facing && length(other.origin - exit) <= tangent * ray.reach &&
+                staysInside(outline, ray.origin, other.origin))
+                graph.addEdge(ray.landmark, other.landmark, EdgeLocation::Gap, false);
+        }
+    }
+}
+
 // The rays of §2.6 and the inner network: a node where two rays cross inside the outline, an
 // inner edge between consecutive nodes along each ray.
 void buildInnerNetwork(SlgGraph &graph, const Polygon2d &outline, const std::vector<SlgNodeId> &landmarks,
@@ -70,6 +103,7 @@ void buildInnerNetwork(SlgGraph &graph, const Polygon2d &outline, const std::vec
                     ray->hits.emplace_back(s, node);
         }
     }
+    joinOppositeRays(graph, outline, rays);
     for (Ray &ray : rays) {
         std::ranges::sort(ray.hits);
         SlgNodeId from = ray.landmark;
@@ -216,15 +250,20 @@ struct Candidate {
     double score = 0;
 };
 
+// Whether an edge of face a that face b does not share runs inside b. A shared edge lies on b's
+// boundary by construction; its midpoint, rounded, can fall a hair inside.
+bool runsInside(const Candidate &a, const Candidate &b) {
+    for (size_t i = 0; i < a.midpoints.size(); ++i)
+        if (!std::ranges::binary_search(b.sortedEdges, a.path.edges[i]) &&
+            sideOf(b.polygon, a.midpoints[i]) == Side::Inside)
+            return true;
+    return false;
+}
+
 // Faces are cycles of one plane graph, so their insides meet exactly when an edge of one runs
 // inside the other, or when they are the same cycle.
 bool overlaps(const Candidate &a, const Candidate &b) {
-    if (a.sortedEdges == b.sortedEdges) return true;
-    for (Vec2d m : a.midpoints)
-        if (sideOf(b.polygon, m) == Side::Inside) return true;
-    for (Vec2d m : b.midpoints)
-        if (sideOf(a.polygon, m) == Side::Inside) return true;
-    return false;
+    return a.sortedEdges == b.sortedEdges || runsInside(a, b) || runsInside(b, a);
 }
 
 // The soft criteria of L1294–1313 as one number, smaller is better: how far the corners are
@@ -310,6 +349,7 @@ std::vector<const PlanFace *> Subdivision::borderFaces() const {
 Subdivision subdivide(const Polygon2d &outline, const std::vector<EdgeLocation> &locations,
                       const PlanParameters &parameters, const PlanRandom &random, const SearchLimits &limits) {
     Subdivision result;
+    result.outline = outline;
     result.graph = outlineGraph(outline, locations);
     SlgGraph &graph = result.graph;
     result.landmarks = placeLandmarks(graph, parameters, random);
@@ -358,6 +398,17 @@ Subdivision subdivide(const Polygon2d &outline, const std::vector<EdgeLocation> 
     for (SlgPath &inner : innerFaces(graph, result.faces)) result.faces.push_back(PlanFace{std::move(inner)});
     removeUnusedInnerEdges(graph, result.faces);
     return result;
+}
+
+PlanShape faceShape(const Subdivision &subdivision, const PlanFace &face) {
+    PlanShape shape{subdivision.graph.polygon(face.path), {}};
+    for (SlgEdgeId e : face.path.edges) shape.locations.push_back(subdivision.graph.edge(e).location);
+    return shape;
+}
+
+size_t frontEdges(const PlanFace &face) {
+    if (!face.isBorder()) return 0;
+    return std::ranges::find(face.path.nodes, face.right) - face.path.nodes.begin();
 }
 
 std::vector<Polygon2d> facePolygons(const Subdivision &subdivision) {

@@ -10,6 +10,7 @@
 
 #include "slg/plan_parameters.h"
 #include "slg/plan_random.h"
+#include "slg/plan_shape.h"
 #include "slg/slg_graph.h"
 
 namespace veduta {
@@ -32,6 +33,7 @@ struct SearchLimits {
 };
 
 struct Subdivision {
+    Polygon2d outline;
     SlgGraph graph;
     std::vector<SlgNodeId> landmarks;  // counter-clockwise round the outline
     std::vector<PlanFace> faces;       // the border faces in outline order, then the inner faces
@@ -44,6 +46,11 @@ struct Subdivision {
 // parent's). Inner edges start as gaps; the level's rules relabel them (§2.2 step 7).
 Subdivision subdivide(const Polygon2d &outline, const std::vector<EdgeLocation> &locations,
                       const PlanParameters &parameters, const PlanRandom &random, const SearchLimits &limits = {});
+
+// A face lifted out as the next level's outline, with its edges' locations (L1602–1606). A
+// border face's front is then its first frontEdges(face) edges.
+PlanShape faceShape(const Subdivision &subdivision, const PlanFace &face);
+size_t frontEdges(const PlanFace &face);
 
 // The faces of a subdivision as polygons, in its order.
 std::vector<Polygon2d> facePolygons(const Subdivision &subdivision);

@@ -112,6 +112,19 @@ TEST(MoveEdges, EdgesInOneLineMovedApartGetAJoin) {
     EXPECT_NEAR(signedArea(moved->shape.points), 60 - 7.5, 1e-9);
 }
 
+TEST(MoveEdges, ACornerSlidesPastAPointThatOnlySplitsTheLineBeside) {
+    // The top is split 0.5 m from the right corner where a crossing of the plan's network sat;
+    // the right side moving in by 1.5 m slides past it, and the point goes.
+    PlanShape shape = shapeOf({{0, 0}, {10, 0}, {10, 6}, {9.5, 6}, {0, 6}});
+    shape.locations[2] = EdgeLocation::Gap;
+    auto moved = moveEdges(shape, {0, 1.5, 0, 0, 0}, EdgeLocation::HouseCorridor);
+    ASSERT_TRUE(moved);
+    EXPECT_EQ(moved->shape.points, (Polygon2d{{0, 0}, {8.5, 0}, {8.5, 6}, {0, 6}}));
+    EXPECT_EQ(moved->source, (std::vector<size_t>{0, 1, 3, 4}));
+    EXPECT_EQ(moved->shape.locations[1], EdgeLocation::HouseCorridor);
+    EXPECT_EQ(moved->shape.locations[2], EdgeLocation::NeighbourArea) << "the line's other edge carries on";
+}
+
 TEST(MoveEdges, AFaceTooSmallForTheGapIsRefused) {
     PlanShape shape = shapeOf({{0, 0}, {10, 0}, {10, 3}, {0, 3}});
     EXPECT_FALSE(moveEdges(shape, {0, 0, 3, 0}, EdgeLocation::Gap)) << "no depth left";

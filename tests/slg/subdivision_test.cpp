@@ -5,33 +5,12 @@
 #include <cmath>
 
 #include "slg/subdivision.h"
+#include "slg/thesis_levels.h"
 
 namespace veduta {
 namespace {
 
 std::vector<EdgeLocation> streets(size_t n) { return std::vector<EdgeLocation>(n, EdgeLocation::Street); }
-
-PlanParameters apartment() {  // Table 16
-    PlanParameters p;
-    p.rule = LandmarkRule::Growth;
-    p.averageArea = 10;
-    p.sideRatio = 1.0 / 3;
-    p.scale = 1;
-    p.exponent = 3;
-    p.minimumCount = 3;
-    p.jitter = 0.05;
-    p.reflexLimits = {1, 1, 0};
-    return p;
-}
-
-PlanParameters block(double lotArea) {  // Table 9
-    PlanParameters p;
-    p.rule = LandmarkRule::Perimeter;
-    p.averageArea = lotArea;
-    p.sideRatio = 0.5;
-    p.jitter = 0.05;
-    return p;
-}
 
 double totalArea(const std::vector<Polygon2d> &polygons) {
     double sum = 0;
@@ -64,7 +43,7 @@ void expectSound(const Subdivision &s, const Polygon2d &outline) {
 
 TEST(Subdivision, FourRoomsOfATwelveBySixApartment) {
     Polygon2d outline = {{0, 0}, {12, 0}, {12, 6}, {0, 6}};
-    PlanParameters p = apartment();
+    PlanParameters p = apartmentLevel();
     p.count = 4;
     p.jitter = 0;
     Subdivision s = subdivide(outline, streets(4), p, PlanRandom(1, 1, RandomStream::SlgPlan));
@@ -79,7 +58,7 @@ TEST(Subdivision, FourRoomsOfATwelveBySixApartment) {
 
 TEST(Subdivision, OneLandmarkLeavesTheOutlineTheOnlyFace) {
     Polygon2d outline = {{0, 0}, {5, 0}, {5, 4}, {0, 4}};
-    PlanParameters p = apartment();
+    PlanParameters p = apartmentLevel();
     p.count = 1;
     Subdivision s = subdivide(outline, streets(4), p, PlanRandom(1, 1, RandomStream::SlgPlan));
     ASSERT_EQ(s.faces.size(), 1u);
@@ -90,7 +69,7 @@ TEST(Subdivision, OneLandmarkLeavesTheOutlineTheOnlyFace) {
 TEST(Subdivision, ABlockGetsLotsRoundACourtyard) {
     Polygon2d outline = {{0, 0}, {100, 0}, {100, 100}, {0, 100}};
     for (uint32_t id = 0; id < 5; ++id) {
-        Subdivision s = subdivide(outline, streets(4), block(150), PlanRandom(3, id, RandomStream::SlgPlan));
+        Subdivision s = subdivide(outline, streets(4), blockLevel(150), PlanRandom(3, id, RandomStream::SlgPlan));
         EXPECT_EQ(s.landmarks.size(), 28u);
         expectSound(s, outline);
         EXPECT_GT(s.borderFaces().size(), 20u) << id;
@@ -103,16 +82,31 @@ TEST(Subdivision, ABlockGetsLotsRoundACourtyard) {
 TEST(Subdivision, AnLShapedBlockIsSoundForManySeeds) {
     Polygon2d outline = {{0, 0}, {80, 0}, {80, 40}, {40, 40}, {40, 80}, {0, 80}};
     for (uint32_t id = 0; id < 10; ++id) {
-        Subdivision s = subdivide(outline, streets(6), block(200), PlanRandom(5, id, RandomStream::SlgPlan));
+        Subdivision s = subdivide(outline, streets(6), blockLevel(200), PlanRandom(5, id, RandomStream::SlgPlan));
         expectSound(s, outline);
         EXPECT_GT(s.borderFaces().size(), 10u) << id;
+    }
+}
+
+TEST(Subdivision, TwoLandmarksOnOppositeSidesAreJoinedByAChord) {
+    // A 12 × 10 storey (Table 13) gets its two landmarks on the long sides; their rays cross
+    // nothing.
+    Polygon2d outline = {{0, 0}, {12, 0}, {12, 10}, {0, 10}};
+    PlanParameters p = storeyLevel();
+    EXPECT_EQ(landmarkCount(p, 120, 44, 4), 2);
+    for (uint32_t id = 0; id < 10; ++id) {
+        Subdivision s = subdivide(outline, streets(4), p, PlanRandom(2, id, RandomStream::SlgPlan));
+        expectSound(s, outline);
+        EXPECT_EQ(s.deletedFaces, 0) << id;
+        ASSERT_EQ(s.faces.size(), 2u) << id;
+        for (const Polygon2d &face : facePolygons(s)) EXPECT_NEAR(signedArea(face), 60, 60 * 0.05) << id;
     }
 }
 
 TEST(Subdivision, TheSameSeedGivesTheSamePlan) {
     Polygon2d outline = {{0, 0}, {60, 0}, {70, 50}, {-5, 45}};
     auto plan = [&] {
-        return facePolygons(subdivide(outline, streets(4), block(175), PlanRandom(9, 4, RandomStream::SlgPlan)));
+        return facePolygons(subdivide(outline, streets(4), blockLevel(175), PlanRandom(9, 4, RandomStream::SlgPlan)));
     };
     EXPECT_EQ(plan(), plan());
 }
