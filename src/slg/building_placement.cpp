@@ -7,7 +7,8 @@ namespace veduta {
 
 namespace {
 
-enum Draw : uint32_t { kOpenSide, kOpenDepth };
+// Purposes of its draws, apart from those of the parameter cascade under the same identity.
+enum Draw : uint32_t { kOpenSide = 0x504c4353u, kOpenDepth = 0x504c4344u };  // "PLCS", "PLCD"
 
 // L1397–1405: the band along the front as deep as the shorter side. Where the lot is not that
 // deep all along its front (a slanted or bent back), the band is made shallower until it fits.
@@ -30,27 +31,30 @@ double frontShare(const PlacementParameters &p, const PlanRandom &random) {
     }
 }
 
+// Footnote 36: an open building on a lot too narrow to keep clear of both sides is built
+// semi-open, and a semi-open one on a lot too narrow for that closed.
+Bauweise fitting(Bauweise wanted, double frontage, const PlacementParameters &p) {
+    if (wanted == Bauweise::Open && frontage - 2 * p.sideDistance < p.minimumSide) wanted = Bauweise::SemiOpen;
+    if (wanted == Bauweise::SemiOpen && frontage - p.sideDistance < p.minimumSide) wanted = Bauweise::Closed;
+    return wanted;
+}
+
+Bauweise weaker(Bauweise b) { return b == Bauweise::Open ? Bauweise::SemiOpen : Bauweise::Closed; }
+
 // The distances by which the band's sides move: the depth the footprint aims at, √(A·ratio),
 // and its width √(A/ratio) (eq 52's l_opt with the digest's reading of the ratio), both within
 // the band; a building clear of a side keeps sideDistance from it (the Landesbauordnungen's
-// 3 m Abstandsfläche), and an open or semi-open one on a lot too narrow for that falls back to
-// semi-open, then closed (footnote 36).
-std::optional<SideDistances> distancesIn(double frontage, double depth, PlacementParameters p, Bauweise &built,
-                                         const PlanRandom &random) {
+// 3 m Abstandsfläche).
+SideDistances distancesFor(Bauweise built, double frontage, double depth, PlacementParameters p,
+                           const PlanRandom &random) {
     double aimedDepth = std::clamp(std::sqrt(p.buildingArea * p.sideRatio), p.minimumSide, depth);
-    if (depth < p.minimumSide) return std::nullopt;
     double width = std::max(std::sqrt(p.buildingArea / p.sideRatio), p.minimumSide);
-    double clear = 0;
-    built = p.bauweise;
-    if (built == Bauweise::Open && frontage - 2 * p.sideDistance < p.minimumSide) built = Bauweise::SemiOpen;
-    if (built == Bauweise::SemiOpen && frontage - p.sideDistance < p.minimumSide) built = Bauweise::Closed;
-    if (built == Bauweise::Open) clear = std::max((frontage - width) / 2, p.sideDistance);
-    if (built == Bauweise::SemiOpen) clear = std::max(frontage - width, p.sideDistance);
     p.bauweise = built;
     double spare = depth - aimedDepth, share = frontShare(p, random);
     SideDistances d{spare * share, 0, spare * (1 - share), 0};
-    if (built == Bauweise::Open) d.left = d.right = clear;
-    if (built == Bauweise::SemiOpen) (random.unit(kOpenSide) < 0.5 ? d.left : d.right) = clear;
+    if (built == Bauweise::Open) d.left = d.right = std::max((frontage - width) / 2, p.sideDistance);
+    if (built == Bauweise::SemiOpen)
+        (random.unit(kOpenSide) < 0.5 ? d.left : d.right) = std::max(frontage - width, p.sideDistance);
     return d;
 }
 
@@ -62,13 +66,21 @@ std::optional<Placement> placeBuilding(const PlanShape &lot, const FaceSides &si
     auto band = rectify(lot, sides, parameters.minimumSide, placement.bandDepth);
     if (!band) return std::nullopt;
     double frontage = sideLength(band->strip, band->stripSides.bottom);
-    auto distances = distancesIn(frontage, placement.bandDepth, parameters, placement.bauweise, random);
-    if (!distances) return std::nullopt;
-    auto moved = moveSides(band->strip, band->stripSides, *distances, EdgeLocation::Gap);
-    if (!moved) return std::nullopt;
-    placement.footprint = std::move(moved->shape);
-    placement.sides = sidesAfterMove(band->stripSides, moved->source);
-    return placement;
+    // A lot whose sides are too short for the distances (a corner lot's, along two streets)
+    // falls back as a narrow one does; a closed building that does not fit fills the band.
+    for (Bauweise built = fitting(parameters.bauweise, frontage, parameters);; built = weaker(built)) {
+        SideDistances distances = distancesFor(built, frontage, placement.bandDepth, parameters, random);
+        auto moved = moveSides(band->strip, band->stripSides, distances, EdgeLocation::Gap);
+        if (!moved && built == Bauweise::Closed)
+            moved = moveSides(band->strip, band->stripSides, {}, EdgeLocation::Gap);
+        if (moved) {
+            placement.bauweise = built;
+            placement.footprint = std::move(moved->shape);
+            placement.sides = sidesAfterMove(band->stripSides, moved->source);
+            return placement;
+        }
+        if (built == Bauweise::Closed) return std::nullopt;
+    }
 }
 
 }  // namespace veduta

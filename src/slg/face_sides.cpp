@@ -11,7 +11,7 @@ namespace {
 bool runsStraightOn(const Polygon2d &face, size_t edge, size_t next) {
     size_t n = face.size();
     Vec2d a = face[edge], b = face[(edge + 1) % n], c = face[(next + 1) % n];
-    return turnAt(a, b, c) == Turn::Straight && dot(b - a, c - b) > 0;
+    return goesStraightOn(a, b, c);
 }
 
 // A point on edge i's line after it moved: its start, moved.
@@ -97,7 +97,7 @@ std::optional<MovedShape> moveEdges(const PlanShape &shape, const std::vector<do
         Vec2d u = shape.end(before) - shape.start(before), v = shape.end(i) - shape.start(i);
         Vec2d p = movedStart(shape, before, distances[before]), q = movedStart(shape, i, distances[i]);
         if (auto hit = intersectLines(p, u, q, v);
-            hit && turnAt(shape.start(before), shape.start(i), shape.end(i)) != Turn::Straight) {
+            hit && !goesStraightOn(shape.start(before), shape.start(i), shape.end(i))) {
             add(p + u * hit->s, i, false);
             continue;
         }

@@ -36,13 +36,18 @@ std::optional<std::vector<Vec2d>> backPoints(const PlanShape &face, const FaceSi
 }
 
 // Whether the strip lies inside the face: its back inside or on it, and no corner of the face
-// inside the strip (where the face's back dips into the strip).
+// inside the strip (where the face's back dips into the strip). The back's ends are crossings
+// with the sides' lines, a rounding off them, and the corners of a side a rounding off the
+// strip's end.
 bool liesInside(const Polygon2d &strip, const PlanShape &face, const std::vector<Vec2d> &back) {
     if (!isSimple(strip) || signedArea(strip) <= 0) return false;
+    double extent = 0;
+    for (Vec2d p : face.points) extent = std::max({extent, std::abs(p.x), std::abs(p.y)});
+    double rounding = 1e-9 * (1 + extent);
     for (Vec2d p : back)
-        if (sideOf(face.points, p) == Side::Outside) return false;
+        if (distanceOutside(face.points, p) > rounding) return false;
     for (Vec2d p : face.points)
-        if (sideOf(strip, p) == Side::Inside) return false;
+        if (sideOf(strip, p) == Side::Inside && distanceToBoundary(strip, p) > rounding) return false;
     return true;
 }
 

@@ -4,6 +4,7 @@
 #include <CGAL/Polygon_2_algorithms.h>
 
 #include <algorithm>
+#include <limits>
 #include <numbers>
 
 namespace veduta {
@@ -57,6 +58,12 @@ Turn turnAt(Vec2d p, Vec2d q, Vec2d r) {
     }
 }
 
+bool goesStraightOn(Vec2d p, Vec2d q, Vec2d r) {
+    constexpr double kRounding = 1e-9;
+    Vec2d u = q - p, v = r - q;
+    return dot(u, v) > 0 && std::abs(cross(u, v)) <= kRounding * length(u) * length(v);
+}
+
 bool isReflexCorner(const Polygon2d &ccw, size_t i) {
     size_t n = ccw.size();
     return turnAt(ccw[(i + n - 1) % n], ccw[i], ccw[(i + 1) % n]) == Turn::Right;
@@ -76,6 +83,20 @@ Side sideOf(const Polygon2d &polygon, Vec2d p) {
     case CGAL::ON_BOUNDARY: return Side::Boundary;
     default: return Side::Outside;
     }
+}
+
+double distanceOutside(const Polygon2d &polygon, Vec2d point) {
+    return sideOf(polygon, point) == Side::Outside ? distanceToBoundary(polygon, point) : 0;
+}
+
+double distanceToBoundary(const Polygon2d &polygon, Vec2d point) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i < polygon.size(); ++i) {
+        Vec2d a = polygon[i], v = polygon[(i + 1) % polygon.size()] - a;
+        double t = std::clamp(dot(point - a, v) / dot(v, v), 0.0, 1.0);
+        nearest = std::min(nearest, length(a + v * t - point));
+    }
+    return nearest;
 }
 
 bool isSimple(const Polygon2d &polygon) {

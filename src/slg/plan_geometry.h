@@ -40,6 +40,10 @@ double angle360(Vec2d a, Vec2d b);
 enum class Turn { Left, Straight, Right };
 // Which way the path p → q → r turns at q, decided exactly.
 Turn turnAt(Vec2d p, Vec2d q, Vec2d r);
+// Whether the path p → q → r goes straight on at q, to within the rounding of points that are
+// crossings of lines worked out in double (a turn under 10⁻⁹ radians): the crossings along one
+// ray of a plan lie in its line only to a rounding, which an exact test would take for corners.
+bool goesStraightOn(Vec2d p, Vec2d q, Vec2d r);
 // Whether the corner at points[i] of a counter-clockwise polygon is reflex (turns right).
 bool isReflexCorner(const Polygon2d &ccw, size_t i);
 
@@ -52,6 +56,11 @@ std::optional<LineHit> intersectLines(Vec2d p, Vec2d u, Vec2d q, Vec2d v);
 enum class Side { Inside, Boundary, Outside };
 // Eq 33–34, exactly: where a point lies with respect to a simple polygon of either orientation.
 Side sideOf(const Polygon2d &polygon, Vec2d point);
+
+// How far a point lies from the boundary of a polygon, and how far outside it: 0 when it is
+// inside or on it.
+double distanceToBoundary(const Polygon2d &polygon, Vec2d point);
+double distanceOutside(const Polygon2d &polygon, Vec2d point);
 
 // Whether a polygon is simple (no two edges meet except neighbours at their shared point).
 bool isSimple(const Polygon2d &polygon);

@@ -52,10 +52,7 @@ bool SlgGraph::mergeCollinear(SlgEdgeId e, SlgEdgeId next) {
     SlgNodeId joint = first.end;
     if (!second.touches(joint) || nodes_[joint].edges.size() != 2) return false;
     SlgNodeId far = second.other(joint);
-    if (turnAt(nodes_[first.start].position, nodes_[joint].position, nodes_[far].position) != Turn::Straight)
-        return false;
-    if (dot(nodes_[joint].position - nodes_[first.start].position, nodes_[far].position - nodes_[joint].position) <= 0)
-        return false;
+    if (!goesStraightOn(nodes_[first.start].position, nodes_[joint].position, nodes_[far].position)) return false;
     removeEdge(next);
     std::erase(nodes_[joint].edges, e);
     first.end = far;

@@ -168,9 +168,8 @@ class PathSearch {
     // Whether turning from `incoming` to `outgoing` at a node is allowed (eq 9); `straight`
     // says it went straight on, `reflex` that it turned right (eq 11 counts those).
     bool turnAllowed(Vec2d before, Vec2d at, Vec2d after, bool &straight, bool &reflex) const {
-        Turn turn = turnAt(before, at, after);
-        straight = turn == Turn::Straight && dot(at - before, after - at) > 0;
-        reflex = turn == Turn::Right;
+        straight = goesStraightOn(before, at, after);
+        reflex = !straight && turnAt(before, at, after) == Turn::Right;
         if (straight) return true;
         double angle = angle180(at - before, after - at);
         return angle > limits_.minimumTurn && angle < limits_.maximumTurn;
@@ -274,7 +273,7 @@ double softScore(const Polygon2d &polygon, double targetArea) {
     size_t n = polygon.size();
     for (size_t i = 0; i < n; ++i) {
         Vec2d before = polygon[(i + n - 1) % n], at = polygon[i], after = polygon[(i + 1) % n];
-        if (turnAt(before, at, after) == Turn::Straight) continue;
+        if (goesStraightOn(before, at, after)) continue;
         ++corners;
         cornerError += std::abs(angle180(at - before, after - at) - 90) / 90;
     }
@@ -327,6 +326,30 @@ std::vector<SlgPath> innerFaces(const SlgGraph &graph, const std::vector<PlanFac
         }
     }
     return faces;
+}
+
+// What the selection leaves between two neighbouring landmarks whose pair it dropped (L1313):
+// where a face of the graph runs along the outline from one landmark to the next and has no
+// other landmark, it is the face the pair lacked — a plan keeps the apartment or the room
+// rather than a hole of corridor — with its front from the first. Other faces stay inner.
+PlanFace asBorderFace(const SlgGraph &graph, SlgPath path) {
+    std::vector<size_t> at;
+    for (size_t i = 0; i < path.nodes.size(); ++i)
+        if (graph.node(path.nodes[i]).type == SlgNodeType::Landmark) at.push_back(i);
+    if (at.size() != 2) return PlanFace{std::move(path)};
+    size_t n = path.nodes.size();
+    for (auto [from, to] : {std::pair{at[0], at[1]}, std::pair{at[1], at[0]}}) {
+        bool alongOutline = true;
+        for (size_t i = from; i != to && alongOutline; i = (i + 1) % n) alongOutline = graph.edge(path.edges[i]).outer;
+        bool behind = false;
+        for (size_t i = to; i != from && !behind; i = (i + 1) % n) behind = graph.edge(path.edges[i]).outer;
+        if (!alongOutline || behind) continue;
+        std::ranges::rotate(path.nodes, path.nodes.begin() + long(from));
+        std::ranges::rotate(path.edges, path.edges.begin() + long(from));
+        SlgNodeId left = path.nodes[0], right = path.nodes[(to + n - from) % n];
+        return PlanFace{std::move(path), left, right};
+    }
+    return PlanFace{std::move(path)};
 }
 
 void removeUnusedInnerEdges(SlgGraph &graph, const std::vector<PlanFace> &faces) {
@@ -395,7 +418,19 @@ Subdivision subdivide(const Polygon2d &outline, const std::vector<EdgeLocation> 
         result.faces.push_back(PlanFace{best->path, left, right});
         chosen.push_back(std::move(*best));
     }
-    for (SlgPath &inner : innerFaces(graph, result.faces)) result.faces.push_back(PlanFace{std::move(inner)});
+    std::vector<PlanFace> inner;
+    for (SlgPath &path : innerFaces(graph, result.faces)) {
+        PlanFace face = asBorderFace(graph, std::move(path));
+        if (face.isBorder()) {
+            --result.deletedFaces;
+            ++result.keptLeftovers;
+        }
+        (face.isBorder() ? result.faces : inner).push_back(std::move(face));
+    }
+    std::ranges::stable_sort(result.faces, {}, [&](const PlanFace &f) {
+        return std::ranges::find(result.landmarks, f.left) - result.landmarks.begin();
+    });
+    std::ranges::move(inner, std::back_inserter(result.faces));
     removeUnusedInnerEdges(graph, result.faces);
     return result;
 }
@@ -421,7 +456,7 @@ std::vector<double> straightRuns(const Polygon2d &polygon) {
     size_t n = polygon.size();
     std::vector<size_t> corners;
     for (size_t i = 0; i < n; ++i)
-        if (turnAt(polygon[(i + n - 1) % n], polygon[i], polygon[(i + 1) % n]) != Turn::Straight) corners.push_back(i);
+        if (!goesStraightOn(polygon[(i + n - 1) % n], polygon[i], polygon[(i + 1) % n])) corners.push_back(i);
     std::vector<double> runs;
     for (size_t c = 0; c < corners.size(); ++c) {
         double run = 0;

@@ -38,6 +38,7 @@ struct Subdivision {
     std::vector<SlgNodeId> landmarks;  // counter-clockwise round the outline
     std::vector<PlanFace> faces;       // the border faces in outline order, then the inner faces
     int deletedFaces = 0;              // landmark pairs no path could make a face of (L1313)
+    int keptLeftovers = 0;             // of those, pairs whose leftover face was kept as theirs
     int truncatedSearches = 0;         // faces whose search stopped at SearchLimits
     std::vector<const PlanFace *> borderFaces() const;
 };

@@ -18,19 +18,6 @@ PlanShape lot(double width, double depth) {
             {EdgeLocation::Street, EdgeLocation::NeighbourArea, EdgeLocation::Gap, EdgeLocation::NeighbourArea}};
 }
 
-// How far a point lies outside a polygon: 0 inside or on it. Corners that stand on the lot's
-// boundary are intersections of lines, a rounding off it.
-double outsideBy(const Polygon2d &polygon, Vec2d q) {
-    if (sideOf(polygon, q) != Side::Outside) return 0;
-    double nearest = INFINITY;
-    for (size_t i = 0; i < polygon.size(); ++i) {
-        Vec2d a = polygon[i], v = polygon[(i + 1) % polygon.size()] - a;
-        double t = std::clamp(dot(q - a, v) / dot(v, v), 0.0, 1.0);
-        nearest = std::min(nearest, length(a + v * t - q));
-    }
-    return nearest;
-}
-
 PlanRandom random(uint32_t id) { return PlanRandom(11, id, RandomStream::SlgParameters); }
 
 TEST(FrontStrip, ASidewalkIsAQuadAlongTheFrontAndTheLotGoesOnBehindIt) {
@@ -190,7 +177,7 @@ TEST(BuildingPlacement, EveryLotOfABlockGetsAFootprintInsideIt) {
                 ++placedCount;
                 EXPECT_TRUE(isSimple(placed->footprint.points));
                 EXPECT_GT(signedArea(placed->footprint.points), 0);
-                for (Vec2d q : placed->footprint.points) EXPECT_LT(outsideBy(sidewalk->behind->points, q), 1e-9);
+                for (Vec2d q : placed->footprint.points) EXPECT_LT(distanceOutside(sidewalk->behind->points, q), 1e-9);
             }
         }
         EXPECT_GE(placedCount, int(s.borderFaces().size()) * 2) << id;
