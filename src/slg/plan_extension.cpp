@@ -43,8 +43,8 @@ SlgEdgeId otherPieceAt(const SlgGraph &graph, SlgNodeId cut, SlgEdgeId piece) {
 
 // Splits a wall `offset` from its left end and returns the part right of the cut.
 Wall cutAt(SlgGraph &graph, const Wall &wall, double offset) {
-    double total = wallLength(graph, wall);
     if (offset <= kSameLength) return wall;
+    double total = wallLength(graph, wall);
     bool forward = graph.edge(wall.edge).start == wall.left;
     double t = forward ? offset / total : 1 - offset / total;
     SlgNodeId cut = graph.splitEdge(wall.edge, t, SlgNodeType::Inner);
@@ -68,6 +68,10 @@ Cut cutPiece(SlgGraph &graph, const Wall &wall, double offset, double width) {
     return {piece, rest};
 }
 
+bool takesDoor(double wallLength, const DoorRule &rule) {
+    return wallLength >= rule.width + 2 * rule.wallDistance - kSameLength;
+}
+
 double doorOffset(const DoorRule &rule, double length) {
     switch (rule.alignment) {
     case Alignment::Left: return rule.wallDistance;
@@ -89,7 +93,7 @@ DoorPlacement placeDoor(SlgGraph &graph, const std::vector<Wall> &walls, const D
         longestLength = l;
     }
     if (!longest) return {DoorOutcome::NoWall};
-    if (longestLength < rule.width + 2 * rule.wallDistance - kSameLength) return {DoorOutcome::WallTooShort};
+    if (!takesDoor(longestLength, rule)) return {DoorOutcome::WallTooShort};
     SlgEdgeId door = cutPiece(graph, *longest, doorOffset(rule, longestLength), rule.width).piece;
     graph.relabel(door, rule.door);
     return {DoorOutcome::Placed, door};
@@ -150,9 +154,7 @@ bool nearlySquare(const Polygon2d &room, double sideRatio) {
 
 bool hasStairDoorWall(const SlgGraph &graph, const SlgPath &room, const DoorRule &door) {
     for (const Wall &wall : faceWalls(room))
-        if (graph.edge(wall.edge).location == door.wall &&
-            wallLength(graph, wall) >= door.width + 2 * door.wallDistance - kSameLength)
-            return true;
+        if (graph.edge(wall.edge).location == door.wall && takesDoor(wallLength(graph, wall), door)) return true;
     return false;
 }
 
