@@ -34,7 +34,7 @@ void labelEdges(Subdivision &subdivision, PlanLevel level) {
     for (SlgEdgeId e = 0; e < graph.edges().size(); ++e) {
         const SlgEdge &edge = graph.edge(e);
         if (edge.removed || (edge.outer && !streets)) continue;
-        graph.setLocation(e, faces[e] >= 2 ? inner.shared : inner.single);
+        graph.relabel(e, faces[e] >= 2 ? inner.shared : inner.single);
     }
 }
 

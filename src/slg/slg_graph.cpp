@@ -93,6 +93,45 @@ void orderCounterClockwise(const SlgGraph &graph, SlgPath &path) {
     std::ranges::rotate(path.edges, path.edges.begin() + 1);
 }
 
+namespace {
+
+// The pieces an edge of a path was split into, from `from` to `to`. A split keeps the edge's
+// start, so the edge still touches one of the two; its pieces are joined by the split nodes,
+// which have no other edges.
+void appendPieces(const SlgGraph &graph, SlgEdgeId e, SlgNodeId from, SlgNodeId to, SlgPath &walked) {
+    bool forward = graph.edge(e).touches(from);
+    SlgNodeId node = forward ? from : to, goal = forward ? to : from;
+    std::vector<SlgNodeId> nodes;
+    std::vector<SlgEdgeId> edges;
+    while (true) {
+        nodes.push_back(node);
+        edges.push_back(e);
+        node = graph.edge(e).other(node);
+        if (node == goal) break;
+        const std::vector<SlgEdgeId> &joint = graph.node(node).edges;
+        VEDUTA_CHECK(joint.size() == 2, "a split node of a path's edge joins only its two pieces");
+        e = joint[0] == e ? joint[1] : joint[0];
+    }
+    if (!forward) {
+        // Walked from `to`: the nodes must start at `from`, each edge following its start node.
+        nodes.push_back(goal);
+        std::ranges::reverse(nodes);
+        nodes.pop_back();
+        std::ranges::reverse(edges);
+    }
+    walked.nodes.insert(walked.nodes.end(), nodes.begin(), nodes.end());
+    walked.edges.insert(walked.edges.end(), edges.begin(), edges.end());
+}
+
+}  // namespace
+
+void followSplits(const SlgGraph &graph, SlgPath &path) {
+    SlgPath walked;
+    for (size_t i = 0; i < path.nodes.size(); ++i)
+        appendPieces(graph, path.edges[i], path.nodes[i], path.nodes[(i + 1) % path.nodes.size()], walked);
+    path = std::move(walked);
+}
+
 SlgGraph outlineGraph(const Polygon2d &outline, const std::vector<EdgeLocation> &locations) {
     VEDUTA_CHECK(outline.size() >= 3 && locations.size() == outline.size() && signedArea(outline) > 0,
                  "an SLG outline is counter-clockwise with a location per edge");

@@ -55,7 +55,9 @@ class SlgGraph {
     SlgEdgeId edgeBetween(SlgNodeId a, SlgNodeId b) const;
     // Deleting an edge keeps its nodes (the thesis's footnote 30).
     void removeEdge(SlgEdgeId e);
-    void setLocation(SlgEdgeId e, EdgeLocation location) { edges_.at(e).location = location; }
+    // Level rules (§2.2 step 7) and the plan extension's replacement (L1981): what lies beyond
+    // an edge, or a piece of a wall that becomes a door or a window.
+    void relabel(SlgEdgeId e, EdgeLocation location) { edges_.at(e).location = location; }
 
     // Eq 26: cuts edge e at start + (end − start)·t, 0 < t < 1. Edge e keeps its start and ends
     // at the new node; a new edge with e's location runs on to e's old end. Returns the node.
@@ -83,6 +85,10 @@ class SlgGraph {
 // §4.6.1: turns a closed loop so that it runs counter-clockwise (positive signed area), the
 // front-face winding of everything after.
 void orderCounterClockwise(const SlgGraph &graph, SlgPath &path);
+
+// Brings a path up to date after edges of it were split (eq 26): each edge is replaced by its
+// pieces, in the path's direction, so the faces that share a split wall all see its new nodes.
+void followSplits(const SlgGraph &graph, SlgPath &path);
 
 // The graph of a counter-clockwise outline: a corner node for each point, in order, and outer
 // edges from each to the next with the given locations, one per edge (eq 4).
