@@ -42,7 +42,7 @@ constexpr std::array<std::string_view, 4> kDefaultsLevelNames = {"city", "distri
 constexpr std::array<std::string_view, kRoofOrientations> kRatioAttributes = {"giebelstaendig-ratio",
                                                                               "traufstaendig-ratio"};
 
-constexpr double kMaxArea = 1e9;           // m², a hundred times Berlin's
+constexpr double kMaxArea = 1e9;           // m², about Berlin's
 constexpr double kMaxLength = 1000;        // m
 constexpr double kMaxWeight = 1e6;         // a land-use weight
 constexpr double kMaxFactor = 100;         // eq 39–41, 47
