@@ -17,7 +17,7 @@ if [ $# -lt 1 ] || ! [[ $1 =~ ^[0-9]+$ ]]; then
 fi
 seconds=$1
 shift
-all_targets=(scene material rules street_rules city_data osm citygml edbs xyz asc mesh_obj mesh_ply mesh_gltf checkpoint crs)
+all_targets=(scene material rules street_rules slg_tables city_data osm citygml edbs xyz asc mesh_obj mesh_ply mesh_gltf checkpoint crs)
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=("${all_targets[@]}")
 
@@ -30,7 +30,8 @@ seed_files() {
     case "$1" in
         scene) ls scenes/*.xml scenes/*/*.xml ;;
         material) ls materials/*.xml rules/*/materials.xml ;;
-        rules) ls rules/*/*.xml | grep -v materials.xml ;;
+        rules) ls rules/*/*.xml | grep -v materials.xml | grep -v rules/slg/ ;;
+        slg_tables) ls rules/slg/*.xml ;;
         city_data) ls cities/*.xml ;;
         osm) ls data/*/*.osm tests/data/osm/*.osm "$shared"/osm/*.osm ;;
         citygml) ls tests/data/citygml/*.gml "$shared"/citygml/*.gml "$shared"/citygml/*.xml ;;

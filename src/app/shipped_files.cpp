@@ -23,4 +23,8 @@ std::filesystem::path shippedBuildingRules(const std::string &option) {
     return shippedFile("rules/gruenderzeit/FacadeStructure.xml", option);
 }
 
+std::filesystem::path shippedUrbanGeography(const std::string &option) {
+    return shippedFile("rules/slg/urban-geography.xml", option);
+}
+
 }  // namespace veduta

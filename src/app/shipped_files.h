@@ -1,4 +1,4 @@
-// The files that come with veduta (rules/gruenderzeit/, rules/streets/), found beside the
+// The files that come with veduta (rules/gruenderzeit/, rules/streets/, rules/slg/), found beside the
 // program: upwards from its folder to the source tree it was built in.
 #pragma once
 
@@ -13,5 +13,9 @@ std::filesystem::path shippedFile(const std::filesystem::path &relative, const s
 
 // The Gründerzeit rules, rules/gruenderzeit/FacadeStructure.xml.
 std::filesystem::path shippedBuildingRules(const std::string &option);
+
+// The tables of Schrader's urban geography, rules/slg/urban-geography.xml, for
+// readUrbanGeography (slg/urban_geography_file.h).
+std::filesystem::path shippedUrbanGeography(const std::string &option);
 
 }  // namespace veduta

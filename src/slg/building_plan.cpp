@@ -52,15 +52,15 @@ PlanLosses lossesOf(const CorridorPlan &plan) { return {0, 0, plan.unreached, pl
 
 // A face of a level subdivided, with its corridor from the door at a landmark on its edges of
 // `doorLocation`; a face the rules give fewer than two landmarks stays whole (L1228).
-struct LevelPlan {
+struct FacesAndCorridor {
     std::vector<PlanShape> faces;
     std::vector<std::vector<Polygon2d>> corridor;
     Vec2d door;
 };
 
-LevelPlan planLevel(const PlanShape &outline, PlanLevel level, const PlanParameters &parameters,
-                    const CorridorParameters &corridor, EdgeLocation doorLocation, const PlanRandom &random,
-                    const SearchLimits &limits, PlanLosses &losses) {
+FacesAndCorridor planLevel(const PlanShape &outline, PlanLevel level, const PlanParameters &parameters,
+                           const CorridorParameters &corridor, EdgeLocation doorLocation, const PlanRandom &random,
+                           const SearchLimits &limits, PlanLosses &losses) {
     Subdivision s = subdivide(outline.points, outline.locations, parameters, random, limits);
     labelEdges(s, level);
     losses += lossesOf(s);
@@ -95,8 +95,8 @@ std::optional<BuildingPlan> planBuilding(const PlanShape &lot, const FaceSides &
     plan.storeys = p.storeys;
     CorridorParameters house{CorridorKind::House, p.houseCorridorWidth, p.doorWidth};
     EdgeLocation entranceSide = p.entranceAtRear ? EdgeLocation::Gap : EdgeLocation::Street;
-    LevelPlan storey = planLevel(plan.placement.footprint, PlanLevel::Storey, p.storey, house, entranceSide,
-                                 planRandom(seed, identity, kStoreyPlan, 0), p.limits, plan.losses);
+    FacesAndCorridor storey = planLevel(plan.placement.footprint, PlanLevel::Building, p.storey, house, entranceSide,
+                                        planRandom(seed, identity, kStoreyPlan, 0), p.limits, plan.losses);
     plan.storey.corridor = std::move(storey.corridor);
     plan.storey.entrance = storey.door;
 
@@ -104,8 +104,9 @@ std::optional<BuildingPlan> planBuilding(const PlanShape &lot, const FaceSides &
     for (size_t i = 0; i < storey.faces.size(); ++i) {
         // A storey of one apartment has no house corridor: its door is the house door.
         EdgeLocation doorSide = storey.faces.size() > 1 ? EdgeLocation::HouseCorridor : entranceSide;
-        LevelPlan rooms = planLevel(storey.faces[i], PlanLevel::Apartment, p.apartment, inner, doorSide,
-                                    planRandom(seed, identity, kApartmentPlan, uint32_t(i)), p.limits, plan.losses);
+        FacesAndCorridor rooms =
+            planLevel(storey.faces[i], PlanLevel::Apartment, p.apartment, inner, doorSide,
+                      planRandom(seed, identity, kApartmentPlan, uint32_t(i)), p.limits, plan.losses);
         plan.storey.apartments.push_back(
             {std::move(storey.faces[i]), std::move(rooms.faces), std::move(rooms.corridor), rooms.door});
     }

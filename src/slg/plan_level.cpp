@@ -14,10 +14,8 @@ InnerLocations innerLocations(PlanLevel level) {
     switch (level) {
     case PlanLevel::City:
     case PlanLevel::District: return {EdgeLocation::Street, EdgeLocation::Street};
-    case PlanLevel::Block:
-    case PlanLevel::Lot: return {EdgeLocation::NeighbourArea, EdgeLocation::Gap};
-    case PlanLevel::Building:
-    case PlanLevel::Storey: return {EdgeLocation::NeighbourApartment, EdgeLocation::HouseCorridor};
+    case PlanLevel::Block: return {EdgeLocation::NeighbourArea, EdgeLocation::Gap};
+    case PlanLevel::Building: return {EdgeLocation::NeighbourApartment, EdgeLocation::HouseCorridor};
     default: return {EdgeLocation::NeighbourRoom, EdgeLocation::ApartmentCorridor};
     }
 }

@@ -8,7 +8,10 @@
 
 namespace veduta {
 
-enum class PlanLevel : uint8_t { City, District, Block, Lot, Building, Storey, Apartment };
+// The levels that subdivide a plan. A lot is not subdivided (its sidewalk and building are
+// moved sides, building_plan.h); Building is Table 13's plan, the one every storey shares.
+enum class PlanLevel : uint8_t { City, District, Block, Building, Apartment };
+inline constexpr int kPlanLevels = 5;
 
 // Gives the edges of a level's subdivision their locations. City and District: every edge a
 // street. Below, outer edges keep what the parent's face gave them (a lot's sides are already

@@ -51,7 +51,7 @@ TEST(PlanLevel, AStoreysApartmentsShareWallsAndKeepTheShellsLocations) {
     p.count = 4;
     p.jitter = 0;
     Subdivision s = subdivide(outline, shell, p, PlanRandom(1, 1, RandomStream::SlgPlan));
-    labelEdges(s, PlanLevel::Storey);
+    labelEdges(s, PlanLevel::Building);
     for (const SlgEdge &edge : s.graph.edges()) {
         if (edge.removed) continue;
         if (edge.outer) {
