@@ -74,9 +74,9 @@ bool takesDoor(double wallLength, const DoorRule &rule) {
 
 double doorOffset(const DoorRule &rule, double length) {
     switch (rule.alignment) {
-    case Alignment::Left: return rule.wallDistance;
-    case Alignment::Right: return length - rule.wallDistance - rule.width;
-    case Alignment::Centre: break;
+    case DoorAlignment::Left: return rule.wallDistance;
+    case DoorAlignment::Right: return length - rule.wallDistance - rule.width;
+    case DoorAlignment::Centre: break;
     }
     return (length - rule.width) / 2;
 }
@@ -167,23 +167,23 @@ bool mayBeStairwell(const SlgGraph &graph, const PlanFace &face, const Stairwell
 }  // namespace
 
 DoorRule houseDoor(double width, double wallDistance, EdgeLocation facing) {
-    return {facing, EdgeLocation::MainEntrance, width, wallDistance, Alignment::Centre};
+    return {facing, EdgeLocation::MainEntrance, width, wallDistance, DoorAlignment::Centre};
 }
 
 DoorRule apartmentDoor(double width, double wallDistance) {
-    return {EdgeLocation::HouseCorridor, EdgeLocation::InnerMainEntrance, width, wallDistance, Alignment::Centre};
+    return {EdgeLocation::HouseCorridor, EdgeLocation::InnerMainEntrance, width, wallDistance, DoorAlignment::Centre};
 }
 
 DoorRule roomDoor(double width, double wallDistance) {
-    return {EdgeLocation::ApartmentCorridor, EdgeLocation::InnerEntrance, width, wallDistance, Alignment::Centre};
+    return {EdgeLocation::ApartmentCorridor, EdgeLocation::InnerEntrance, width, wallDistance, DoorAlignment::Centre};
 }
 
-DoorRule shopDoor(double width, double wallDistance, Alignment alignment) {
+DoorRule shopDoor(double width, double wallDistance, DoorAlignment alignment) {
     return {EdgeLocation::Street, EdgeLocation::Entrance, width, wallDistance, alignment};
 }
 
 DoorRule stairDoor(double width, double wallDistance) {
-    return {EdgeLocation::HouseCorridor, EdgeLocation::InnerStairEntrance, width, wallDistance, Alignment::Centre};
+    return {EdgeLocation::HouseCorridor, EdgeLocation::InnerStairEntrance, width, wallDistance, DoorAlignment::Centre};
 }
 
 DoorPlacement insertDoor(SlgGraph &graph, const DoorRule &rule) { return placeDoor(graph, graphWalls(graph), rule); }
@@ -198,6 +198,7 @@ DoorPlacement insertDoor(SlgGraph &graph, SlgPath &face, const DoorRule &rule) {
 int windowsThatFit(const WindowRule &rule, double wallLength) {
     double spacing = spacingOf(rule);
     int fit = int(std::floor((wallLength - 2 * rule.wallDistance + spacing) / (rule.width + spacing) + kSameLength));
+    if (rule.arrangement == WindowArrangement::Single) fit = std::min(fit, 1);
     return std::max(0, std::min(fit, rule.count.value_or(fit)));
 }
 

@@ -9,12 +9,10 @@
 #include <optional>
 
 #include "slg/slg_graph.h"
+#include "slg/storey_parameters.h"
 #include "slg/subdivision.h"
 
 namespace veduta {
-
-// Where a door sits along its wall, seen from outside the face whose path holds the wall.
-enum class Alignment : uint8_t { Left, Centre, Right };
 
 // A kind of door (L1957–1972): the location of the walls it may go in and the one its piece
 // takes, its width and how near at least it comes to the wall's ends (the neighbouring walls).
@@ -23,7 +21,7 @@ struct DoorRule {
     EdgeLocation door = EdgeLocation::MainEntrance;
     double width = 1;
     double wallDistance = 0;
-    Alignment alignment = Alignment::Centre;
+    DoorAlignment alignment = DoorAlignment::Centre;
 };
 
 // The house door: one per building, in the ground floor's house corridor, centred in its outer
@@ -34,7 +32,7 @@ DoorRule apartmentDoor(double width, double wallDistance);
 // A room's door: centred in its wall to the apartment's corridor.
 DoorRule roomDoor(double width, double wallDistance);
 // A shop's or restaurant's own door: in its street wall, left, centred or right.
-DoorRule shopDoor(double width, double wallDistance, Alignment alignment);
+DoorRule shopDoor(double width, double wallDistance, DoorAlignment alignment);
 // The stairwell's entrance: centred in its wall to the house corridor (L2018).
 DoorRule stairDoor(double width, double wallDistance);
 
@@ -55,11 +53,6 @@ struct DoorPlacement {
 // before and after; other paths through the split edge need followSplits.
 DoorPlacement insertDoor(SlgGraph &graph, const DoorRule &rule);
 DoorPlacement insertDoor(SlgGraph &graph, SlgPath &face, const DoorRule &rule);
-
-enum class WindowArrangement : uint8_t {
-    Separated,   // single windows `spacing` apart
-    Contiguous,  // a row of windows with no wall between them (a shop front)
-};
 
 // A storey's window tuple (§4.6) as far as the plan needs it: the width, how they are arranged,
 // their spacing (ignored when contiguous), the least margin to the wall's ends and how many at

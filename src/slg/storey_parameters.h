@@ -19,14 +19,18 @@ inline constexpr int kStoreyUses = 5;
 enum class FitOut : uint8_t { Rooms, Apartments, Storey };
 
 // einfach getrennt | mehrfach getrennt | mehrfach zusammenhängend (thesis §5.2.3).
-enum class WindowPlacement : uint8_t { Single, Separated, Contiguous };
+enum class WindowArrangement : uint8_t {
+    Single,      // one window
+    Separated,   // windows `spacing` apart
+    Contiguous,  // a row of windows with no wall between them (a shop front)
+};
 
 enum class DoorAlignment : uint8_t { Left, Centre, Right };
 
 // The thesis's window 9-tuple (footnote 80); no canopy depth means no canopy.
 struct WindowParameters {
     double height = 0, sill = 0, width = 0;
-    WindowPlacement placement = WindowPlacement::Single;
+    WindowArrangement placement = WindowArrangement::Single;
     double spacing = 0, wallDistance = 0;
     bool glass = true;
     std::optional<double> canopyDepth;

@@ -200,7 +200,7 @@ WindowParameters windowParameters(const XmlElement &e) {
     w.height = number(e, "height", 0, kMaxLength);
     w.sill = number(e, "sill", 0, kMaxLength);
     w.width = number(e, "width", 0, kMaxLength);
-    w.placement = WindowPlacement(indexNamed(e, "placement", kPlacementNames));
+    w.placement = WindowArrangement(indexNamed(e, "placement", kPlacementNames));
     w.spacing = number(e, "spacing", 0, kMaxLength);
     w.wallDistance = number(e, "wall-distance", 0, kMaxLength);
     w.glass = e.boolean("glass", true);

@@ -131,6 +131,9 @@ TEST(PlanExtension, AsManyWindowsAsFitUnlessFewerAreAsked) {
     WindowRule contiguous = windows(2, kContiguous, 5, 1);
     EXPECT_EQ(windowsThatFit(contiguous, 8), 3);
     EXPECT_EQ(windowsThatFit(contiguous, 7.9), 2);
+    WindowRule single = windows(1, WindowArrangement::Single, 1, 1);
+    EXPECT_EQ(windowsThatFit(single, 7), 1) << "einfach getrennt: one window a wall";
+    EXPECT_EQ(windowsThatFit(single, 2.9), 0);
 }
 
 TEST(PlanExtension, FewerWindowsThanFitAreCentredAsAGroup) {
@@ -176,7 +179,7 @@ TEST(PlanExtension, AHouseDoorIsCentredInTheLongestWallAndTheRestStaysWall) {
 
 TEST(PlanExtension, OfEqualWallsTheFirstTakesTheDoor) {
     SlgGraph graph = rectangle(6, 4, {Street, Gap, Street, Gap});
-    DoorPlacement door = insertDoor(graph, shopDoor(1, 0, Alignment::Centre));
+    DoorPlacement door = insertDoor(graph, shopDoor(1, 0, DoorAlignment::Centre));
     ASSERT_EQ(door.outcome, DoorOutcome::Placed);
     EXPECT_EQ(graph.edge(door.door).location, Entrance);
     expectAt(graph, graph.edge(door.door).start, {2.5, 0});
@@ -186,17 +189,17 @@ TEST(PlanExtension, OfEqualWallsTheFirstTakesTheDoor) {
 TEST(PlanExtension, ShopDoorsAlignLeftOrRightSeenFromTheStreet) {
     // Seen from the street below, the bottom wall's left end is the origin; from above, the top
     // wall's left end is (6, 4).
-    for (Alignment alignment : {Alignment::Left, Alignment::Right}) {
+    for (DoorAlignment alignment : {DoorAlignment::Left, DoorAlignment::Right}) {
         SlgGraph graph = rectangle(6, 4, {Street, NeighbourArea, Gap, NeighbourArea});
         SlgPath shop = outlinePath(4);
         insertDoor(graph, shop, shopDoor(1.5, 0.5, alignment));
         std::vector<Piece> left = {{0.5, Street}, {1.5, Entrance}, {4, Street}};
         std::vector<Piece> right = {{4, Street}, {1.5, Entrance}, {0.5, Street}};
-        expectPieces(piecesBetween(graph, shop, 0, 1), alignment == Alignment::Left ? left : right);
+        expectPieces(piecesBetween(graph, shop, 0, 1), alignment == DoorAlignment::Left ? left : right);
     }
     SlgGraph graph = rectangle(6, 4, {Gap, NeighbourArea, Street, NeighbourArea});
     SlgPath shop = outlinePath(4);
-    insertDoor(graph, shop, shopDoor(1, 0, Alignment::Left));
+    insertDoor(graph, shop, shopDoor(1, 0, DoorAlignment::Left));
     expectPieces(piecesBetween(graph, shop, 2, 3), {{1, Entrance}, {5, Street}});
     expectAt(graph, graph.edge(2).end, {5, 4});  // one split: no margin to cut
 }
@@ -230,7 +233,7 @@ RoomAndCorridor roomAndCorridor() {
 TEST(PlanExtension, ADoorInAWallTheFaceWalksBackwardsAlignsToItsLeftAndTheNeighbourFollows) {
     RoomAndCorridor plan = roomAndCorridor();
     // Seen from the room, outside the corridor, the wall's left end is its top.
-    DoorRule door{ApartmentCorridor, InnerEntrance, 1, 0.5, Alignment::Left};
+    DoorRule door{ApartmentCorridor, InnerEntrance, 1, 0.5, DoorAlignment::Left};
     ASSERT_EQ(insertDoor(plan.graph, plan.corridor, door).outcome, DoorOutcome::Placed);
     expectPieces(piecesBetween(plan.graph, plan.corridor, plan.top, plan.bottom),
                  {{0.5, ApartmentCorridor}, {1, InnerEntrance}, {1.5, ApartmentCorridor}});
@@ -244,10 +247,10 @@ TEST(PlanExtension, ADoorInAWallTheFaceWalksBackwardsAlignsToItsLeftAndTheNeighb
 
 TEST(PlanExtension, AFaceFindsThePiecesOfAWallSplitFromTheOtherSide) {
     RoomAndCorridor plan = roomAndCorridor();
-    DoorRule first{ApartmentCorridor, InnerEntrance, 1, 0.5, Alignment::Left};
+    DoorRule first{ApartmentCorridor, InnerEntrance, 1, 0.5, DoorAlignment::Left};
     ASSERT_EQ(insertDoor(plan.graph, plan.room, first).outcome, DoorOutcome::Placed);
     // The corridor's path still holds the wall whole; its longest piece left is the upper 1.5 m.
-    DoorRule second{ApartmentCorridor, InnerEntrance, 0.5, 0, Alignment::Centre};
+    DoorRule second{ApartmentCorridor, InnerEntrance, 0.5, 0, DoorAlignment::Centre};
     ASSERT_EQ(insertDoor(plan.graph, plan.corridor, second).outcome, DoorOutcome::Placed);
     expectClosed(plan.graph, plan.corridor);
     expectPieces(piecesBetween(plan.graph, plan.corridor, plan.top, plan.bottom),
@@ -367,7 +370,7 @@ TEST(PlanExtension, DoorsInASubdividedApartmentKeepEveryFaceClosed) {
     // some of them next to a wall another face's door has already split.
     int doors = 0;
     for (PlanFace &face : plan.faces) {
-        DoorRule door{Gap, InnerEntrance, 0.8, 0.1, Alignment::Centre};
+        DoorRule door{Gap, InnerEntrance, 0.8, 0.1, DoorAlignment::Centre};
         doors += insertDoor(plan.graph, face.path, door).outcome == DoorOutcome::Placed ? 1 : 0;
     }
     EXPECT_EQ(doors, int(plan.faces.size()));

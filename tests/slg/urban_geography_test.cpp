@@ -327,7 +327,7 @@ TEST(UrbanGeography, RetailGroundFloorOfTable15) {
     ASSERT_TRUE(shop);
     EXPECT_EQ(shop->height, 3);
     EXPECT_EQ(shop->fitOut, FitOut::Apartments);
-    EXPECT_EQ(shop->frontWindows.placement, WindowPlacement::Contiguous);
+    EXPECT_EQ(shop->frontWindows.placement, WindowArrangement::Contiguous);
     EXPECT_FALSE(shop->frontWindows.canopyDepth);
     EXPECT_EQ(shop->backWindows.canopyDepth, 1.7);
     EXPECT_EQ(shop->outerDoor.alignment, DoorAlignment::Left);
