@@ -15,6 +15,7 @@
 #include "city/citygml_buildings.h"
 #include "city/generate_buildings.h"
 #include "city/generate_city.h"
+#include "city/slg_buildings.h"
 #include "geo/generate_landscape.h"
 #include "geodesy/local_frame.h"
 #include "geodesy/map_projection.h"
@@ -31,7 +32,8 @@ class SceneAssembler {
     SceneAssembler(const SceneDescription &d, std::vector<std::string> &warnings) : d_(d), warnings_(warnings) {}
 
     RenderScene assemble() && {
-        builder_.setCamera(placeCamera());
+        Camera camera = placeCamera();
+        builder_.setCamera(camera);
         Sun sun = placeSun(d_);
         builder_.setSun(sun);
         Environment environment = buildEnvironment(d_.environment, sun);
@@ -105,6 +107,8 @@ class SceneAssembler {
                     },
                     warnings_);
             });
+        for (const SlgDesc &slg : d_.slg)
+            within(slg.loc, "<slg>", [&] { generateSlg(slg, seedOf(slg.seed), camera, builder_, warnings_); });
         for (size_t i = 0; i < d_.cities.size(); ++i) {
             within(d_.cities[i].loc, elementName(d_.cities[i]), [&] {
                 generateCity(d_.cities[i], cities[i], seedOf(d_.cities[i].seed), landscape ? &*landscape : nullptr,
@@ -277,6 +281,7 @@ void replaceEverySeed(SceneDescription &d, uint32_t seed) {
     d.renderSeed.reset();
     for (BuildingGroupDesc &group : d.buildingGroups) group.seed.reset();
     for (CityDesc &city : d.cities) city.seed.reset();
+    for (SlgDesc &slg : d.slg) slg.seed.reset();
     if (d.landscape) d.landscape->seed.reset();
 }
 

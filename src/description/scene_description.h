@@ -195,6 +195,25 @@ struct CityGmlDesc {
     uint32_t objectId = 0;
 };
 
+// An <slg> element: a block or a district planned with Schrader's Spatial Landmark Graph from
+// the urban-geography tables alone (docs/slg.md): its outline in the scene's metres, cut into
+// lots (a district first into blocks between streets), each lot's building planned down to its
+// rooms and built at the level of detail its distance from the camera asks for.
+struct SlgDesc {
+    FileLoc loc;
+    enum class Level : uint8_t { Block, District } level = SlgDesc::Level::Block;
+    std::vector<Vec2f> outline;  // counter-clockwise in the scene's x/y, at height `base`
+    FileLoc outlineLoc;
+    float base = 0;
+    std::filesystem::path tables;  // rules/slg/urban-geography.xml or one like it
+    FileLoc tablesLoc;
+    // Nearer than `rooms` metres a building shows its rooms behind the glass; nearer than
+    // `storeys` its storeys, windows and door; farther one quad a side (Table 12's 50 and 100 m).
+    float rooms = 50, storeys = 100;
+    std::optional<uint32_t> seed;  // with each building's identity, every random choice; unset: the scene's
+    uint32_t objectId = 0;
+};
+
 // A data file a <landscape> reads, with the CRS of its coordinates.
 struct DataFileDesc {
     std::filesystem::path file;  // resolved against the scene's folder
@@ -253,6 +272,7 @@ struct SceneDescription {
     std::vector<BuildingGroupDesc> buildingGroups;
     std::vector<CityDesc> cities;
     std::vector<CityGmlDesc> cityGml;
+    std::vector<SlgDesc> slg;
     std::optional<LandscapeDesc> landscape;
 };
 

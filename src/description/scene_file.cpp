@@ -76,6 +76,8 @@ class SceneFileReader {
             readGenerate(e);
         } else if (n == "citygml") {
             readCityGml(e);
+        } else if (n == "slg") {
+            readSlg(e);
         } else if (n == "landscape") {
             readLandscape(e);
         } else if (isGeometry(n)) {
@@ -493,6 +495,30 @@ class SceneFileReader {
         scene_.cityGml.push_back(std::move(gml));
     }
 
+    void readSlg(const XmlElement &e) {
+        SlgDesc slg;
+        slg.loc = e.loc();
+        std::string level = e.string("level", "block");
+        if (level != "block" && level != "district")
+            e.failAt("level", fmt::format("level is 'block' or 'district', not '{}'", level));
+        slg.level = level == "district" ? SlgDesc::Level::District : SlgDesc::Level::Block;
+        std::vector<float> points = e.numbers("outline");
+        slg.outlineLoc = e.attributeLoc("outline");
+        if (points.size() < 6 || points.size() % 2 != 0)
+            e.failAt("outline", "outline takes x y pairs of at least three corners");
+        for (size_t i = 0; i < points.size(); i += 2) slg.outline.push_back({points[i], points[i + 1]});
+        slg.base = e.number("base", 0, -1e4f, 1e4f);
+        slg.tables = pathAttribute(e, "tables");
+        slg.tablesLoc = e.attributeLoc("tables");
+        slg.rooms = e.number("rooms_within", slg.rooms, 0, 1e6f);
+        slg.storeys = e.number("storeys_within", slg.storeys, 0, 1e6f);
+        if (slg.storeys < slg.rooms) e.failAt("storeys_within", "storeys_within is less than rooms_within");
+        slg.seed = seedOverride(e);
+        readObjectId(e, slg.loc);
+        e.checkLeaf();
+        scene_.slg.push_back(std::move(slg));
+    }
+
     void readLandscape(const XmlElement &e) {
         if (scene_.landscape) e.fail("the scene has a <landscape> already; give several <dgm> tiles inside one");
         LandscapeDesc land;
@@ -714,6 +740,7 @@ class SceneFileReader {
         }
         for (CityDesc &c : scene_.cities) byPlace[{c.loc.line, c.loc.column}] = &c.objectId;
         for (CityGmlDesc &c : scene_.cityGml) byPlace[{c.loc.line, c.loc.column}] = &c.objectId;
+        for (SlgDesc &s : scene_.slg) byPlace[{s.loc.line, s.loc.column}] = &s.objectId;
         if (scene_.landscape)
             byPlace[{scene_.landscape->loc.line, scene_.landscape->loc.column}] = &scene_.landscape->objectId;
         uint32_t next = 1;

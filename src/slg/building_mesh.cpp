@@ -51,15 +51,6 @@ class MeshWriter {
     Mesh &mesh_;
 };
 
-// The corners of a footprint where it turns, from its point 0 (the front's left end, a corner).
-std::vector<size_t> cornersOf(const Polygon2d &footprint) {
-    std::vector<size_t> corners;
-    size_t n = footprint.size();
-    for (size_t i = 0; i < n; ++i)
-        if (!goesStraightOn(footprint[(i + n - 1) % n], footprint[i], footprint[(i + 1) % n])) corners.push_back(i);
-    return corners;
-}
-
 double topOf(const BuildingPlan &plan, const BuildingShape &shape) {
     return shape.base + plan.storeys * shape.storeyHeight;
 }
@@ -195,7 +186,8 @@ Mesh buildingMesh(const BuildingPlan &plan, const BuildingShape &shape, Building
     Mesh mesh;
     MeshWriter out(mesh);
     const Polygon2d &footprint = plan.placement.footprint.points;
-    std::vector<size_t> corners = cornersOf(footprint);
+    // From point 0, the front's left end: a corner, where the first wall starts.
+    std::vector<size_t> corners = turningPoints(footprint);
     double top = topOf(plan, shape);
     if (lod == BuildingLod::Box) boxWalls(out, footprint, corners, shape.base, top, materials.wall);
     else storeyWalls(out, plan, shape, materials);

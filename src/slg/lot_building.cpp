@@ -18,7 +18,8 @@ std::optional<LotBuilding> lotBuilding(const UrbanGeography &geography, const Lo
     PlacementParameters &placement = p.placement;
     placement.bauweise = bauweise(building.use, lot.locality);
     placement.alignment = alignment(placement.bauweise, random);
-    placement.sideRatio = sideRatio(geography, roofOrientation(placement.bauweise, random), random);
+    building.orientation = roofOrientation(placement.bauweise, random);
+    placement.sideRatio = sideRatio(geography, building.orientation, random);
     placement.buildingArea = averageBuildingArea(geography, building.use, lot.locality);
     // The footprint's sides are the storey plan's outline: none shorter than its faces may be.
     placement.minimumSide = lengthLimits(p.storey).minimum;

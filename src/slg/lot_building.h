@@ -21,7 +21,8 @@ struct LotGeography {
 struct LotBuilding {
     BuildingPlanParameters parameters;
     DominantUse use = DominantUse::Wohngebiet;
-    std::vector<StoreyUse> storeyUses;  // from the ground floor up (eq 62)
+    std::vector<StoreyUse> storeyUses;                             // from the ground floor up (eq 62)
+    RoofOrientation orientation = RoofOrientation::Traufstaendig;  // eq 50
 };
 
 // None for open land (Unbebaut: no building, eq 48). Every draw is the cascade's

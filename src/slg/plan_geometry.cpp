@@ -64,6 +64,14 @@ bool goesStraightOn(Vec2d p, Vec2d q, Vec2d r) {
     return dot(u, v) > 0 && std::abs(cross(u, v)) <= kRounding * length(u) * length(v);
 }
 
+std::vector<size_t> turningPoints(const Polygon2d &polygon) {
+    std::vector<size_t> corners;
+    size_t n = polygon.size();
+    for (size_t i = 0; i < n; ++i)
+        if (!goesStraightOn(polygon[(i + n - 1) % n], polygon[i], polygon[(i + 1) % n])) corners.push_back(i);
+    return corners;
+}
+
 bool isReflexCorner(const Polygon2d &ccw, size_t i) {
     size_t n = ccw.size();
     return turnAt(ccw[(i + n - 1) % n], ccw[i], ccw[(i + 1) % n]) == Turn::Right;

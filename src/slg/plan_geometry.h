@@ -44,6 +44,8 @@ Turn turnAt(Vec2d p, Vec2d q, Vec2d r);
 // crossings of lines worked out in double (a turn under 10⁻⁹ radians): the crossings along one
 // ray of a plan lie in its line only to a rounding, which an exact test would take for corners.
 bool goesStraightOn(Vec2d p, Vec2d q, Vec2d r);
+// The indices of the points where a polygon turns (not goesStraightOn), in order.
+std::vector<size_t> turningPoints(const Polygon2d &polygon);
 // Whether the corner at points[i] of a counter-clockwise polygon is reflex (turns right).
 bool isReflexCorner(const Polygon2d &ccw, size_t i);
 

@@ -1,0 +1,19 @@
+// The <slg> element (docs/slg.md): a block or a district planned with Schrader's Spatial
+// Landmark Graph from the urban-geography tables alone — the district cut into blocks between
+// streets, each block into lots, each lot's building planned down to its rooms and built at the
+// level of detail its distance from the camera asks for — with its streets, block surfaces and
+// sidewalks.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "description/scene_description.h"
+#include "scene/render_scene.h"
+
+namespace veduta {
+
+void generateSlg(const SlgDesc &desc, uint32_t seed, const Camera &camera, RenderSceneBuilder &builder,
+                 std::vector<std::string> &warnings);
+
+}  // namespace veduta
