@@ -54,7 +54,6 @@ PlanLosses lossesOf(const CorridorPlan &plan) { return {0, 0, plan.unreached, pl
 // `doorLocation`; a face the rules give fewer than two landmarks stays whole (L1228).
 struct FacesAndCorridor {
     std::vector<PlanShape> faces;
-    std::vector<std::vector<Polygon2d>> corridor;
     Vec2d door;
 };
 
@@ -64,11 +63,11 @@ FacesAndCorridor planLevel(const PlanShape &outline, PlanLevel level, const Plan
     Subdivision s = subdivide(outline.points, outline.locations, parameters, random, limits);
     labelEdges(s, level);
     losses += lossesOf(s);
-    if (s.borderFaces().empty()) return {{outline}, {}, vertexMean(outline.points)};
+    if (s.borderFaces().empty()) return {{outline}, vertexMean(outline.points)};
     SlgNodeId door = doorLandmark(s, doorLocation);
     CorridorPlan plan = makeCorridor(s, door, corridor);
     losses += lossesOf(plan);
-    return {std::move(plan.faces), std::move(plan.corridor), s.graph.position(door)};
+    return {std::move(plan.faces), s.graph.position(door)};
 }
 
 }  // namespace
@@ -97,7 +96,6 @@ std::optional<BuildingPlan> planBuilding(const PlanShape &lot, const FaceSides &
     EdgeLocation entranceSide = p.entranceAtRear ? EdgeLocation::Gap : EdgeLocation::Street;
     FacesAndCorridor storey = planLevel(plan.placement.footprint, PlanLevel::Building, p.storey, house, entranceSide,
                                         planRandom(seed, identity, kStoreyPlan, 0), p.limits, plan.losses);
-    plan.storey.corridor = std::move(storey.corridor);
     plan.storey.entrance = storey.door;
 
     CorridorParameters inner{CorridorKind::Apartment, p.apartmentCorridorWidth, p.doorWidth};
@@ -107,8 +105,7 @@ std::optional<BuildingPlan> planBuilding(const PlanShape &lot, const FaceSides &
         FacesAndCorridor rooms =
             planLevel(storey.faces[i], PlanLevel::Apartment, p.apartment, inner, doorSide,
                       planRandom(seed, identity, kApartmentPlan, uint32_t(i)), p.limits, plan.losses);
-        plan.storey.apartments.push_back(
-            {std::move(storey.faces[i]), std::move(rooms.faces), std::move(rooms.corridor), rooms.door});
+        plan.storey.apartments.push_back({std::move(storey.faces[i]), std::move(rooms.faces), rooms.door});
     }
     return plan;
 }

@@ -15,16 +15,14 @@
 namespace veduta {
 
 struct ApartmentPlan {
-    PlanShape outline;  // after the house corridor took its strip
-    std::vector<PlanShape> rooms;
-    std::vector<std::vector<Polygon2d>> corridor;  // the apartment corridor (CorridorPlan::corridor)
-    Vec2d door;                                    // the landmark its corridor starts at
+    PlanShape outline;             // after the house corridor took its strip
+    std::vector<PlanShape> rooms;  // the apartment corridor is what they leave of it (corridorPieces)
+    Vec2d door;                    // the landmark its corridor starts at
 };
 
 struct StoreyPlan {
-    std::vector<ApartmentPlan> apartments;
-    std::vector<std::vector<Polygon2d>> corridor;  // the house corridor
-    Vec2d entrance;                                // the landmark of the house door
+    std::vector<ApartmentPlan> apartments;  // the house corridor is what they leave (corridorPieces)
+    Vec2d entrance;                         // the landmark of the house door
 };
 
 // What a plan lost on the way, for the warnings and the tests: each count is of faces the

@@ -51,25 +51,6 @@ Polygon2d inexactPolygon(const Region::Polygon_2 &polygon) {
     return points;
 }
 
-// The outline less the faces. Corners computed in double stand a rounding off the outline, so
-// the exact difference leaves slivers along it; pieces of no appreciable area are dropped.
-std::vector<std::vector<Polygon2d>> corridorPieces(const Polygon2d &outline, const std::vector<PlanShape> &faces) {
-    Region region(exactPolygon(outline));
-    for (const PlanShape &face : faces) region.difference(exactPolygon(face.points));
-    std::vector<CGAL::Polygon_with_holes_2<Kernel>> parts;
-    region.polygons_with_holes(std::back_inserter(parts));
-    double negligible = 1e-9 * signedArea(outline);
-    std::vector<std::vector<Polygon2d>> pieces;
-    for (const auto &part : parts) {
-        std::vector<Polygon2d> piece{inexactPolygon(part.outer_boundary())};
-        if (signedArea(piece.front()) <= negligible) continue;
-        for (const auto &hole : part.holes())
-            if (-signedArea(inexactPolygon(hole)) > negligible) piece.push_back(inexactPolygon(hole));
-        pieces.push_back(std::move(piece));
-    }
-    return pieces;
-}
-
 enum SideName { kTop, kLeft, kRight };
 
 std::vector<size_t> &side(FaceSides &sides, int name) {
@@ -100,7 +81,6 @@ class CorridorMaker {
         } else {
             reachEveryFace(done);
         }
-        plan_.corridor = corridorPieces(outline_, plan_.faces);
         return std::move(plan_);
     }
 
@@ -181,6 +161,25 @@ class CorridorMaker {
 };
 
 }  // namespace
+
+// Corners computed in double stand a rounding off the outline, so the exact difference leaves
+// slivers along it; pieces of no appreciable area are dropped.
+std::vector<std::vector<Polygon2d>> corridorPieces(const Polygon2d &outline, const std::vector<PlanShape> &faces) {
+    Region region(exactPolygon(outline));
+    for (const PlanShape &face : faces) region.difference(exactPolygon(face.points));
+    std::vector<CGAL::Polygon_with_holes_2<Kernel>> parts;
+    region.polygons_with_holes(std::back_inserter(parts));
+    double negligible = 1e-9 * signedArea(outline);
+    std::vector<std::vector<Polygon2d>> pieces;
+    for (const auto &part : parts) {
+        std::vector<Polygon2d> piece{inexactPolygon(part.outer_boundary())};
+        if (signedArea(piece.front()) <= negligible) continue;
+        for (const auto &hole : part.holes())
+            if (-signedArea(inexactPolygon(hole)) > negligible) piece.push_back(inexactPolygon(hole));
+        pieces.push_back(std::move(piece));
+    }
+    return pieces;
+}
 
 std::vector<double> freeLengths(const std::vector<PlanShape> &faces, size_t f, const Polygon2d &outline) {
     const PlanShape &face = faces[f];

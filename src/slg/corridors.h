@@ -22,11 +22,9 @@ struct CorridorParameters {
 
 struct CorridorPlan {
     // The border faces of the subdivision after their sides moved, in its order, with their sides.
+    // The corridor is what they leave of the outline (corridorPieces).
     std::vector<PlanShape> faces;
     std::vector<FaceSides> sides;
-    // The outline less the faces: the corridor, one polygon (with its holes' outlines after it,
-    // clockwise) per connected piece.
-    std::vector<std::vector<Polygon2d>> corridor;
     // House corridors: the faces whose free edges onto the corridor are all shorter than the
     // entrance width after every side that could move did.
     int unreached = 0;
@@ -41,6 +39,11 @@ struct CorridorPlan {
 // top, left and right with the most free length by the width (the shortest on a tie), until it
 // has one; the apartment corridor moves only the tops.
 CorridorPlan makeCorridor(const Subdivision &subdivision, SlgNodeId entrance, const CorridorParameters &parameters);
+
+// The outline less the faces — a corridor, or what a plan's faces leave — one polygon (with its
+// holes' outlines after it, clockwise) per connected piece. CGAL's exact Booleans: the costliest
+// step of a plan, so made only where the geometry is wanted.
+std::vector<std::vector<Polygon2d>> corridorPieces(const Polygon2d &outline, const std::vector<PlanShape> &faces);
 
 // Of each edge of face `f`, the length on neither the outline nor another face.
 std::vector<double> freeLengths(const std::vector<PlanShape> &faces, size_t f, const Polygon2d &outline);

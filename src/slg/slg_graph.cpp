@@ -90,7 +90,7 @@ void orderCounterClockwise(const SlgGraph &graph, SlgPath &path) {
     // edges[i] joined nodes[i] and nodes[i+1]; after reversing the nodes it must join the new
     // nodes[i] and nodes[i+1], which is old edge n−2−i (mod n).
     std::ranges::reverse(path.edges);
-    std::ranges::rotate(path.edges, path.edges.begin() + 1);
+    std::rotate(path.edges.begin(), path.edges.begin() + 1, path.edges.end());
 }
 
 namespace {

@@ -344,8 +344,8 @@ PlanFace asBorderFace(const SlgGraph &graph, SlgPath path) {
         bool behind = false;
         for (size_t i = to; i != from && !behind; i = (i + 1) % n) behind = graph.edge(path.edges[i]).outer;
         if (!alongOutline || behind) continue;
-        std::ranges::rotate(path.nodes, path.nodes.begin() + long(from));
-        std::ranges::rotate(path.edges, path.edges.begin() + long(from));
+        std::rotate(path.nodes.begin(), path.nodes.begin() + long(from), path.nodes.end());
+        std::rotate(path.edges.begin(), path.edges.begin() + long(from), path.edges.end());
         SlgNodeId left = path.nodes[0], right = path.nodes[(to + n - from) % n];
         return PlanFace{std::move(path), left, right};
     }

@@ -52,9 +52,11 @@ void expectCovering(const BuildingPlan &plan) {
             rooms += signedArea(room.points);
             expectInside(room.points, a.outline.points, 1e-6);
         }
-        EXPECT_NEAR(rooms + areaOf(a.corridor), signedArea(a.outline.points), 1e-6);
+        EXPECT_NEAR(rooms + areaOf(corridorPieces(a.outline.points, a.rooms)), signedArea(a.outline.points), 1e-6);
     }
-    EXPECT_NEAR(apartments + areaOf(plan.storey.corridor), signedArea(footprint), 1e-6);
+    std::vector<PlanShape> outlines;
+    for (const ApartmentPlan &a : plan.storey.apartments) outlines.push_back(a.outline);
+    EXPECT_NEAR(apartments + areaOf(corridorPieces(footprint, outlines)), signedArea(footprint), 1e-6);
 }
 
 TEST(BuildingPlan, ATerracedHouseGetsApartmentsRoomsAndCorridors) {
@@ -65,7 +67,9 @@ TEST(BuildingPlan, ATerracedHouseGetsApartmentsRoomsAndCorridors) {
     EXPECT_EQ(plan->storeys, 4);
     EXPECT_GE(plan->storey.apartments.size(), 2u);
     EXPECT_EQ(plan->losses.unreached, 0);
-    EXPECT_GT(areaOf(plan->storey.corridor), 0);
+    std::vector<PlanShape> outlines;
+    for (const ApartmentPlan &a : plan->storey.apartments) outlines.push_back(a.outline);
+    EXPECT_GT(areaOf(corridorPieces(plan->placement.footprint.points, outlines)), 0);
     EXPECT_EQ(plan->storey.entrance.y, 2.75) << "the house door on the street front behind the sidewalk";
     for (const ApartmentPlan &a : plan->storey.apartments) {
         // Eq 20 with (1; 3; min 3): at least three rooms where the plan made its faces.
