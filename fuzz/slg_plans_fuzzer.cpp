@@ -3,6 +3,7 @@
 // lots as a block, each lot planned down to its rooms; nothing may fail a check, and the
 // faces must lie in the outline and make up its area. Real outlines (ATKIS blocks, OSM ways) come
 // in any shape, so this is the SLG's reader of the world.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>

@@ -1,5 +1,7 @@
 #include "city/slg_buildings.h"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "core/error.h"
