@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "slg/plan_extension.h"
+#include "slg/thesis_levels.h"
 
 namespace veduta {
 namespace {
@@ -355,15 +356,7 @@ TEST(PlanExtension, TheStairwellRuleDecidesWhichRoomsMayBeIt) {
 
 TEST(PlanExtension, DoorsInASubdividedApartmentKeepEveryFaceClosed) {
     Polygon2d outline = {{0, 0}, {12, 0}, {12, 8}, {0, 8}};
-    PlanParameters rooms;  // Table 16
-    rooms.rule = LandmarkRule::Growth;
-    rooms.averageArea = 10;
-    rooms.sideRatio = 1.0 / 3;
-    rooms.exponent = 3;
-    rooms.minimumCount = 3;
-    rooms.jitter = 0.05;
-    rooms.reflexLimits = {1, 1, 0};
-    Subdivision plan = subdivide(outline, {Street, NeighbourArea, HouseCorridor, NeighbourArea}, rooms,
+    Subdivision plan = subdivide(outline, {Street, NeighbourArea, HouseCorridor, NeighbourArea}, apartmentLevel(),
                                  PlanRandom(7, 1, RandomStream::SlgPlan));
     ASSERT_GE(plan.faces.size(), 3u);
     // Every face gets a door in its longest inner wall (still a gap: no rule has relabelled it),
