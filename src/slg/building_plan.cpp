@@ -50,14 +50,15 @@ PlanLosses lossesOf(const Subdivision &s) { return {s.deletedFaces, s.truncatedS
 
 PlanLosses lossesOf(const CorridorPlan &plan) { return {0, 0, plan.unreached, plan.tooSmall}; }
 
-// A face of a level subdivided, with its corridor from the door at a landmark on its edges of
-// `doorLocation`; a face the rules give fewer than two landmarks stays whole (L1228).
-struct FacesAndCorridor {
+// A face of a level subdivided, its faces moved back for the corridor from the door at a landmark
+// on its edges of `doorLocation`; a face the rules give fewer than two landmarks stays whole
+// (L1228).
+struct LevelFaces {
     std::vector<PlanShape> faces;
     Vec2d door;
 };
 
-FacesAndCorridor planLevel(const PlanShape &outline, PlanLevel level, const PlanParameters &parameters,
+LevelFaces planLevel(const PlanShape &outline, PlanLevel level, const PlanParameters &parameters,
                            const CorridorParameters &corridor, EdgeLocation doorLocation, const PlanRandom &random,
                            const SearchLimits &limits, PlanLosses &losses) {
     Subdivision s = subdivide(outline.points, outline.locations, parameters, random, limits);
@@ -94,7 +95,7 @@ std::optional<BuildingPlan> planBuilding(const PlanShape &lot, const FaceSides &
     plan.storeys = p.storeys;
     CorridorParameters house{CorridorKind::House, p.houseCorridorWidth, p.doorWidth};
     EdgeLocation entranceSide = p.entranceAtRear ? EdgeLocation::Gap : EdgeLocation::Street;
-    FacesAndCorridor storey = planLevel(plan.placement.footprint, PlanLevel::Building, p.storey, house, entranceSide,
+    LevelFaces storey = planLevel(plan.placement.footprint, PlanLevel::Building, p.storey, house, entranceSide,
                                         planRandom(seed, identity, kStoreyPlan, 0), p.limits, plan.losses);
     plan.storey.entrance = storey.door;
 
@@ -102,7 +103,7 @@ std::optional<BuildingPlan> planBuilding(const PlanShape &lot, const FaceSides &
     for (size_t i = 0; i < storey.faces.size(); ++i) {
         // A storey of one apartment has no house corridor: its door is the house door.
         EdgeLocation doorSide = storey.faces.size() > 1 ? EdgeLocation::HouseCorridor : entranceSide;
-        FacesAndCorridor rooms =
+        LevelFaces rooms =
             planLevel(storey.faces[i], PlanLevel::Apartment, p.apartment, inner, doorSide,
                       planRandom(seed, identity, kApartmentPlan, uint32_t(i)), p.limits, plan.losses);
         plan.storey.apartments.push_back({std::move(storey.faces[i]), std::move(rooms.faces), rooms.door});
