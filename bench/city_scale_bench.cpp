@@ -9,6 +9,7 @@
 //
 // Arguments: columns/rows/threads. Times are wall clock; CPU is the whole process's, all threads.
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -80,6 +81,26 @@ void BM_GridStreets(benchmark::State &state) {
     }
     state.counters["triangles"] = double(triangles);
 }
+
+// The street surfaces of the 16 km² grid on one thread with tiles of at most so many pieces:
+// what chose kStreetPiecesPerTile. Arguments: the pieces a tile may have (0: one tile).
+void BM_StreetTileSize(benchmark::State &state) {
+    const Grid &g = grid(32, 40);
+    tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 1);
+    size_t limit = state.range(0) == 0 ? std::numeric_limits<size_t>::max() : size_t(state.range(0));
+    for (auto _ : state) benchmark::DoNotOptimize(streetGeometry(g.streets, {}, limit));
+}
+BENCHMARK(BM_StreetTileSize)
+    ->Arg(0)
+    ->Arg(64)
+    ->Arg(128)
+    ->Arg(256)
+    ->Arg(512)
+    ->Arg(1024)
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime()
+    ->Iterations(1);
 
 // One iteration a repetition: a run takes seconds, and a city's scene gigabytes.
 BENCHMARK(BM_CityGrid)
