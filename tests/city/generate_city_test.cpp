@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <tbb/global_control.h>
 
 #include "assembly/build_scene.h"
 #include "city/generate_city.h"
@@ -121,6 +122,37 @@ TEST(GenerateCity, StreetsJoinThePointsTheyName) {
     EXPECT_EQ(from.y, 0);
     EXPECT_EQ(to.x, 50);
     EXPECT_EQ(to.y, 40);
+}
+
+// A row of 600 lots, three batches of buildings: one adds a batch while the others make the
+// next. Lots 300 and 520 cannot be built (a roof type there is none); the error thrown is
+// lot 300's, the first in lot order, on one thread and on two, after every warning before it.
+TEST(GenerateCity, TheFirstErrorInLotOrderIsThrownOnAnyNumberOfThreads) {
+    CityData data;
+    constexpr int kLots = 600;
+    CityBlock block;
+    block.points = {{0, 0}, {12.0f * kLots, 0}, {12.0f * kLots, 14}, {0, 14}};
+    for (int i = 0; i < kLots; ++i) {
+        float x = 12.0f * float(i);
+        CityLot lot;
+        lot.points = {{x, 0}, {x + 12, 0}, {x + 12, 14}, {x, 14}};
+        lot.streetEdges = {true, false, false, false};
+        lot.loc = {"lots.xml", i + 1, 1};
+        lot.sourceId = uint32_t(i + 1);
+        if (i == 300 || i == 520) lot.settings["RoofType"] = settingValue("bogus", {"lots.xml", i + 1, 5});
+        block.lots.push_back(std::move(lot));
+    }
+    data.blocks.push_back(std::move(block));
+    data.ruleFiles = {test::sourceFile("rules/gruenderzeit/FacadeStructure.xml")};
+    for (size_t threads : {1, 2}) {
+        SCOPED_TRACE(threads);
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+        RenderSceneBuilder builder;
+        std::vector<std::string> warnings;
+        std::string error = test::inputErrorOf([&] { generateCity(data, 0, 1, builder, warnings); });
+        EXPECT_EQ(error.rfind("lots.xml:301:1: this building cannot be built: lots.xml:301:5: RoofType 'bogus'", 0), 0u)
+            << error;
+    }
 }
 
 TEST(GenerateCity, ErrorsAreAtTheirPlace) {
