@@ -70,14 +70,15 @@ StreetNetwork streetNetworkOf(const CityData &data) {
 }
 
 std::vector<IdentifiedLot> lotsOf(const CityBlock &block, const StreetNetwork &streets,
-                                  const SettingsStack &blockSettings, uint32_t seed, size_t *slivers) {
+                                  const SettingsStack &blockSettings, uint32_t seed, size_t *slivers,
+                                  const StreetIndex *near) {
     std::vector<IdentifiedLot> lots;
     if (!block.lots.empty()) {
         for (const CityLot &lot : block.lots) lots.push_back({{lot.points, lot.streetEdges, lot.base}, lot.sourceId});
         return lots;
     }
     LotSettings settings = lotSettingsFrom(blockSettings);
-    std::vector<BuildableArea> areas = buildableAreas(block.points, streets);
+    std::vector<BuildableArea> areas = buildableAreas(block.points, streets, {}, near);
     for (uint32_t a = 0; a < areas.size(); ++a) {
         if (!isSimplePolygon(areas[a].outline)) {
             if (slivers) ++*slivers;
@@ -107,17 +108,19 @@ void warnOfSlivers(size_t slivers, const FileLoc &where, std::vector<std::string
 
 // Every block's lots, cut on all cores: a block's lots depend on the block, the streets and the
 // seed alone, so they are the same on any number of threads. An error is the first block's in
-// order, as one thread would meet it.
+// order, as one thread would meet it. The streets near each block come from one index of them.
 std::vector<std::vector<IdentifiedLot>> lotsOfBlocks(const CityData &data, const StreetNetwork &streets,
                                                      const SettingsMap &ruleFileSettings, uint32_t seed,
                                                      size_t &slivers) {
     std::vector<std::vector<IdentifiedLot>> lots(data.blocks.size());
     std::vector<std::exception_ptr> errors(data.blocks.size());
     std::vector<size_t> sliversOf(data.blocks.size(), 0);
+    StreetIndex near(streets);
     tbb::parallel_for(size_t(0), data.blocks.size(), [&](size_t b) {
         try {
             const CityBlock &block = data.blocks[b];
-            lots[b] = lotsOf(block, streets, settingsFor(data, block, nullptr, ruleFileSettings), seed, &sliversOf[b]);
+            lots[b] =
+                lotsOf(block, streets, settingsFor(data, block, nullptr, ruleFileSettings), seed, &sliversOf[b], &near);
         } catch (...) {
             errors[b] = std::current_exception();
         }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numeric>
 
 #include <CGAL/Boolean_set_operations_2.h>
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -11,6 +12,7 @@
 #include <tbb/parallel_for.h>
 
 #include "city/footprint.h"
+#include "city/street_index.h"
 #include "city/street_pieces.h"
 #include "city/street_regions.h"
 #include "city/triangulation_inside.h"
@@ -33,21 +35,43 @@ using ExactCdt = CGAL::Constrained_Delaunay_triangulation_2<
 
 // The streets whose surface, `extra` wider on either side, may reach into the box around
 // `outline`: far streets cannot change what is left of a block, and joining every street of a
-// town for each of its blocks is what would make lots slow. Node indices stay as they are.
-StreetNetwork streetsNear(const std::vector<Vec2f> &outline, const StreetNetwork &network, float extra) {
+// town for each of its blocks is what would make lots slow. The streets are asked of `index`
+// where there is one, else measured one by one. Only the nodes they join are kept, in their
+// order, so that the pieces (streetPieces: ribbons in street order, then joints in node order)
+// are those of the whole network's node list, one for one.
+StreetNetwork streetsNear(const std::vector<Vec2f> &outline, const StreetNetwork &network, float extra,
+                          const StreetIndex *index) {
     Vec2f low = outline[0], high = outline[0];
     for (Vec2f p : outline) {
         low = {std::min(low.x, p.x), std::min(low.y, p.y)};
         high = {std::max(high.x, p.x), std::max(high.y, p.y)};
     }
-    StreetNetwork near{network.nodes, {}, network.height};
-    for (const StreetNetwork::Street &s : network.streets) {
+    std::vector<uint32_t> candidates;
+    if (index) {
+        candidates = index->near(low, high, extra);
+    } else {
+        candidates.resize(network.streets.size());
+        std::iota(candidates.begin(), candidates.end(), 0u);
+    }
+    StreetNetwork near{{}, {}, network.height};
+    std::vector<uint32_t> nodes;
+    for (uint32_t c : candidates) {
+        const StreetNetwork::Street &s = network.streets[c];
         Vec2f a = network.nodes[s.from], b = network.nodes[s.to];
         float reach = s.width / 2 + extra;
         bool apart = std::min(a.x, b.x) - reach > high.x || std::max(a.x, b.x) + reach < low.x ||
             std::min(a.y, b.y) - reach > high.y || std::max(a.y, b.y) + reach < low.y;
-        if (!apart) near.streets.push_back(s);
+        if (apart) continue;
+        near.streets.push_back(s);
+        nodes.insert(nodes.end(), {s.from, s.to});
     }
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    auto renumbered = [&](uint32_t node) {
+        return uint32_t(std::lower_bound(nodes.begin(), nodes.end(), node) - nodes.begin());
+    };
+    for (StreetNetwork::Street &s : near.streets) s = {renumbered(s.from), renumbered(s.to), s.width};
+    for (uint32_t node : nodes) near.nodes.push_back(network.nodes[node]);
     return near;
 }
 
@@ -184,8 +208,8 @@ std::vector<std::vector<Vec2d>> streetAreaPieces(const StreetNetwork &network, c
 }
 
 std::vector<BuildableArea> buildableAreas(const std::vector<Vec2f> &block, const StreetNetwork &network,
-                                          const StreetStyle &style) {
-    PolygonSet streets = streetArea(streetsNear(block, network, style.sidewalkWidth), style.sidewalkWidth);
+                                          const StreetStyle &style, const StreetIndex *index) {
+    PolygonSet streets = streetArea(streetsNear(block, network, style.sidewalkWidth, index), style.sidewalkWidth);
     PolygonSet left(toPolygon(block));
     left.difference(streets);
     std::vector<PolygonWithHoles> parts;

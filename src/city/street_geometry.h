@@ -68,7 +68,10 @@ struct BuildableArea {
     std::vector<Vec2f> outline;
     std::vector<bool> streetEdges;
 };
+// The streets near the block are asked of `index` (street_index.h: the network's, made once for
+// all its blocks) where one is given, else measured one by one; the areas are the same.
+class StreetIndex;
 std::vector<BuildableArea> buildableAreas(const std::vector<Vec2f> &block, const StreetNetwork &network,
-                                          const StreetStyle &style = {});
+                                          const StreetStyle &style = {}, const StreetIndex *index = nullptr);
 
 }  // namespace veduta
