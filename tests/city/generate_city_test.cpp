@@ -1,6 +1,7 @@
 // <city> in scene files: Bilke's Listing 2.1 built into lots, buildings and streets.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 #include <unordered_map>
 
@@ -11,6 +12,7 @@
 #include "assembly/build_scene.h"
 #include "city/generate_city.h"
 #include "input_error.h"
+#include "scene/scene_hash.h"
 #include "shared_data.h"
 #include "test_paths.h"
 
@@ -124,10 +126,9 @@ TEST(GenerateCity, StreetsJoinThePointsTheyName) {
     EXPECT_EQ(to.y, 40);
 }
 
-// A row of 600 lots, three batches of buildings: one adds a batch while the others make the
-// next. Lots 300 and 520 cannot be built (a roof type there is none); the error thrown is
-// lot 300's, the first in lot order, on one thread and on two, after every warning before it.
-TEST(GenerateCity, TheFirstErrorInLotOrderIsThrownOnAnyNumberOfThreads) {
+// A row of 600 lots on one block: three batches of buildings, one added while the others make
+// the next. `unbuildable` lots get a roof type that is none.
+CityData rowOfLots(const std::vector<int> &unbuildable) {
     CityData data;
     constexpr int kLots = 600;
     CityBlock block;
@@ -139,11 +140,19 @@ TEST(GenerateCity, TheFirstErrorInLotOrderIsThrownOnAnyNumberOfThreads) {
         lot.streetEdges = {true, false, false, false};
         lot.loc = {"lots.xml", i + 1, 1};
         lot.sourceId = uint32_t(i + 1);
-        if (i == 300 || i == 520) lot.settings["RoofType"] = settingValue("bogus", {"lots.xml", i + 1, 5});
+        if (std::count(unbuildable.begin(), unbuildable.end(), i))
+            lot.settings["RoofType"] = settingValue("bogus", {"lots.xml", i + 1, 5});
         block.lots.push_back(std::move(lot));
     }
     data.blocks.push_back(std::move(block));
     data.ruleFiles = {test::sourceFile("rules/gruenderzeit/FacadeStructure.xml")};
+    return data;
+}
+
+// Lots 300 and 520 cannot be built: the error thrown is lot 300's, the first in lot order, on
+// one thread and on two.
+TEST(GenerateCity, TheFirstErrorInLotOrderIsThrownOnAnyNumberOfThreads) {
+    CityData data = rowOfLots({300, 520});
     for (size_t threads : {1, 2}) {
         SCOPED_TRACE(threads);
         tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
@@ -153,6 +162,23 @@ TEST(GenerateCity, TheFirstErrorInLotOrderIsThrownOnAnyNumberOfThreads) {
         EXPECT_EQ(error.rfind("lots.xml:301:1: this building cannot be built: lots.xml:301:5: RoofType 'bogus'", 0), 0u)
             << error;
     }
+}
+
+// The buildings of three batches are added in lot order however they were made.
+TEST(GenerateCity, BatchesOfBuildingsAreTheSameOnAnyNumberOfThreads) {
+    CityData data = rowOfLots({});
+    auto builtOn = [&](size_t threads) {
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+        RenderSceneBuilder builder;
+        std::vector<std::string> warnings;
+        EXPECT_EQ(generateCity(data, 0, 1, builder, warnings), 600u);
+        return std::move(builder).build();
+    };
+    RenderScene one = builtOn(1), two = builtOn(2);
+    EXPECT_GT(one.instances.size(), 600u);
+    EXPECT_EQ(one.meshes.size(), two.meshes.size());
+    EXPECT_EQ(one.instances.size(), two.instances.size());
+    EXPECT_EQ(sceneHash(one), sceneHash(two));
 }
 
 TEST(GenerateCity, ErrorsAreAtTheirPlace) {
