@@ -12,6 +12,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "block_grid.h"
 #include "city/assets.h"
 #include "city/building_generator.h"
 #include "city/building_rules.h"
@@ -23,69 +24,16 @@
 namespace veduta {
 namespace {
 
-constexpr int kColumns = 8, kRows = 10;                // blocks
-constexpr float kBlockWidth = 125, kBlockDepth = 100;  // street centre to centre: 1 km × 1 km
+constexpr int kColumns = 8, kRows = 10;  // blocks of 125 × 100 m: 1 km × 1 km
 constexpr uint32_t kSeed = 1871;
 
-SettingValue value(const std::string &text) { return settingValue(text, {}); }
-
-// The street grid with one block in each cell; the blocks take turns at the roof lists.
-CityData district() {
-    CityData city;
-    for (int row = 0; row <= kRows; ++row) {
-        for (int column = 0; column <= kColumns; ++column) {
-            uint32_t id = uint32_t(city.points.size());
-            city.points.push_back({id, column * kBlockWidth, row * kBlockDepth, 0, {}});
-        }
-    }
-    auto point = [](int column, int row) { return uint32_t(row * (kColumns + 1) + column); };
-    for (int row = 0; row <= kRows; ++row) {
-        for (int column = 0; column <= kColumns; ++column) {
-            uint32_t id = uint32_t(city.streets.size());
-            if (column < kColumns) city.streets.push_back({id, point(column, row), point(column + 1, row), {}, {}});
-            if (row < kRows) city.streets.push_back({id + 1, point(column, row), point(column, row + 1), {}, {}});
-        }
-    }
-    city.streetWidth = 10;
-    const char *roofs[] = {"gable mansard", "mansard", "hip", "gable hip"};
-    for (int row = 0; row < kRows; ++row) {
-        for (int column = 0; column < kColumns; ++column) {
-            CityBlock block;
-            for (auto [c, r] : {std::pair{column, row}, {column + 1, row}, {column + 1, row + 1}, {column, row + 1}}) {
-                const CityPoint &p = city.points[point(c, r)];
-                block.points.push_back({float(p.e), float(p.n)});
-            }
-            block.settings["RoofType"] = value(roofs[(row * kColumns + column) % 4]);
-            city.blocks.push_back(std::move(block));
-        }
-    }
-    for (auto [name, text] : {std::pair{"BuildingHeight", "17"},
-                              {"BuildingHeightVar", "1.5"},
-                              {"FloorHeight", "3.6"},
-                              {"RoofHeight", "4.5"},
-                              {"MinBuildingLength", "12"},
-                              {"MaxBuildingLength", "22"},
-                              {"MinBuildingDepth", "13"}}) {
-        city.settings[name] = value(text);
-    }
-    city.ruleFiles = {std::string(VEDUTA_SOURCE_DIR) + "/rules/gruenderzeit/FacadeStructure.xml"};
-    return city;
-}
+CityData district() { return gruenderzeitGrid(kColumns, kRows); }
 
 struct Fixture {
     CityData city = district();
     StreetNetwork streets = streetNetworkOf(city);
     BuildingRules loaded{city.ruleFiles.front()};
-    std::vector<Material> materials = [] {
-        std::vector<Material> result;
-        for (const MaterialDesc &desc :
-             readMaterialFile(std::string(VEDUTA_SOURCE_DIR) + "/rules/gruenderzeit/materials.xml")) {
-            Material m = desc.material;
-            if (desc.normalMap.given()) m.normalMap = 0;  // no image is read, but tangents are made
-            result.push_back(m);
-        }
-        return result;
-    }();
+    std::vector<Material> materials = gruenderzeitMaterials();
     // Every block's settings and lots, as generateCity makes them.
     std::vector<SettingsStack> blockSettings;
     std::vector<std::vector<IdentifiedLot>> lots;

@@ -70,14 +70,15 @@ StreetNetwork streetNetworkOf(const CityData &data) {
 }
 
 std::vector<IdentifiedLot> lotsOf(const CityBlock &block, const StreetNetwork &streets,
-                                  const SettingsStack &blockSettings, uint32_t seed, size_t *slivers) {
+                                  const SettingsStack &blockSettings, uint32_t seed, size_t *slivers,
+                                  const StreetIndex *near) {
     std::vector<IdentifiedLot> lots;
     if (!block.lots.empty()) {
         for (const CityLot &lot : block.lots) lots.push_back({{lot.points, lot.streetEdges, lot.base}, lot.sourceId});
         return lots;
     }
     LotSettings settings = lotSettingsFrom(blockSettings);
-    std::vector<BuildableArea> areas = buildableAreas(block.points, streets);
+    std::vector<BuildableArea> areas = buildableAreas(block.points, streets, {}, near);
     for (uint32_t a = 0; a < areas.size(); ++a) {
         if (!isSimplePolygon(areas[a].outline)) {
             if (slivers) ++*slivers;
@@ -107,17 +108,19 @@ void warnOfSlivers(size_t slivers, const FileLoc &where, std::vector<std::string
 
 // Every block's lots, cut on all cores: a block's lots depend on the block, the streets and the
 // seed alone, so they are the same on any number of threads. An error is the first block's in
-// order, as one thread would meet it.
+// order, as one thread would meet it. The streets near each block come from one index of them.
 std::vector<std::vector<IdentifiedLot>> lotsOfBlocks(const CityData &data, const StreetNetwork &streets,
                                                      const SettingsMap &ruleFileSettings, uint32_t seed,
                                                      size_t &slivers) {
     std::vector<std::vector<IdentifiedLot>> lots(data.blocks.size());
     std::vector<std::exception_ptr> errors(data.blocks.size());
     std::vector<size_t> sliversOf(data.blocks.size(), 0);
+    StreetIndex near(streets);
     tbb::parallel_for(size_t(0), data.blocks.size(), [&](size_t b) {
         try {
             const CityBlock &block = data.blocks[b];
-            lots[b] = lotsOf(block, streets, settingsFor(data, block, nullptr, ruleFileSettings), seed, &sliversOf[b]);
+            lots[b] =
+                lotsOf(block, streets, settingsFor(data, block, nullptr, ruleFileSettings), seed, &sliversOf[b], &near);
         } catch (...) {
             errors[b] = std::current_exception();
         }
@@ -239,31 +242,65 @@ std::vector<PlannedBuilding> planBuildings(const CityData &data, std::vector<std
     return planned;
 }
 
+// A batch of buildings made (BuildingGenerator::make), each or the error it met.
+struct MadeBatch {
+    size_t first = 0;
+    std::vector<std::optional<BuildingGenerator::MadeBuilding>> made;
+    std::vector<std::exception_ptr> errors;
+};
+
+MadeBatch makeBatch(std::vector<PlannedBuilding> &planned, size_t first, size_t end) {
+    MadeBatch batch{first, std::vector<std::optional<BuildingGenerator::MadeBuilding>>(end - first),
+                    std::vector<std::exception_ptr>(end - first)};
+    tbb::parallel_for(first, end, [&](size_t i) {
+        try {
+            batch.made[i - first] = planned[i].rules->generator.make(planned[i].spec, planned[i].warnings);
+        } catch (...) {
+            batch.errors[i - first] = std::current_exception();
+        }
+    });
+    return batch;
+}
+
+// Adds a made batch to the builder in lot order: the warnings of each building, then the
+// first error in order, or the building (and its plinth on a landscape).
+void addBatch(std::vector<PlannedBuilding> &planned, MadeBatch &batch, const LandscapeGround *landscape,
+              RenderSceneBuilder &builder, std::vector<std::string> &warnings) {
+    for (size_t k = 0; k < batch.made.size(); ++k) {
+        PlannedBuilding &p = planned[batch.first + k];
+        warnings.insert(warnings.end(), p.warnings.begin(), p.warnings.end());
+        if (batch.errors[k]) buildAt(p.loc, [&] { std::rethrow_exception(batch.errors[k]); });
+        p.rules->generator.add(std::move(*batch.made[k]));
+        if (landscape) addPlinth(p.spec, builder);
+    }
+}
+
 // Makes the buildings on all cores, a batch at a time (so that what is made waits for the
 // builder only briefly), and adds them to the builder in their order: the scene is the same
 // for any number of threads, the first error in order is the one thrown, with every warning
-// before it.
+// before it. One thread adds a batch while the others make the next: adding alone was a
+// twentieth of a city's build, and a core idle meanwhile. Making reads the builder's
+// materials, which adding leaves alone once the plinths' material is there.
 void buildAll(std::vector<PlannedBuilding> &planned, const LandscapeGround *landscape, RenderSceneBuilder &builder,
               std::vector<std::string> &warnings) {
     constexpr size_t kBatch = 256;
+    if (planned.empty()) return;
+    // Where the first plinth would have added it: no material comes between.
+    if (landscape) plinthMaterial(builder);
+    MadeBatch current = makeBatch(planned, 0, std::min(planned.size(), kBatch));
     for (size_t first = 0; first < planned.size(); first += kBatch) {
-        size_t end = std::min(planned.size(), first + kBatch);
-        std::vector<std::optional<BuildingGenerator::MadeBuilding>> made(end - first);
-        std::vector<std::exception_ptr> errors(end - first);
-        tbb::parallel_for(first, end, [&](size_t i) {
-            try {
-                made[i - first] = planned[i].rules->generator.make(planned[i].spec, planned[i].warnings);
-            } catch (...) {
-                errors[i - first] = std::current_exception();
-            }
-        });
-        for (size_t i = first; i < end; ++i) {
-            PlannedBuilding &p = planned[i];
-            warnings.insert(warnings.end(), p.warnings.begin(), p.warnings.end());
-            if (errors[i - first]) buildAt(p.loc, [&] { std::rethrow_exception(errors[i - first]); });
-            p.rules->generator.add(std::move(*made[i - first]));
-            if (landscape) addPlinth(p.spec, builder);
+        size_t next = first + kBatch, end = std::min(planned.size(), next + kBatch);
+        MadeBatch following;
+        tbb::task_group making;
+        if (next < planned.size()) making.run([&] { following = makeBatch(planned, next, end); });
+        try {
+            addBatch(planned, current, landscape, builder, warnings);
+        } catch (...) {
+            making.wait();
+            throw;
         }
+        making.wait();
+        current = std::move(following);
     }
 }
 

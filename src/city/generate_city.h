@@ -12,6 +12,7 @@
 #include "city/footprint.h"
 #include "city/futuristic_city.h"
 #include "city/street_geometry.h"
+#include "city/street_index.h"
 #include "description/scene_description.h"
 #include "geo/generate_landscape.h"
 #include "geodesy/georeference.h"
@@ -71,9 +72,11 @@ struct IdentifiedLot {
 // draws of each piece the streets leave come from the seed, the block's identity and the
 // piece's place among them, never from the block's place in the file.
 // A piece that rounding to float left no simple polygon (a sliver a few float steps wide) gets
-// no lots; `slivers`, when given, counts such pieces.
+// no lots; `slivers`, when given, counts such pieces. The streets near the block are asked of
+// `near` (the index of `streets`) where it is given, as cutting every block of a city does.
 std::vector<IdentifiedLot> lotsOf(const CityBlock &block, const StreetNetwork &streets,
-                                  const SettingsStack &blockSettings, uint32_t seed, size_t *slivers = nullptr);
+                                  const SettingsStack &blockSettings, uint32_t seed, size_t *slivers = nullptr,
+                                  const StreetIndex *near = nullptr);
 
 // Gives each block without lots of its own the lots lotsOf cuts from it with the block's
 // settings over `ruleFileSettings`: what `veduta generate` writes, so that its files hold the

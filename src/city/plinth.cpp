@@ -21,9 +21,13 @@ Mesh plinthMesh(const Footprint &footprint, float depth) {
     return mesh;
 }
 
+MaterialId plinthMaterial(RenderSceneBuilder &builder) {
+    return builder.findOrAddMaterial(Material::lambertian("plinth", {0.42f, 0.4f, 0.37f}));
+}
+
 void addPlinth(const BuildingSpec &spec, RenderSceneBuilder &builder) {
     Mesh plinth = plinthMesh(spec.footprint, kPlinthDepth);
-    plinth.setMaterial(builder.findOrAddMaterial(Material::lambertian("plinth", {0.42f, 0.4f, 0.37f})));
+    plinth.setMaterial(plinthMaterial(builder));
     builder.addWorldMesh(std::move(plinth), spec.objectId, spec.id);
 }
 

@@ -18,6 +18,9 @@ inline constexpr float kPlinthDepth = 0.5f;
 // material 0: the caller assigns one.
 Mesh plinthMesh(const Footprint &footprint, float depth);
 
+// The material "plinth", added to the scene when first asked for.
+MaterialId plinthMaterial(RenderSceneBuilder &builder);
+
 // The plinth of a building on terrain, kPlinthDepth deep, in the
 // material "plinth", with the building's ids.
 void addPlinth(const BuildingSpec &spec, RenderSceneBuilder &builder);

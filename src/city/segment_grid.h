@@ -34,6 +34,25 @@ class SegmentGrid {
         for (uint32_t index : cell->second) visit(segments_[index]);
     }
 
+    // Calls `visit` with every segment whose widened box may meet the box from `low` to `high`,
+    // some more than once.
+    template <typename Visit>
+    void forEachNear(Vec2f low, Vec2f high, Visit visit) const {
+        for (uint32_t index : long_) visit(segments_[index]);
+        int64_t x0 = cellOf(low.x), x1 = cellOf(high.x), y0 = cellOf(low.y), y1 = cellOf(high.y);
+        if ((x1 - x0 + 1) > kMaxCells / (y1 - y0 + 1)) {  // a box over many cells: all of them
+            for (const Segment &segment : segments_) visit(segment);
+            return;
+        }
+        for (int64_t x = x0; x <= x1; ++x) {
+            for (int64_t y = y0; y <= y1; ++y) {
+                auto cell = cells_.find(key(x, y));
+                if (cell == cells_.end()) continue;
+                for (uint32_t index : cell->second) visit(segments_[index]);
+            }
+        }
+    }
+
   private:
     // A segment whose box covers more cells than this is asked by every point instead.
     static constexpr int64_t kMaxCells = 4096;

@@ -3,6 +3,7 @@
 // surface, sidewalks as a band around it raised by a kerb, and the kerb faces between them.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -38,10 +39,21 @@ inline constexpr int kStreetJointSides = 16;
 // widths from the node: √2 takes in the corners of the square where two streets cross.
 inline constexpr float kJunctionReach = 1.4142f;
 
+// A tile of the street surfaces is split while more pieces than this reach it (street_regions.h:
+// those of the carriageway, of the carriageway with its sidewalks and the junctions' joints
+// together; a junction of a grid and its streets bring about six). bench_city_scale's
+// BM_StreetTileSize: 256 to 1024 cost the same within 5 % on the 16 km² grid, a quarter less
+// than one tile; 512 keeps the example scenes' towns (up to 475 pieces) one tile each.
+inline constexpr size_t kStreetPiecesPerTile = 512;
+
 // One mesh: the carriageway at height + lift, its junctions apart (StreetJunction, the same
 // height), the sidewalks at height + lift + kerbHeight, the kerbs between; normals up (kerbs: towards the road),
-// texture coordinates in metres (x, y). Streets of zero length are skipped.
-Mesh streetGeometry(const StreetNetwork &network, const StreetStyle &style = {});
+// texture coordinates in metres (x, y). Streets of zero length are skipped. Made tile by tile
+// (street_regions.h), a tile split while more than `piecesPerTile` pieces reach it (tests make
+// tiles small), on all cores, the same on any number of threads; a network of one tile is one
+// union, as it always was.
+Mesh streetGeometry(const StreetNetwork &network, const StreetStyle &style = {},
+                    size_t piecesPerTile = kStreetPiecesPerTile);
 
 // The street area (carriageways and sidewalks) as overlapping pieces whose union it is: every
 // street's strip and every node's joint, each widened by the sidewalks, counter-clockwise, in
@@ -56,7 +68,10 @@ struct BuildableArea {
     std::vector<Vec2f> outline;
     std::vector<bool> streetEdges;
 };
+// The streets near the block are asked of `index` (street_index.h: the network's, made once for
+// all its blocks) where one is given, else measured one by one; the areas are the same.
+class StreetIndex;
 std::vector<BuildableArea> buildableAreas(const std::vector<Vec2f> &block, const StreetNetwork &network,
-                                          const StreetStyle &style = {});
+                                          const StreetStyle &style = {}, const StreetIndex *index = nullptr);
 
 }  // namespace veduta

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include <tbb/parallel_for.h>
+
 #include "scene/tangents.h"
 
 namespace veduta {
@@ -100,9 +102,12 @@ RenderScene RenderSceneBuilder::build() && {
     // Normal maps need tangents, and only they: other scenes keep the memory.
     bool normalMapped = std::any_of(scene_.materials.begin(), scene_.materials.end(),
                                     [](const Material &m) { return m.normalMap != kNoTexture; });
+    // Each mesh's tangents are its own: on all cores, the same on any number of threads. On one
+    // core they were an eighth of building a city of twenty thousand buildings (bench_city_scale).
     if (normalMapped) {
-        for (BakedMesh &m : scene_.meshes) computeTangents(m.mesh);
-        for (Mesh &m : scene_.prototypes) computeTangents(m);
+        tbb::parallel_for(size_t(0), scene_.meshes.size(), [&](size_t i) { computeTangents(scene_.meshes[i].mesh); });
+        tbb::parallel_for(size_t(0), scene_.prototypes.size(),
+                          [&](size_t i) { computeTangents(scene_.prototypes[i]); });
     }
     return std::move(scene_);
 }

@@ -1,15 +1,18 @@
 // <city> in scene files: Bilke's Listing 2.1 built into lots, buildings and streets.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 #include <unordered_map>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <tbb/global_control.h>
 
 #include "assembly/build_scene.h"
 #include "city/generate_city.h"
 #include "input_error.h"
+#include "scene/scene_hash.h"
 #include "shared_data.h"
 #include "test_paths.h"
 
@@ -121,6 +124,61 @@ TEST(GenerateCity, StreetsJoinThePointsTheyName) {
     EXPECT_EQ(from.y, 0);
     EXPECT_EQ(to.x, 50);
     EXPECT_EQ(to.y, 40);
+}
+
+// A row of 600 lots on one block: three batches of buildings, one added while the others make
+// the next. `unbuildable` lots get a roof type that is none.
+CityData rowOfLots(const std::vector<int> &unbuildable) {
+    CityData data;
+    constexpr int kLots = 600;
+    CityBlock block;
+    block.points = {{0, 0}, {12.0f * kLots, 0}, {12.0f * kLots, 14}, {0, 14}};
+    for (int i = 0; i < kLots; ++i) {
+        float x = 12.0f * float(i);
+        CityLot lot;
+        lot.points = {{x, 0}, {x + 12, 0}, {x + 12, 14}, {x, 14}};
+        lot.streetEdges = {true, false, false, false};
+        lot.loc = {"lots.xml", i + 1, 1};
+        lot.sourceId = uint32_t(i + 1);
+        if (std::count(unbuildable.begin(), unbuildable.end(), i))
+            lot.settings["RoofType"] = settingValue("bogus", {"lots.xml", i + 1, 5});
+        block.lots.push_back(std::move(lot));
+    }
+    data.blocks.push_back(std::move(block));
+    data.ruleFiles = {test::sourceFile("rules/gruenderzeit/FacadeStructure.xml")};
+    return data;
+}
+
+// Lots 300 and 520 cannot be built: the error thrown is lot 300's, the first in lot order, on
+// one thread and on two.
+TEST(GenerateCity, TheFirstErrorInLotOrderIsThrownOnAnyNumberOfThreads) {
+    CityData data = rowOfLots({300, 520});
+    for (size_t threads : {1, 2}) {
+        SCOPED_TRACE(threads);
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+        RenderSceneBuilder builder;
+        std::vector<std::string> warnings;
+        std::string error = test::inputErrorOf([&] { generateCity(data, 0, 1, builder, warnings); });
+        EXPECT_EQ(error.rfind("lots.xml:301:1: this building cannot be built: lots.xml:301:5: RoofType 'bogus'", 0), 0u)
+            << error;
+    }
+}
+
+// The buildings of three batches are added in lot order however they were made.
+TEST(GenerateCity, BatchesOfBuildingsAreTheSameOnAnyNumberOfThreads) {
+    CityData data = rowOfLots({});
+    auto builtOn = [&](size_t threads) {
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+        RenderSceneBuilder builder;
+        std::vector<std::string> warnings;
+        EXPECT_EQ(generateCity(data, 0, 1, builder, warnings), 600u);
+        return std::move(builder).build();
+    };
+    RenderScene one = builtOn(1), two = builtOn(2);
+    EXPECT_GT(one.instances.size(), 600u);
+    EXPECT_EQ(one.meshes.size(), two.meshes.size());
+    EXPECT_EQ(one.instances.size(), two.instances.size());
+    EXPECT_EQ(sceneHash(one), sceneHash(two));
 }
 
 TEST(GenerateCity, ErrorsAreAtTheirPlace) {
