@@ -59,8 +59,8 @@ struct LevelFaces {
 };
 
 LevelFaces planLevel(const PlanShape &outline, PlanLevel level, const PlanParameters &parameters,
-                           const CorridorParameters &corridor, EdgeLocation doorLocation, const PlanRandom &random,
-                           const SearchLimits &limits, PlanLosses &losses) {
+                     const CorridorParameters &corridor, EdgeLocation doorLocation, const PlanRandom &random,
+                     const SearchLimits &limits, PlanLosses &losses) {
     Subdivision s = subdivide(outline.points, outline.locations, parameters, random, limits);
     labelEdges(s, level);
     losses += lossesOf(s);
@@ -96,16 +96,15 @@ std::optional<BuildingPlan> planBuilding(const PlanShape &lot, const FaceSides &
     CorridorParameters house{CorridorKind::House, p.houseCorridorWidth, p.doorWidth};
     EdgeLocation entranceSide = p.entranceAtRear ? EdgeLocation::Gap : EdgeLocation::Street;
     LevelFaces storey = planLevel(plan.placement.footprint, PlanLevel::Building, p.storey, house, entranceSide,
-                                        planRandom(seed, identity, kStoreyPlan, 0), p.limits, plan.losses);
+                                  planRandom(seed, identity, kStoreyPlan, 0), p.limits, plan.losses);
     plan.storey.entrance = storey.door;
 
     CorridorParameters inner{CorridorKind::Apartment, p.apartmentCorridorWidth, p.doorWidth};
     for (size_t i = 0; i < storey.faces.size(); ++i) {
         // A storey of one apartment has no house corridor: its door is the house door.
         EdgeLocation doorSide = storey.faces.size() > 1 ? EdgeLocation::HouseCorridor : entranceSide;
-        LevelFaces rooms =
-            planLevel(storey.faces[i], PlanLevel::Apartment, p.apartment, inner, doorSide,
-                      planRandom(seed, identity, kApartmentPlan, uint32_t(i)), p.limits, plan.losses);
+        LevelFaces rooms = planLevel(storey.faces[i], PlanLevel::Apartment, p.apartment, inner, doorSide,
+                                     planRandom(seed, identity, kApartmentPlan, uint32_t(i)), p.limits, plan.losses);
         plan.storey.apartments.push_back({std::move(storey.faces[i]), std::move(rooms.faces), rooms.door});
     }
     return plan;
