@@ -146,13 +146,16 @@ class SlgGenerator {
                       PlanRandom(seed_, hashValues({desc_.objectId, index}), RandomStream::SlgPlan));
         labelEdges(lots, PlanLevel::Block);
         lost_ += lots.deletedFaces;
-        builder_.addWorldMesh(groundMesh(block.outline, desc_.base + 0.01, materials_.block), desc_.objectId);
+        // A block's ground and its sidewalks are one mesh.
+        Mesh ground = groundMesh(block.outline, desc_.base + 0.01, materials_.block);
         uint32_t lot = 0;
         for (const PlanFace *face : lots.borderFaces())
-            planLot(block, lots, *face, hashValues({desc_.objectId, index, lot++}));
+            planLot(block, lots, *face, hashValues({desc_.objectId, index, lot++}), ground);
+        builder_.addWorldMesh(std::move(ground), desc_.objectId);
     }
 
-    void planLot(const SlgBlock &block, const Subdivision &lots, const PlanFace &face, uint32_t identity) {
+    void planLot(const SlgBlock &block, const Subdivision &lots, const PlanFace &face, uint32_t identity,
+                 Mesh &ground) {
         LotGeography geography{lotWeights(g_, block.weights, parameterRandom(seed_, identity)), block.locality, {}};
         auto building = lotBuilding(g_, geography, seed_, identity);
         if (!building) return;  // open land
@@ -165,7 +168,7 @@ class SlgGenerator {
         }
         lost_ += plan->losses.deletedFaces;
         for (const Polygon2d &quad : plan->sidewalk)
-            builder_.addWorldMesh(groundMesh(quad, desc_.base + 0.02, materials_.sidewalk), desc_.objectId);
+            ground.append(groundMesh(quad, desc_.base + 0.02, materials_.sidewalk), Transform());
 
         int corners = int(turningPoints(plan->placement.footprint.points).size());
         BuildingShape shape3d;
