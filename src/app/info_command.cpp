@@ -3,6 +3,8 @@
 #include <string>
 #include <unordered_set>
 
+#include <sys/resource.h>
+
 #include "app/command_options.h"
 #include "app/commands.h"
 #include "app/run_guarded.h"
@@ -19,8 +21,11 @@ void runInfo(const std::string &path) {
     uint64_t stored = 0;
     for (const BakedMesh &m : scene.meshes) stored += m.mesh.triangleCount();
     for (const Mesh &p : scene.prototypes) stored += p.triangleCount();
-    // Every generator (buildings, cities, CityGML) gives each building an id of its own.
+    // Every generator (buildings, cities, CityGML) gives each building an id of its own, except
+    // to the distant ones merged into a mesh with others, which it counts.
     std::unordered_set<uint32_t> buildings;
+    uint64_t merged = 0;
+    for (const auto &[level, counts] : scene.lods) merged += counts.merged;
     for (const BakedMesh &m : scene.meshes)
         if (m.buildingId != 0) buildings.insert(m.buildingId);
     for (const Instance &i : scene.instances)
@@ -34,12 +39,19 @@ void runInfo(const std::string &path) {
     std::printf("meshes: %zu\n", scene.meshes.size());
     std::printf("prototypes: %zu\n", scene.prototypes.size());
     std::printf("instances: %zu\n", scene.instances.size());
-    std::printf("buildings: %zu\n", buildings.size());
+    std::printf("buildings: %llu\n", (unsigned long long)(buildings.size() + merged));
+    for (const auto &[level, counts] : scene.lods)
+        std::printf("lod %s: %llu buildings, %llu triangles, %llu meshes\n", level.c_str(),
+                    (unsigned long long)counts.buildings, (unsigned long long)counts.triangles,
+                    (unsigned long long)counts.meshes);
     std::printf("stored_triangles: %llu\n", (unsigned long long)stored);
     std::printf("effective_triangles: %llu\n", (unsigned long long)scene.effectiveTriangleCount());
     std::printf("bvh_build_seconds: %.3f\n", bvh.stats().buildSeconds);
     std::printf("bvh_bytes: %lld\n", (long long)bvh.stats().bytes);
     std::printf("bvh_peak_bytes: %lld\n", (long long)bvh.stats().peakBytes);
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    std::printf("peak_rss_bytes: %lld\n", (long long)usage.ru_maxrss * 1024);
 }
 
 }  // namespace

@@ -5,7 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.h"
-#include "app/memory_limit.h"
+#include "core/memory_limit.h"
 #include "app/run_guarded.h"
 #include "app/version.h"
 #include "io/gdal_guard.h"

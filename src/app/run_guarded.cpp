@@ -7,7 +7,7 @@
 #include <string>
 
 #include "app/commands.h"
-#include "app/memory_limit.h"
+#include "core/memory_limit.h"
 #include "core/error.h"
 
 namespace veduta {

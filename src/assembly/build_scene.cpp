@@ -16,6 +16,7 @@
 #include "city/generate_buildings.h"
 #include "city/generate_city.h"
 #include "city/slg_buildings.h"
+#include "core/memory_limit.h"
 #include "geo/generate_landscape.h"
 #include "geodesy/local_frame.h"
 #include "geodesy/map_projection.h"
@@ -42,6 +43,10 @@ class SceneAssembler {
         RenderSettings settings = d_.settings;
         settings.seed = seedOf(d_.renderSeed);
         builder_.setSettings(settings);
+        // Geometry may take most of the process's memory budget; the rest is for the film,
+        // textures and the libraries (docs/performance.md). No limit set (a library caller), no
+        // budget.
+        if (std::optional<uint64_t> limit = memoryLimit()) builder_.setGeometryBudget(uint64_t(double(*limit) * 0.6));
         // Material 0 is for geometry that names none; a scene may redefine "default".
         builder_.addMaterial(Material::lambertian("default", Vec3f(0.8f)));
         for (const MaterialDesc &m : d_.materials) builder_.addMaterial(withTextures(m));
@@ -107,8 +112,11 @@ class SceneAssembler {
                     },
                     warnings_);
             });
-        for (const SlgDesc &slg : d_.slg)
-            within(slg.loc, "<slg>", [&] { generateSlg(slg, seedOf(slg.seed), camera, builder_, warnings_); });
+        if (!d_.slg.empty()) {
+            std::vector<uint32_t> seeds;
+            for (const SlgDesc &slg : d_.slg) seeds.push_back(seedOf(slg.seed));
+            within(d_.slg.front().loc, "<slg>", [&] { generateSlg(d_.slg, seeds, camera, builder_, warnings_); });
+        }
         for (size_t i = 0; i < d_.cities.size(); ++i) {
             within(d_.cities[i].loc, elementName(d_.cities[i]), [&] {
                 generateCity(d_.cities[i], cities[i], seedOf(d_.cities[i].seed), landscape ? &*landscape : nullptr,

@@ -1,8 +1,11 @@
 #include "city/slg_buildings.h"
 
 #include <algorithm>
+#include <array>
+#include <map>
 
 #include <fmt/format.h>
+#include <tbb/parallel_for.h>
 
 #include "core/error.h"
 #include "core/hash.h"
@@ -17,6 +20,8 @@ namespace {
 
 // Purposes of the generator's own draws under a building's identity.
 enum Draw : uint32_t { kRoof = 0x534c5246u, kRoofSize = 0x534c5253u };  // "SLRF", "SLRS"
+
+constexpr double kStoreyHeight = 3;  // BuildingShape's
 
 struct SlgMaterials {
     BuildingMaterials building;
@@ -67,142 +72,322 @@ Mesh groundMesh(const Polygon2d &ccw, double z, MaterialId material) {
 }
 
 struct SlgBlock {
+    uint32_t element = 0;  // which <slg>
+    uint32_t index = 0;    // in its element, for the identities of its lots
     Polygon2d outline;
     LandUseWeights weights{};
     Locality locality = Locality::Kern;
 };
 
-// Table 6's district cut into blocks along its outline, each face moved back from the streets
-// between them by half their width (L1339); a block's locality is its distance from the
-// district's centre (eq 38), its land uses drawn from the district's (eq 39–41, 44).
-std::vector<SlgBlock> blocksOf(const SlgDesc &desc, const Polygon2d &outline, const UrbanGeography &g, uint32_t seed,
-                               int &lost) {
-    if (desc.level == SlgDesc::Level::Block)
-        return {{outline, blockWeights(g, g.blockDefaults.weights), g.blockDefaults.locality.value_or(Locality::Kern)}};
-    PlanParameters district = planParameters(g, PlanLevel::District);
-    Subdivision faces = subdivide(outline, std::vector<EdgeLocation>(outline.size(), EdgeLocation::Street), district,
-                                  PlanRandom(seed, desc.objectId, RandomStream::SlgPlan));
-    labelEdges(faces, PlanLevel::District);
-    lost += faces.deletedFaces;
-    Vec2d centre = vertexMean(outline);
-    double farthest = 0;
-    for (Vec2d p : outline) farthest = std::max(farthest, length(p - centre));
-    std::vector<SlgBlock> blocks;
-    for (const PlanFace *face : faces.borderFaces()) {
-        PlanShape shape = faceShape(faces, *face);
-        double half = district.gapWidth / 2;
-        auto moved =
-            moveSides(shape, fourSides(shape.points, frontEdges(*face)), {0, half, half, half}, EdgeLocation::Street);
-        if (!moved) {
-            ++lost;
+// The district's outline cut into blocks between streets (Table 6), each face moved back from
+// the streets by half their width (L1339). The level's faces run in a ring along the outline
+// and leave the middle as an inner face; a middle large enough for another ring is moved back
+// from its streets and cut the same way, one smaller is a block of its own (docs/slg.md).
+std::vector<Polygon2d> districtBlocks(const SlgDesc &desc, const Polygon2d &outline, const PlanParameters &district,
+                                      uint32_t seed, int &lost) {
+    double half = district.gapWidth / 2;
+    std::vector<Polygon2d> blocks, parts{outline};
+    for (size_t next = 0; next < parts.size(); ++next) {
+        // The middle's outline has a corner where each ray of the ring ended; only its turns are
+        // corners of the next ring's outline.
+        Polygon2d part;
+        for (size_t corner : turningPoints(parts[next])) part.push_back(parts[next][corner]);
+        uint32_t identity = next == 0 ? desc.objectId : hashValues({desc.objectId, uint32_t(next), 0x52494e47u});
+        Subdivision faces = subdivide(part, std::vector<EdgeLocation>(part.size(), EdgeLocation::Street), district,
+                                      PlanRandom(seed, identity, RandomStream::SlgPlan));
+        labelEdges(faces, PlanLevel::District);
+        lost += faces.deletedFaces;
+        if (faces.borderFaces().empty()) {
+            blocks.push_back(std::move(part));
             continue;
         }
-        uint32_t identity = hashValues({desc.objectId, uint32_t(blocks.size()), 0x424c4b53u});  // "BLKS"
-        Locality locality = veduta::locality(length(vertexMean(moved->shape.points) - centre), farthest);
-        LandUseWeights drawn = childWeights(g, g.districtDefaults.weights, locality, parameterRandom(seed, identity));
-        blocks.push_back({std::move(moved->shape.points), blockWeights(g, drawn), locality});
+        for (const PlanFace &face : faces.faces) {
+            PlanShape shape = faceShape(faces, face);
+            auto moved = face.isBorder()
+                ? moveSides(shape, fourSides(shape.points, frontEdges(face)), {0, half, half, half},
+                            EdgeLocation::Street)
+                : moveEdges(shape, std::vector<double>(shape.size(), half), EdgeLocation::Street);
+            if (!moved) {
+                ++lost;
+                continue;
+            }
+            bool ring = !face.isBorder() && signedArea(moved->shape.points) > 2 * district.averageArea;
+            (ring ? parts : blocks).push_back(std::move(moved->shape.points));
+        }
     }
     return blocks;
 }
 
-BuildingLod lodAt(const SlgDesc &desc, const Camera &camera, const PlanShape &footprint, double height) {
-    Vec2d c = vertexMean(footprint.points);
-    Vec3f centre{float(c.x), float(c.y), float(desc.base + height / 2)};
-    float distance = length(centre - camera.position);
-    if (distance < desc.rooms) return BuildingLod::Rooms;
-    return distance < desc.storeys ? BuildingLod::Storeys : BuildingLod::Box;
+// A block's locality is its distance from the district's centre (eq 38), its land uses drawn
+// from the district's (eq 39–41, 44).
+void addBlocks(const SlgDesc &desc, uint32_t element, const Polygon2d &outline, const UrbanGeography &g, uint32_t seed,
+               std::vector<SlgBlock> &blocks, int &lost) {
+    if (desc.level == SlgDesc::Level::Block) {
+        blocks.push_back({element, 0, outline, blockWeights(g, g.blockDefaults.weights),
+                          g.blockDefaults.locality.value_or(Locality::Kern)});
+        return;
+    }
+    Vec2d centre = vertexMean(outline);
+    double farthest = 0;
+    for (Vec2d p : outline) farthest = std::max(farthest, length(p - centre));
+    uint32_t index = 0;
+    for (Polygon2d &block : districtBlocks(desc, outline, planParameters(g, PlanLevel::District), seed, lost)) {
+        uint32_t identity = hashValues({desc.objectId, index, 0x424c4b53u});  // "BLKS"
+        Locality locality = veduta::locality(length(vertexMean(block) - centre), farthest);
+        LandUseWeights drawn = childWeights(g, g.districtDefaults.weights, locality, parameterRandom(seed, identity));
+        blocks.push_back({element, index++, std::move(block), blockWeights(g, drawn), locality});
+    }
 }
 
+// A lot whose building is to be planned, with what the cascade made of it.
+struct SlgLot {
+    PlanShape shape;
+    size_t frontEdges = 0;
+    uint32_t identity = 0;
+    LandUseWeights weights{};
+    LotBuilding building;
+    float distance = 0;  // from the camera to the lot's middle at half the building's height
+    BuildingLod lod = BuildingLod::Box;
+};
+
+struct BlockLots {
+    std::vector<SlgLot> lots;
+    int lost = 0;
+};
+
+// What a level of detail is expected to cost, for the budget: triangles per storey at the two
+// finer levels and per building as a box (Table 17's 14 for a gable on four corners), each the
+// mean over the 8,639 buildings of a 2 × 2 km district plus a tenth (189, 98 and 14.2).
+double expectedTriangles(BuildingLod lod, int storeys) {
+    switch (lod) {
+    case BuildingLod::Rooms: return 210.0 * storeys;
+    case BuildingLod::Storeys: return 110.0 * storeys;
+    case BuildingLod::Box: return 16;
+    }
+    return 0;
+}
+
+PlanDepth depthFor(BuildingLod lod) {
+    switch (lod) {
+    case BuildingLod::Rooms: return PlanDepth::Rooms;
+    case BuildingLod::Storeys: return PlanDepth::Entrance;
+    case BuildingLod::Box: return PlanDepth::Footprint;
+    }
+    return PlanDepth::Rooms;
+}
+
+const char *levelName(BuildingLod lod) {
+    switch (lod) {
+    case BuildingLod::Rooms: return "slg/rooms";
+    case BuildingLod::Storeys: return "slg/storeys";
+    case BuildingLod::Box: return "slg/box";
+    }
+    return "slg";
+}
+
+// One block's ground with its sidewalks, its buildings drawn whole or storey by storey each as
+// a mesh of its own, those drawn as boxes merged into one mesh (their materials per triangle).
+struct BlockMeshes {
+    Mesh ground, boxes;
+    std::vector<std::pair<Mesh, uint32_t>> buildings;  // with their building ids
+    std::array<LodCounts, 3> counts{};
+    int lost = 0, unplanned = 0;
+};
+
+// Every <slg> of a scene in four steps: the districts cut into blocks; the blocks into lots on
+// all cores; a level of detail for each lot's building, from its distance and the geometry
+// budget; the buildings planned and built on all cores. Blocks are added in their order, so the
+// scene is the same for any number of threads.
 class SlgGenerator {
   public:
-    SlgGenerator(const SlgDesc &desc, uint32_t seed, const Camera &camera, RenderSceneBuilder &builder) :
-        desc_(desc),
-        seed_(seed),
-        camera_(camera),
-        builder_(builder),
-        g_(readUrbanGeography(desc.tables)),
-        materials_(materialsOf(builder)) {}
+    SlgGenerator(const std::vector<SlgDesc> &descs, const std::vector<uint32_t> &seeds, const Camera &camera,
+                 RenderSceneBuilder &builder) :
+        descs_(descs), seeds_(seeds), camera_(camera), builder_(builder), materials_(materialsOf(builder)) {
+        for (const SlgDesc &desc : descs) tables_.push_back(&tablesAt(desc.tables));
+    }
 
     void generate(std::vector<std::string> &warnings) {
-        Polygon2d outline = outlineOf(desc_);
-        if (desc_.level == SlgDesc::Level::District)
-            builder_.addWorldMesh(groundMesh(outline, desc_.base, materials_.street), desc_.objectId);
-        std::vector<SlgBlock> blocks = blocksOf(desc_, outline, g_, seed_, lost_);
-        for (size_t b = 0; b < blocks.size(); ++b) planBlock(blocks[b], uint32_t(b));
-        if (lost_ > 0)
-            warnings.push_back(
-                fmt::format("{}: {} faces of the plans could not be made (docs/slg.md)", desc_.loc.toString(), lost_));
-        if (unplanned_ > 0)
-            warnings.push_back(
-                fmt::format("{}: {} lots have no room for a building", desc_.loc.toString(), unplanned_));
+        std::vector<SlgBlock> blocks;
+        std::vector<int> lost(descs_.size(), 0), unplanned(descs_.size(), 0);
+        for (uint32_t e = 0; e < descs_.size(); ++e) {
+            Polygon2d outline = outlineOf(descs_[e]);
+            if (descs_[e].level == SlgDesc::Level::District)
+                builder_.addWorldMesh(groundMesh(outline, descs_[e].base, materials_.street), descs_[e].objectId);
+            addBlocks(descs_[e], e, outline, *tables_[e], seeds_[e], blocks, lost[e]);
+        }
+        std::vector<BlockLots> lots(blocks.size());
+        tbb::parallel_for(size_t(0), blocks.size(), [&](size_t b) { lots[b] = lotsOf(blocks[b]); });
+        chooseLevels(lots, warnings);
+        std::vector<BlockMeshes> meshes(blocks.size());
+        tbb::parallel_for(size_t(0), blocks.size(), [&](size_t b) { meshes[b] = meshesOf(blocks[b], lots[b]); });
+
+        std::array<LodCounts, 3> counts{};
+        for (size_t b = 0; b < blocks.size(); ++b) {
+            uint32_t e = blocks[b].element;
+            lost[e] += lots[b].lost + meshes[b].lost;
+            unplanned[e] += meshes[b].unplanned;
+            addBlock(descs_[e].objectId, std::move(meshes[b]), counts);
+        }
+        for (size_t l = 0; l < counts.size(); ++l)
+            if (counts[l].buildings > 0) builder_.countLod(levelName(BuildingLod(l)), counts[l]);
+        for (size_t e = 0; e < descs_.size(); ++e) {
+            if (lost[e] > 0)
+                warnings.push_back(fmt::format("{}: {} faces of the plans could not be made (docs/slg.md)",
+                                               descs_[e].loc.toString(), lost[e]));
+            if (unplanned[e] > 0)
+                warnings.push_back(fmt::format("{}: {} lots have no room for a building", descs_[e].loc.toString(),
+                                               unplanned[e]));
+        }
     }
 
   private:
-    void planBlock(const SlgBlock &block, uint32_t index) {
-        DominantUse use = dominantUse(block.weights);
+    const UrbanGeography &tablesAt(const std::filesystem::path &path) {
+        auto [it, added] = geographies_.try_emplace(path);
+        if (added) it->second = readUrbanGeography(path);
+        return it->second;
+    }
+
+    BlockLots lotsOf(const SlgBlock &block) const {
+        const SlgDesc &desc = descs_[block.element];
+        const UrbanGeography &g = *tables_[block.element];
+        uint32_t seed = seeds_[block.element];
         Subdivision lots =
             subdivide(block.outline, std::vector<EdgeLocation>(block.outline.size(), EdgeLocation::Street),
-                      blockPlanParameters(g_, use, block.locality),
-                      PlanRandom(seed_, hashValues({desc_.objectId, index}), RandomStream::SlgPlan));
+                      blockPlanParameters(g, dominantUse(block.weights), block.locality),
+                      PlanRandom(seed, hashValues({desc.objectId, block.index}), RandomStream::SlgPlan));
         labelEdges(lots, PlanLevel::Block);
-        lost_ += lots.deletedFaces;
-        // A block's ground and its sidewalks are one mesh.
-        Mesh ground = groundMesh(block.outline, desc_.base + 0.01, materials_.block);
-        uint32_t lot = 0;
-        for (const PlanFace *face : lots.borderFaces())
-            planLot(block, lots, *face, hashValues({desc_.objectId, index, lot++}), ground);
-        builder_.addWorldMesh(std::move(ground), desc_.objectId);
+        BlockLots out;
+        out.lost = lots.deletedFaces;
+        uint32_t index = 0;
+        for (const PlanFace *face : lots.borderFaces()) {
+            uint32_t identity = hashValues({desc.objectId, block.index, index++});
+            LandUseWeights weights = lotWeights(g, block.weights, parameterRandom(seed, identity));
+            auto building = lotBuilding(g, {weights, block.locality, {}}, seed, identity);
+            if (!building) continue;  // open land
+            SlgLot lot{faceShape(lots, *face), frontEdges(*face), identity, weights, std::move(*building)};
+            Vec2d c = vertexMean(lot.shape.points);
+            double height = lot.building.parameters.storeys * kStoreyHeight;
+            lot.distance = length(Vec3f{float(c.x), float(c.y), float(desc.base + height / 2)} - camera_.position);
+            lot.lod = lot.distance < desc.rooms ? BuildingLod::Rooms
+                : lot.distance < desc.storeys   ? BuildingLod::Storeys
+                                                : BuildingLod::Box;
+            out.lots.push_back(std::move(lot));
+        }
+        return out;
     }
 
-    void planLot(const SlgBlock &block, const Subdivision &lots, const PlanFace &face, uint32_t identity,
-                 Mesh &ground) {
-        LotGeography geography{lotWeights(g_, block.weights, parameterRandom(seed_, identity)), block.locality, {}};
-        auto building = lotBuilding(g_, geography, seed_, identity);
-        if (!building) return;  // open land
-        PlanShape shape = faceShape(lots, face);
-        auto plan =
-            planBuilding(shape, fourSides(shape.points, frontEdges(face)), building->parameters, seed_, identity);
+    // Within the budget every building keeps the level its distance asks for. Past it, the
+    // farthest buildings drawn with rooms lose them first, then the farthest drawn storey by
+    // storey become boxes, until the expected triangles fit; the warning says how many.
+    void chooseLevels(std::vector<BlockLots> &blocks, std::vector<std::string> &warnings) const {
+        std::vector<SlgLot *> lots;
+        for (BlockLots &block : blocks)
+            for (SlgLot &lot : block.lots) lots.push_back(&lot);
+        auto expected = [&] {
+            double sum = 0;
+            for (const SlgLot *lot : lots) sum += expectedTriangles(lot->lod, lot->building.parameters.storeys);
+            return sum * double(kBytesPerTriangle);
+        };
+        double budget = double(builder_.geometryBytesLeft()), total = expected();
+        if (total <= budget) return;
+        // Farthest first; ties in the order the lots were made, so the choice is the same always.
+        std::stable_sort(lots.begin(), lots.end(), [](const SlgLot *a, const SlgLot *b) {
+            return a->distance > b->distance;
+        });
+        int coarsened = 0;
+        for (BuildingLod from : {BuildingLod::Rooms, BuildingLod::Storeys}) {
+            for (SlgLot *lot : lots) {
+                if (total <= budget) break;
+                if (lot->lod != from) continue;
+                int storeys = lot->building.parameters.storeys;
+                BuildingLod to = BuildingLod(int(from) + 1);
+                total -= (expectedTriangles(from, storeys) - expectedTriangles(to, storeys)) * kBytesPerTriangle;
+                lot->lod = to;
+                ++coarsened;
+            }
+        }
+        warnings.push_back(fmt::format(
+            "{}: the buildings would take more than the geometry budget of {:.1f} GB; {} of them drawn coarser{}",
+            descs_.front().loc.toString(), budget / double(1ull << 30), coarsened,
+            total > budget ? ", and even as boxes they do not fit" : ""));
+    }
+
+    BlockMeshes meshesOf(const SlgBlock &block, const BlockLots &lots) const {
+        const SlgDesc &desc = descs_[block.element];
+        BlockMeshes out;
+        out.ground = groundMesh(block.outline, desc.base + 0.01, materials_.block);
+        for (const SlgLot &lot : lots.lots) addBuilding(block, lot, out);
+        return out;
+    }
+
+    void addBuilding(const SlgBlock &block, const SlgLot &lot, BlockMeshes &out) const {
+        const SlgDesc &desc = descs_[block.element];
+        const UrbanGeography &g = *tables_[block.element];
+        uint32_t seed = seeds_[block.element];
+        auto plan = planBuilding(lot.shape, fourSides(lot.shape.points, lot.frontEdges), lot.building.parameters, seed,
+                                 lot.identity, depthFor(lot.lod));
         if (!plan) {
-            ++unplanned_;
+            ++out.unplanned;
             return;
         }
-        lost_ += plan->losses.deletedFaces;
+        out.lost += plan->losses.deletedFaces;
         for (const Polygon2d &quad : plan->sidewalk)
-            ground.append(groundMesh(quad, desc_.base + 0.02, materials_.sidewalk), Transform());
+            out.ground.append(groundMesh(quad, desc.base + 0.02, materials_.sidewalk), Transform());
 
         int corners = int(turningPoints(plan->placement.footprint.points).size());
-        BuildingShape shape3d;
-        shape3d.base = desc_.base;
-        shape3d.roof = roofKind(geography.weights, corners,
-                                PlanRandom(seed_, hashValues({identity, kRoof}), RandomStream::SlgParameters));
-        shape3d.orientation = building->orientation;
-        shape3d.roofHeight =
-            roofDimensions(g_, PlanRandom(seed_, hashValues({identity, kRoofSize}), RandomStream::SlgParameters))
+        BuildingShape shape;
+        shape.base = desc.base;
+        shape.storeyHeight = kStoreyHeight;
+        shape.roof = roofKind(lot.weights, corners,
+                              PlanRandom(seed, hashValues({lot.identity, kRoof}), RandomStream::SlgParameters));
+        shape.orientation = lot.building.orientation;
+        shape.roofHeight =
+            roofDimensions(g, PlanRandom(seed, hashValues({lot.identity, kRoofSize}), RandomStream::SlgParameters))
                 .height;
-        shape3d.windows.width = 1.2;
-        shape3d.windows.spacing = 1.3;
-        shape3d.windows.wallDistance = 0.8;
-        shape3d.wallThickness = g_.wallThickness;
-        BuildingLod lod = lodAt(desc_, camera_, plan->placement.footprint, plan->storeys * shape3d.storeyHeight);
+        shape.windows.width = 1.2;
+        shape.windows.spacing = 1.3;
+        shape.windows.wallDistance = 0.8;
+        shape.wallThickness = g.wallThickness;
+        Mesh mesh = buildingMesh(*plan, shape, lot.lod, materials_.building);
+        LodCounts &counts = out.counts[size_t(lot.lod)];
+        ++counts.buildings;
+        counts.triangles += mesh.triangleCount();
+        if (lot.lod == BuildingLod::Box) {
+            ++counts.merged;
+            out.boxes.append(mesh, Transform());
+            return;
+        }
+        ++counts.meshes;
         uint32_t buildingId =
-            1 + hashValues({desc_.objectId, identity, streamTag(RandomStream::CityBuilding)}) % ((1u << 24) - 1);
-        builder_.addWorldMesh(buildingMesh(*plan, shape3d, lod, materials_.building), desc_.objectId, buildingId);
+            1 + hashValues({desc.objectId, lot.identity, streamTag(RandomStream::CityBuilding)}) % ((1u << 24) - 1);
+        out.buildings.emplace_back(std::move(mesh), buildingId);
     }
 
-    const SlgDesc &desc_;
-    uint32_t seed_;
+    void addBlock(ObjectId objectId, BlockMeshes block, std::array<LodCounts, 3> &counts) {
+        for (size_t l = 0; l < counts.size(); ++l) counts[l] += block.counts[l];
+        builder_.addWorldMesh(std::move(block.ground), objectId);
+        for (auto &[mesh, id] : block.buildings) builder_.addWorldMesh(std::move(mesh), objectId, id);
+        if (block.boxes.triangleCount() > 0) {
+            ++counts[size_t(BuildingLod::Box)].meshes;
+            builder_.addWorldMesh(std::move(block.boxes), objectId);
+        }
+    }
+
+    const std::vector<SlgDesc> &descs_;
+    const std::vector<uint32_t> &seeds_;
     const Camera &camera_;
     RenderSceneBuilder &builder_;
-    UrbanGeography g_;
     SlgMaterials materials_;
-    int lost_ = 0, unplanned_ = 0;
+    std::map<std::filesystem::path, UrbanGeography> geographies_;
+    std::vector<const UrbanGeography *> tables_;  // each element's
 };
 
 }  // namespace
 
-void generateSlg(const SlgDesc &desc, uint32_t seed, const Camera &camera, RenderSceneBuilder &builder,
-                 std::vector<std::string> &warnings) {
-    SlgGenerator(desc, seed, camera, builder).generate(warnings);
+void generateSlg(const std::vector<SlgDesc> &descs, const std::vector<uint32_t> &seeds, const Camera &camera,
+                 RenderSceneBuilder &builder, std::vector<std::string> &warnings) {
+    if (descs.empty()) return;
+    SlgGenerator(descs, seeds, camera, builder).generate(warnings);
 }
 
 }  // namespace veduta

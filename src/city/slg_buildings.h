@@ -13,7 +13,10 @@
 
 namespace veduta {
 
-void generateSlg(const SlgDesc &desc, uint32_t seed, const Camera &camera, RenderSceneBuilder &builder,
-                 std::vector<std::string> &warnings);
+// Every <slg> of a scene at once, each with its seed: the geometry budget
+// (RenderSceneBuilder::setGeometryBudget) goes to the buildings nearest the camera whichever
+// element they are in.
+void generateSlg(const std::vector<SlgDesc> &descs, const std::vector<uint32_t> &seeds, const Camera &camera,
+                 RenderSceneBuilder &builder, std::vector<std::string> &warnings);
 
 }  // namespace veduta

@@ -40,6 +40,7 @@ void RenderSceneBuilder::addMesh(const Mesh &mesh, const Transform &objectToWorl
     baked.objectId = objectId;
     baked.buildingId = buildingId;
     baked.instanceId = instanceId;
+    storedTriangles_ += baked.mesh.triangleCount();
     scene_.meshes.push_back(std::move(baked));
 }
 
@@ -48,7 +49,17 @@ void RenderSceneBuilder::addWorldMesh(Mesh mesh, ObjectId objectId, uint32_t bui
     baked.mesh = std::move(mesh);
     baked.objectId = objectId;
     baked.buildingId = buildingId;
+    storedTriangles_ += baked.mesh.triangleCount();
     scene_.meshes.push_back(std::move(baked));
+}
+
+uint64_t RenderSceneBuilder::geometryBytesLeft() const {
+    uint64_t used = storedTriangles_ * kBytesPerTriangle;
+    return used >= geometryBudget_ ? 0 : geometryBudget_ - used;
+}
+
+void RenderSceneBuilder::countLod(const std::string &level, const LodCounts &counts) {
+    scene_.lods[level] += counts;
 }
 
 void RenderSceneBuilder::addEffort(const ModelEffort &effort) {
@@ -60,6 +71,7 @@ void RenderSceneBuilder::addEffort(const ModelEffort &effort) {
 }
 
 PrototypeId RenderSceneBuilder::addPrototype(Mesh mesh) {
+    storedTriangles_ += mesh.triangleCount();
     scene_.prototypes.push_back(std::move(mesh));
     return PrototypeId(scene_.prototypes.size() - 1);
 }

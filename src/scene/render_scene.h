@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <unordered_map>
@@ -62,6 +63,24 @@ struct ModelEffort {
     uint64_t vertices = 0;
 };
 
+// What a stored triangle costs until the image is rendered: its share of a world mesh (three
+// vertices of its own with texture coordinates, indices, material) and of the BVH at its
+// build's peak (`veduta info`'s bvh_peak_bytes per triangle: about 134), rounded up.
+inline constexpr uint64_t kBytesPerTriangle = 220;
+
+// Levels of detail a generator chose, counted for `veduta info` and the benchmarks.
+struct LodCounts {
+    uint64_t buildings = 0, triangles = 0, meshes = 0;
+    uint64_t merged = 0;  // of the buildings, those in a mesh shared with others (no building id)
+    LodCounts &operator+=(const LodCounts &o) {
+        buildings += o.buildings;
+        triangles += o.triangles;
+        meshes += o.meshes;
+        merged += o.merged;
+        return *this;
+    }
+};
+
 struct RenderScene {
     std::vector<BakedMesh> meshes;
     std::vector<Mesh> prototypes;
@@ -75,6 +94,7 @@ struct RenderScene {
     std::shared_ptr<const Textures> textures;  // null when no material has maps
     std::vector<BuildingRecord> buildings;     // one per building a generator made
     ModelEffort effort;
+    std::map<std::string, LodCounts> lods;  // by "generator/level", e.g. "slg/box"
 
     uint64_t effectiveTriangleCount() const;  // counting every instance's triangles
 };
@@ -99,6 +119,12 @@ class RenderSceneBuilder {
     PrototypeId addPrototype(Mesh mesh);
     void addInstance(const Instance &instance);
 
+    // Generators that can draw things coarser keep the triangles they add under this many bytes
+    // (kBytesPerTriangle each) and warn when they coarsen (docs/performance.md).
+    void setGeometryBudget(uint64_t bytes) { geometryBudget_ = bytes; }
+    uint64_t geometryBytesLeft() const;
+
+    void countLod(const std::string &level, const LodCounts &counts);
     void recordBuilding(BuildingRecord record) { scene_.buildings.push_back(std::move(record)); }
     void addEffort(const ModelEffort &effort);
 
@@ -114,6 +140,8 @@ class RenderSceneBuilder {
   private:
     RenderScene scene_;
     std::unordered_map<std::string, MaterialId> materialsByName_;
+    uint64_t geometryBudget_ = UINT64_MAX;
+    uint64_t storedTriangles_ = 0;  // of the meshes and prototypes added so far
 };
 
 }  // namespace veduta

@@ -82,7 +82,7 @@ PlanLosses &PlanLosses::operator+=(const PlanLosses &o) {
 }
 
 std::optional<BuildingPlan> planBuilding(const PlanShape &lot, const FaceSides &sides, const BuildingPlanParameters &p,
-                                         uint32_t seed, uint32_t identity) {
+                                         uint32_t seed, uint32_t identity, PlanDepth depth) {
     auto sidewalk = cutFrontStrip(lot, sides, p.sidewalkWidth, EdgeLocation::Street);
     if (!sidewalk || !sidewalk->behind) return std::nullopt;
     auto placement = placeBuilding(*sidewalk->behind, sidewalk->behindSides, p.placement,
@@ -93,11 +93,13 @@ std::optional<BuildingPlan> planBuilding(const PlanShape &lot, const FaceSides &
     plan.sidewalk = std::move(sidewalk->quads);
     plan.placement = std::move(*placement);
     plan.storeys = p.storeys;
+    if (depth == PlanDepth::Footprint) return plan;
     CorridorParameters house{CorridorKind::House, p.houseCorridorWidth, p.doorWidth};
     EdgeLocation entranceSide = p.entranceAtRear ? EdgeLocation::Gap : EdgeLocation::Street;
     LevelFaces storey = planLevel(plan.placement.footprint, PlanLevel::Building, p.storey, house, entranceSide,
                                   planRandom(seed, identity, kStoreyPlan, 0), p.limits, plan.losses);
     plan.storey.entrance = storey.door;
+    if (depth == PlanDepth::Entrance) return plan;
 
     CorridorParameters inner{CorridorKind::Apartment, p.apartmentCorridorWidth, p.doorWidth};
     for (size_t i = 0; i < storey.faces.size(); ++i) {

@@ -55,11 +55,16 @@ struct BuildingPlanParameters {
     SearchLimits limits;
 };
 
+// How far down planBuilding goes: a building drawn as a box needs its footprint only, one drawn
+// storey by storey the house door too, one with its interiors every room.
+enum class PlanDepth : uint8_t { Footprint, Entrance, Rooms };
+
 // The plan of the building on a lot (a face of its block, with its sides) for the seed and the
 // building's identity; none when the lot has no room for a sidewalk and a footprint. Every
 // draw hashes the seed, the identity, the level and the face's index, so a plan is the same
-// whatever was planned before it.
+// whatever was planned before it and a shallower plan is the deeper one's beginning.
 std::optional<BuildingPlan> planBuilding(const PlanShape &lot, const FaceSides &sides,
-                                         const BuildingPlanParameters &parameters, uint32_t seed, uint32_t identity);
+                                         const BuildingPlanParameters &parameters, uint32_t seed, uint32_t identity,
+                                         PlanDepth depth = PlanDepth::Rooms);
 
 }  // namespace veduta

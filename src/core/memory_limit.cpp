@@ -1,4 +1,4 @@
-#include "app/memory_limit.h"
+#include "core/memory_limit.h"
 
 #include <cctype>
 #include <charconv>
