@@ -235,8 +235,8 @@ class SlgGenerator {
                 warnings.push_back(fmt::format("{}: {} faces of the plans could not be made (docs/slg.md)",
                                                descs_[e].loc.toString(), lost[e]));
             if (unplanned[e] > 0)
-                warnings.push_back(fmt::format("{}: {} lots have no room for a building", descs_[e].loc.toString(),
-                                               unplanned[e]));
+                warnings.push_back(
+                    fmt::format("{}: {} lots have no room for a building", descs_[e].loc.toString(), unplanned[e]));
         }
     }
 
@@ -291,9 +291,8 @@ class SlgGenerator {
         double budget = double(builder_.geometryBytesLeft()), total = expected();
         if (total <= budget) return;
         // Farthest first; ties in the order the lots were made, so the choice is the same always.
-        std::stable_sort(lots.begin(), lots.end(), [](const SlgLot *a, const SlgLot *b) {
-            return a->distance > b->distance;
-        });
+        std::stable_sort(lots.begin(), lots.end(),
+                         [](const SlgLot *a, const SlgLot *b) { return a->distance > b->distance; });
         int coarsened = 0;
         for (BuildingLod from : {BuildingLod::Rooms, BuildingLod::Storeys}) {
             for (SlgLot *lot : lots) {

@@ -58,9 +58,7 @@ uint64_t RenderSceneBuilder::geometryBytesLeft() const {
     return used >= geometryBudget_ ? 0 : geometryBudget_ - used;
 }
 
-void RenderSceneBuilder::countLod(const std::string &level, const LodCounts &counts) {
-    scene_.lods[level] += counts;
-}
+void RenderSceneBuilder::countLod(const std::string &level, const LodCounts &counts) { scene_.lods[level] += counts; }
 
 void RenderSceneBuilder::addEffort(const ModelEffort &effort) {
     ModelEffort &sum = scene_.effort;

@@ -169,7 +169,9 @@ void rooms(MeshWriter &out, const BuildingPlan &plan, const BuildingShape &shape
             if (!inner) continue;  // a room narrower than its walls
             const Polygon2d &floor = inner->shape.points;
             for (int storey = 0; storey < plan.storeys; ++storey) {
-                double z0 = shape.base + storey * shape.storeyHeight, z1 = z0 + shape.storeyHeight;
+                // The ceiling lies a slab below the next floor: under the top storey's flat roof
+                // it would otherwise share the roof's plane.
+                double z0 = shape.base + storey * shape.storeyHeight, z1 = z0 + shape.storeyHeight - shape.slab;
                 out.polygon(floor, z0, false, m.interior);
                 out.polygon(floor, z1, true, m.interior);
                 for (size_t i = 0; i < floor.size(); ++i)

@@ -35,6 +35,7 @@ struct BuildingShape {
     double sill = 0.9, windowHeight = 1.5;
     double doorWidth = 1.2, doorHeight = 2.3;
     double wallThickness = 0.3;  // Table 12: rooms stand this far inside the shell, half that from each other
+    double slab = 0.25;          // a room's ceiling below the next storey's floor
 };
 
 Mesh buildingMesh(const BuildingPlan &plan, const BuildingShape &shape, BuildingLod lod,

@@ -6,8 +6,10 @@
 #include <set>
 
 #include <fmt/format.h>
+#include <tbb/global_control.h>
 
 #include "assembly/build_scene.h"
+#include "city/slg_buildings.h"
 #include "input_error.h"
 #include "scene/scene_hash.h"
 #include "test_paths.h"
@@ -30,12 +32,91 @@ size_t triangles(const RenderScene &scene) {
     return n;
 }
 
+uint64_t buildings(const RenderScene &scene) {
+    uint64_t n = 0;
+    for (const auto &[level, counts] : scene.lods) n += counts.buildings;
+    return n;
+}
+
 TEST(SlgElement, ABlockIsBuiltWithABuildingOnEveryLotItPlans) {
     RenderScene scene = sceneWith(R"(position="-400 -400 300")", kBlock);
-    std::set<uint32_t> buildings;
-    for (const BakedMesh &baked : scene.meshes)
-        if (baked.buildingId != 0) buildings.insert(baked.buildingId);
-    EXPECT_GE(buildings.size(), 20u);
+    EXPECT_GE(buildings(scene), 20u);
+    // All far away: boxes, merged into one mesh for the block.
+    ASSERT_EQ(scene.lods.size(), 1u);
+    EXPECT_EQ(scene.lods.begin()->first, "slg/box");
+    EXPECT_EQ(scene.lods.begin()->second.meshes, 1u);
+    EXPECT_EQ(scene.lods.begin()->second.merged, buildings(scene));
+}
+
+// <slg> elements built straight into a builder with a geometry budget; every building within
+// `rooms` metres asks for its rooms.
+struct SlgBuilt {
+    RenderScene scene;
+    std::vector<std::string> warnings;
+};
+
+SlgBuilt slgWithin(uint64_t budget, const std::string &slg, Vec3f cameraAt) {
+    SceneDescription d =
+        readSceneText(fmt::format(R"(<scene version="1">{}</scene>)", slg), "test.xml", test::sourceFile("scenes"));
+    Camera camera;
+    camera.position = cameraAt;
+    RenderSceneBuilder builder;
+    builder.setGeometryBudget(budget);
+    std::vector<uint32_t> seeds;
+    for (const SlgDesc &element : d.slg) seeds.push_back(*element.seed);
+    SlgBuilt out;
+    generateSlg(d.slg, seeds, camera, builder, out.warnings);
+    out.scene = std::move(builder).build();
+    return out;
+}
+
+const char *kDistrict = R"(<slg level="district" outline="0 0 700 0 700 700 0 700" seed="3" )"
+                        R"(tables="../rules/slg/urban-geography.xml" rooms_within="100000" storeys_within="100000"/>)";
+
+TEST(SlgElement, ADistrictIsFilledRingByRingToItsMiddle) {
+    SlgBuilt built = slgWithin(UINT64_MAX, kDistrict, {-50, -50, 30});
+    // The first ring alone had about 170 buildings on this outline.
+    EXPECT_GE(buildings(built.scene), 600u);
+    bool middle = false;
+    for (const BakedMesh &baked : built.scene.meshes)
+        for (Vec3f p : baked.mesh.positions) middle |= p.z > 5 && std::abs(p.x - 350) < 60 && std::abs(p.y - 350) < 60;
+    EXPECT_TRUE(middle) << "a building within 60 m of the district's middle";
+}
+
+TEST(SlgElement, TheGeometryBudgetTakesDetailFromTheFarthestBuildingsFirst) {
+    SlgBuilt whole = slgWithin(UINT64_MAX, kDistrict, {-50, -50, 30});
+    ASSERT_EQ(whole.scene.lods.count("slg/rooms"), 1u);
+    uint64_t bytes = whole.scene.lods.at("slg/rooms").triangles * kBytesPerTriangle;
+    EXPECT_TRUE(whole.warnings.empty() || whole.warnings[0].find("budget") == std::string::npos);
+
+    SlgBuilt part = slgWithin(bytes * 3 / 4, kDistrict, {-50, -50, 30});
+    ASSERT_FALSE(part.warnings.empty());
+    EXPECT_NE(part.warnings[0].find("drawn coarser"), std::string::npos) << part.warnings[0];
+    EXPECT_LE(triangles(part.scene) * kBytesPerTriangle, bytes * 3 / 4);
+    EXPECT_EQ(buildings(part.scene), buildings(whole.scene));
+    // Rooms are kept for the buildings nearest the camera: the farthest corner of any with
+    // rooms is nearer than the middle of the district.
+    float farthestRooms = 0;
+    MaterialId interior = kNoMaterial;
+    for (size_t m = 0; m < part.scene.materials.size(); ++m)
+        if (part.scene.materials[m].name == "slg/interior") interior = MaterialId(m);
+    for (const BakedMesh &baked : part.scene.meshes) {
+        const Mesh &mesh = baked.mesh;
+        if (std::find(mesh.triangleMaterials.begin(), mesh.triangleMaterials.end(), interior) ==
+            mesh.triangleMaterials.end())
+            continue;
+        for (Vec3f p : mesh.positions) farthestRooms = std::max(farthestRooms, length(p - Vec3f{-50, -50, 30}));
+    }
+    EXPECT_GT(farthestRooms, 0);
+    EXPECT_LT(farthestRooms, length(Vec3f{350, 350, 0} - Vec3f{-50, -50, 30}));
+}
+
+TEST(SlgElement, TheSameBitsOnAnyNumberOfThreads) {
+    auto hashOn = [](int threads) {
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+        return sceneHash(slgWithin(UINT64_MAX, kDistrict, {-50, -50, 30}).scene);
+    };
+    EXPECT_EQ(hashOn(1), hashOn(2));
 }
 
 TEST(SlgElement, NearerCamerasSeeMoreDetail) {
