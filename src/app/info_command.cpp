@@ -41,9 +41,9 @@ void runInfo(const std::string &path) {
     std::printf("instances: %zu\n", scene.instances.size());
     std::printf("buildings: %llu\n", (unsigned long long)(buildings.size() + merged));
     for (const auto &[level, counts] : scene.lods)
-        std::printf("lod %s: %llu buildings, %llu triangles, %llu meshes\n", level.c_str(),
+        std::printf("lod %s: %llu buildings, %llu triangles, %llu meshes, %llu instances\n", level.c_str(),
                     (unsigned long long)counts.buildings, (unsigned long long)counts.triangles,
-                    (unsigned long long)counts.meshes);
+                    (unsigned long long)counts.meshes, (unsigned long long)counts.instances);
     std::printf("stored_triangles: %llu\n", (unsigned long long)stored);
     std::printf("effective_triangles: %llu\n", (unsigned long long)scene.effectiveTriangleCount());
     std::printf("bvh_build_seconds: %.3f\n", bvh.stats().buildSeconds);

@@ -120,7 +120,7 @@ class SceneAssembler {
         for (size_t i = 0; i < d_.cities.size(); ++i) {
             within(d_.cities[i].loc, elementName(d_.cities[i]), [&] {
                 generateCity(d_.cities[i], cities[i], seedOf(d_.cities[i].seed), landscape ? &*landscape : nullptr,
-                             builder_, warnings_);
+                             builder_, warnings_, camera.position);
             });
         }
         if (textures_) builder_.setTextures(textures_);

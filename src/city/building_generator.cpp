@@ -137,6 +137,23 @@ BuildingGenerator::BuildingContext BuildingGenerator::contextFor(uint32_t id, Ob
     return {id, objectId, heights, BuildingProperties(settings, heights), palette_.choose(seed_, id)};
 }
 
+// The whole wall of a start shape as the plain wall model.
+Terminal BuildingGenerator::plainWallOf(const StartShape &start) const {
+    Terminal wall;
+    wall.model = plainWall_;
+    wall.shapeToFacade = Transform::translate({start.width / 2, start.height / 2, 0});
+    wall.size = {start.width, start.height};
+    return wall;
+}
+
+void BuildingGenerator::addPlainWall(const BuildingContext &building, const StartShape &start, float alongPerimeter,
+                                     Mesh &baked) const {
+    Terminal wall = plainWallOf(start);
+    const Asset &model = assets_[plainWall_];
+    addWallPiece(model, modelToFacade(model, wall), start.facadeToWorld, alongPerimeter, wall,
+                 keyFor(wall, building.materials), baked);
+}
+
 void BuildingGenerator::emitFacade(const BuildingContext &building, const StartShape &start, float alongPerimeter,
                                    Mesh &baked, MadeBuilding &made, std::vector<std::string> &warnings) const {
     std::vector<Terminal> &terminals = threadBuffers().terminals;
@@ -157,11 +174,7 @@ void BuildingGenerator::emitFacade(const BuildingContext &building, const StartS
         const std::vector<Rule> &rules = grammar_.rules().rules;
         warnings.push_back(fmt::format("{}: the rule file has no rule for '{}'; those walls are plain",
                                        rules.empty() ? grammar_.rules().name : rules.front().loc.file, start.symbol));
-        Terminal wall;
-        wall.model = plainWall_;
-        wall.shapeToFacade = Transform::translate({start.width / 2, start.height / 2, 0});
-        wall.size = {start.width, start.height};
-        terminals.push_back(wall);
+        terminals.push_back(plainWallOf(start));
     }
     made.stats.terminals += terminals.size();
     for (const Terminal &terminal : terminals) {
@@ -184,15 +197,18 @@ BuildingGenerator::MadeBuilding BuildingGenerator::make(const BuildingSpec &spec
     made.id = spec.id;
     BuildingContext building = contextFor(spec.id, spec.objectId, spec.settings);
     Mesh &baked = startBakedMesh();
-    for (const StartShape &start : makeStartShapes(spec.footprint, building.heights.building))
-        emitFacade(building, start, spec.footprint.perimeterBefore(start.edge), baked, made, warnings);
+    for (const StartShape &start : makeStartShapes(spec.footprint, building.heights.building)) {
+        float along = spec.footprint.perimeterBefore(start.edge);
+        if (spec.coarse) addPlainWall(building, start, along, baked);
+        else emitFacade(building, start, along, baked, made, warnings);
+    }
     addRoof(spec, building, baked, made, warnings);
     made.stats.bakedTriangles = baked.triangleCount();
     made.mesh = weldVertices(baked);
     return made;
 }
 
-BuildingStats BuildingGenerator::add(MadeBuilding &&made) {
+BuildingStats BuildingGenerator::add(MadeBuilding &&made, Mesh *merged) {
     for (const MadeBuilding::Placement &placement : made.instances) {
         Instance instance;
         instance.objectToWorld = placement.objectToWorld;
@@ -205,7 +221,9 @@ BuildingStats BuildingGenerator::add(MadeBuilding &&made) {
     // its rules baked walls.
     bool building = made.record.has_value();
     if (building) builder_.recordBuilding(std::move(*made.record));
-    if (building || made.mesh.triangleCount() > 0) builder_.addWorldMesh(std::move(made.mesh), made.objectId, made.id);
+    if (merged) merged->append(made.mesh, Transform());
+    else if (building || made.mesh.triangleCount() > 0)
+        builder_.addWorldMesh(std::move(made.mesh), made.objectId, made.id);
     return made.stats;
 }
 

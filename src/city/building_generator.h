@@ -29,6 +29,7 @@ struct BuildingSpec {
     ObjectId objectId = 0;
     Footprint footprint;     // normalised (counter-clockwise)
     SettingsStack settings;  // lot > block > city > rule file > defaults
+    bool coarse = false;     // seen from far: one plain quad a wall and the roof, no rules derived
 };
 
 // A lone facade (the Facade Editor's preview, Bilke 2009, §3.2): a start symbol on a width × height
@@ -97,8 +98,9 @@ class BuildingGenerator {
     // as generate does, with the warnings before the error appended.
     MadeBuilding make(const BuildingSpec &building, std::vector<std::string> &warnings) const;
     // Adds a made building to the builder: its prototypes (each new one when first used, so
-    // buildings added in one order give one scene), instances, mesh and record.
-    BuildingStats add(MadeBuilding &&building);
+    // buildings added in one order give one scene), instances, mesh and record; the mesh
+    // appended to `merged` instead when that is given (distant buildings share one).
+    BuildingStats add(MadeBuilding &&building, Mesh *merged = nullptr);
 
   private:
     struct PrototypeKeyHash {
@@ -116,6 +118,9 @@ class BuildingGenerator {
     BuildingContext contextFor(uint32_t id, ObjectId objectId, const SettingsStack &settings) const;
     void emitFacade(const BuildingContext &building, const StartShape &start, float alongPerimeter, Mesh &baked,
                     MadeBuilding &made, std::vector<std::string> &warnings) const;
+    Terminal plainWallOf(const StartShape &start) const;
+    void addPlainWall(const BuildingContext &building, const StartShape &start, float alongPerimeter,
+                      Mesh &baked) const;
     PrototypeId prototypeFor(const PrototypeKey &key);
     PrototypeKey keyFor(const Terminal &terminal, const MaterialSet &materials) const;
     void addWallPiece(const Asset &model, const Transform &modelToFacade, const Transform &facadeToWorld,

@@ -5,6 +5,7 @@
 #include <exception>
 #include <filesystem>
 #include <memory>
+#include <numeric>
 #include <optional>
 #include <stdexcept>
 #include <unordered_map>
@@ -242,6 +243,55 @@ std::vector<PlannedBuilding> planBuildings(const CityData &data, std::vector<std
     return planned;
 }
 
+// What a building is expected to cost, for the geometry budget: with its facades, bytes per
+// square metre of wall (its triangles and instances at kBytesPerTriangle and
+// kBytesPerInstance over the wall area: 282 in scenes/gruenderzeit-district.xml, 270 in
+// scenes/hillside-town.xml; plus a tenth); as a box, two triangles a wall and about as many
+// for the roof.
+constexpr double kFacadeBytesPerSquareMetre = 310;
+
+double expectedBytes(const PlannedBuilding &p, uint32_t seed) {
+    const std::vector<Vec2f> &points = p.spec.footprint.points;
+    if (p.spec.coarse) return 4.0 * double(points.size()) * kBytesPerTriangle;
+    double perimeter = p.spec.footprint.perimeterBefore(points.size());
+    return perimeter * randomiseHeights(p.spec.settings, seed, p.spec.id).building * kFacadeBytesPerSquareMetre;
+}
+
+// Buildings beyond coarse_beyond are boxes. The rest keep their facades while the budget
+// lasts; past it the farthest become boxes first (ties in lot order, so the choice is always
+// the same), and the warning says how many.
+void chooseDetail(std::vector<PlannedBuilding> &planned, uint32_t seed, const BuildingDetail &detail,
+                  const RenderSceneBuilder &builder, const FileLoc &loc, std::vector<std::string> &warnings) {
+    std::vector<float> distance(planned.size());
+    double expected = 0;
+    for (size_t i = 0; i < planned.size(); ++i) {
+        BuildingSpec &spec = planned[i].spec;
+        Vec2f middle;
+        for (Vec2f p : spec.footprint.points) middle = middle + p * (1.0f / float(spec.footprint.points.size()));
+        distance[i] = length(Vec3f{middle.x, middle.y, spec.footprint.base} - detail.camera);
+        spec.coarse = detail.coarseBeyond && distance[i] > *detail.coarseBeyond;
+        expected += expectedBytes(planned[i], seed);
+    }
+    double budget = double(builder.geometryBytesLeft());
+    if (expected <= budget) return;
+    std::vector<size_t> order(planned.size());
+    std::iota(order.begin(), order.end(), size_t(0));
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return distance[a] > distance[b]; });
+    size_t coarsened = 0;
+    for (size_t i : order) {
+        if (expected <= budget) break;
+        if (planned[i].spec.coarse) continue;
+        expected -= expectedBytes(planned[i], seed);
+        planned[i].spec.coarse = true;
+        expected += expectedBytes(planned[i], seed);
+        ++coarsened;
+    }
+    warnings.push_back(fmt::format(
+        "{}: the buildings would take more than the geometry budget of {:.1f} GB; {} of them drawn as boxes{}",
+        loc.toString(), budget / double(1ull << 30), coarsened,
+        expected > budget ? ", and even so they do not fit" : ""));
+}
+
 // A batch of buildings made (BuildingGenerator::make), each or the error it met.
 struct MadeBatch {
     size_t first = 0;
@@ -264,13 +314,25 @@ MadeBatch makeBatch(std::vector<PlannedBuilding> &planned, size_t first, size_t 
 
 // Adds a made batch to the builder in lot order: the warnings of each building, then the
 // first error in order, or the building (and its plinth on a landscape).
+// Distant buildings go into one mesh; what each level of detail took is counted.
+struct DetailLevels {
+    Mesh boxes;
+    LodCounts facades, box;
+};
+
 void addBatch(std::vector<PlannedBuilding> &planned, MadeBatch &batch, const LandscapeGround *landscape,
-              RenderSceneBuilder &builder, std::vector<std::string> &warnings) {
+              RenderSceneBuilder &builder, DetailLevels &levels, std::vector<std::string> &warnings) {
     for (size_t k = 0; k < batch.made.size(); ++k) {
         PlannedBuilding &p = planned[batch.first + k];
         warnings.insert(warnings.end(), p.warnings.begin(), p.warnings.end());
         if (batch.errors[k]) buildAt(p.loc, [&] { std::rethrow_exception(batch.errors[k]); });
-        p.rules->generator.add(std::move(*batch.made[k]));
+        LodCounts &counts = p.spec.coarse ? levels.box : levels.facades;
+        ++counts.buildings;
+        counts.triangles += batch.made[k]->mesh.triangleCount();
+        counts.instances += batch.made[k]->instances.size();
+        counts.meshes += p.spec.coarse ? 0 : 1;
+        counts.merged += p.spec.coarse ? 1 : 0;
+        p.rules->generator.add(std::move(*batch.made[k]), p.spec.coarse ? &levels.boxes : nullptr);
         if (landscape) addPlinth(p.spec, builder);
     }
 }
@@ -283,6 +345,7 @@ void addBatch(std::vector<PlannedBuilding> &planned, MadeBatch &batch, const Lan
 // materials, which adding leaves alone once the plinths' material is there.
 void buildAll(std::vector<PlannedBuilding> &planned, const LandscapeGround *landscape, RenderSceneBuilder &builder,
               std::vector<std::string> &warnings) {
+    DetailLevels levels;
     constexpr size_t kBatch = 256;
     if (planned.empty()) return;
     // Where the first plinth would have added it: no material comes between.
@@ -294,7 +357,7 @@ void buildAll(std::vector<PlannedBuilding> &planned, const LandscapeGround *land
         tbb::task_group making;
         if (next < planned.size()) making.run([&] { following = makeBatch(planned, next, end); });
         try {
-            addBatch(planned, current, landscape, builder, warnings);
+            addBatch(planned, current, landscape, builder, levels, warnings);
         } catch (...) {
             making.wait();
             throw;
@@ -302,10 +365,17 @@ void buildAll(std::vector<PlannedBuilding> &planned, const LandscapeGround *land
         making.wait();
         current = std::move(following);
     }
+    if (levels.boxes.triangleCount() > 0) {
+        levels.box.meshes = 1;
+        builder.addWorldMesh(std::move(levels.boxes), planned.front().spec.objectId);
+    }
+    if (levels.facades.buildings > 0) builder.countLod("city/facades", levels.facades);
+    if (levels.box.buildings > 0) builder.countLod("city/box", levels.box);
 }
 
 uint32_t buildCity(const CityData &data, uint32_t seed, ObjectId objectId, const FileLoc &fileLoc,
-                   const LandscapeGround *landscape, RenderSceneBuilder &builder, std::vector<std::string> &warnings) {
+                   const LandscapeGround *landscape, const BuildingDetail &detail, RenderSceneBuilder &builder,
+                   std::vector<std::string> &warnings) {
     warnings.insert(warnings.end(), data.warnings.begin(), data.warnings.end());
     if (landscape) warnIfHeightsIgnored(data, fileLoc, warnings);
     auto ruleFiles = readRuleFiles(fileLoc, data, seed, builder, warnings);
@@ -326,6 +396,7 @@ uint32_t buildCity(const CityData &data, uint32_t seed, ObjectId objectId, const
     if (lotError) std::rethrow_exception(lotError);
     warnOfSlivers(slivers, fileLoc, warnings);
     std::vector<PlannedBuilding> planned = planBuildings(data, lots, seed, objectId, landscape, ruleFiles);
+    chooseDetail(planned, seed, detail, builder, fileLoc, warnings);
     buildAll(planned, landscape, builder, warnings);
     return uint32_t(planned.size());
 }
@@ -476,9 +547,10 @@ std::vector<Vec3f> groundJunctions(const CityData &data, const LandscapeGround *
 }
 
 uint32_t generateCity(const CityDesc &city, const SceneCity &read, uint32_t seed, const LandscapeGround *landscape,
-                      RenderSceneBuilder &builder, std::vector<std::string> &out) {
+                      RenderSceneBuilder &builder, std::vector<std::string> &out, const Vec3f &camera) {
     return withWarnings(out, [&](std::vector<std::string> &warnings) {
-        uint32_t built = buildCity(read.data, seed, city.objectId, city.fileLoc, landscape, builder, warnings);
+        uint32_t built = buildCity(read.data, seed, city.objectId, city.fileLoc, landscape, {camera, city.coarseBeyond},
+                                   builder, warnings);
         if (read.upperLevels.empty()) return built;
         return built +
             buildUpperLevels(read.upperLevels, groundJunctions(read.data, landscape), read.levels, seed, city.objectId,
@@ -487,9 +559,9 @@ uint32_t generateCity(const CityDesc &city, const SceneCity &read, uint32_t seed
 }
 
 uint32_t generateCity(const CityData &data, uint32_t seed, ObjectId objectId, RenderSceneBuilder &builder,
-                      std::vector<std::string> &out, const LandscapeGround *landscape) {
+                      std::vector<std::string> &out, const LandscapeGround *landscape, const BuildingDetail &detail) {
     return withWarnings(out, [&](std::vector<std::string> &warnings) {
-        return buildCity(data, seed, objectId, {}, landscape, builder, warnings);
+        return buildCity(data, seed, objectId, {}, landscape, detail, builder, warnings);
     });
 }
 

@@ -174,6 +174,8 @@ struct CityDesc {
     int epsg = 0;
     FileLoc crsLoc;
     std::optional<uint32_t> seed;  // with each lot's identity, every random choice; unset: the scene's
+    // coarse_beyond: buildings farther from the camera are plain boxes with their roofs.
+    std::optional<float> coarseBeyond;
     uint32_t objectId = 0;
 };
 

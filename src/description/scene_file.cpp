@@ -408,6 +408,11 @@ class SceneFileReader {
         return e.unsignedInteger("seed", 0);
     }
 
+    static std::optional<float> coarseBeyond(const XmlElement &e) {
+        if (!e.has("coarse_beyond")) return std::nullopt;
+        return e.number("coarse_beyond", 300, 0, 1e6f);
+    }
+
     // A required file attribute, resolved against the scene's folder when relative.
     std::filesystem::path pathAttribute(const XmlElement &e, const char *attribute) const {
         std::filesystem::path file = e.string(attribute);
@@ -425,6 +430,7 @@ class SceneFileReader {
         }
         readFileCrs(e, city.epsg, city.crsLoc);
         city.seed = seedOverride(e);
+        city.coarseBeyond = coarseBeyond(e);
         readObjectId(e, city.loc);
         e.checkLeaf();
         scene_.cities.push_back(std::move(city));
@@ -471,6 +477,7 @@ class SceneFileReader {
             growth.roadsLoc = e.attributeLoc("roads");
         }
         city.seed = seedOverride(e);
+        city.coarseBeyond = coarseBeyond(e);
         readObjectId(e, city.loc);
         e.checkLeaf();
         scene_.cities.push_back(std::move(city));

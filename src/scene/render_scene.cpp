@@ -54,7 +54,7 @@ void RenderSceneBuilder::addWorldMesh(Mesh mesh, ObjectId objectId, uint32_t bui
 }
 
 uint64_t RenderSceneBuilder::geometryBytesLeft() const {
-    uint64_t used = storedTriangles_ * kBytesPerTriangle;
+    uint64_t used = storedTriangles_ * kBytesPerTriangle + instances_ * kBytesPerInstance;
     return used >= geometryBudget_ ? 0 : geometryBudget_ - used;
 }
 
@@ -76,6 +76,7 @@ PrototypeId RenderSceneBuilder::addPrototype(Mesh mesh) {
 
 void RenderSceneBuilder::addInstance(const Instance &instance) {
     if (instance.prototype >= scene_.prototypes.size()) throw std::out_of_range("instance of an unknown prototype");
+    ++instances_;
     scene_.instances.push_back(instance);
 }
 

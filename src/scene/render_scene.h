@@ -67,15 +67,20 @@ struct ModelEffort {
 // vertices of its own with texture coordinates, indices, material) and of the BVH at its
 // build's peak (`veduta info`'s bvh_peak_bytes per triangle: about 134), rounded up.
 inline constexpr uint64_t kBytesPerTriangle = 220;
+// What an instance costs the same way: the Instance and its share of the top-level BVH (406
+// bytes at the end of the build for a city of 4.55 million, issue 21's table; its peak about
+// half again).
+inline constexpr uint64_t kBytesPerInstance = 700;
 
 // Levels of detail a generator chose, counted for `veduta info` and the benchmarks.
 struct LodCounts {
-    uint64_t buildings = 0, triangles = 0, meshes = 0;
+    uint64_t buildings = 0, triangles = 0, meshes = 0, instances = 0;
     uint64_t merged = 0;  // of the buildings, those in a mesh shared with others (no building id)
     LodCounts &operator+=(const LodCounts &o) {
         buildings += o.buildings;
         triangles += o.triangles;
         meshes += o.meshes;
+        instances += o.instances;
         merged += o.merged;
         return *this;
     }
@@ -119,8 +124,8 @@ class RenderSceneBuilder {
     PrototypeId addPrototype(Mesh mesh);
     void addInstance(const Instance &instance);
 
-    // Generators that can draw things coarser keep the triangles they add under this many bytes
-    // (kBytesPerTriangle each) and warn when they coarsen (docs/performance.md).
+    // Generators that can draw things coarser keep what they add under this many bytes
+    // (kBytesPerTriangle, kBytesPerInstance) and warn when they coarsen (docs/performance.md).
     void setGeometryBudget(uint64_t bytes) { geometryBudget_ = bytes; }
     uint64_t geometryBytesLeft() const;
 
@@ -142,6 +147,7 @@ class RenderSceneBuilder {
     std::unordered_map<std::string, MaterialId> materialsByName_;
     uint64_t geometryBudget_ = UINT64_MAX;
     uint64_t storedTriangles_ = 0;  // of the meshes and prototypes added so far
+    uint64_t instances_ = 0;
 };
 
 }  // namespace veduta

@@ -181,6 +181,50 @@ TEST(GenerateCity, BatchesOfBuildingsAreTheSameOnAnyNumberOfThreads) {
     EXPECT_EQ(sceneHash(one), sceneHash(two));
 }
 
+// The row of 600 lots runs 7.2 km east from the origin; the camera stands at its west end.
+TEST(GenerateCity, BuildingsBeyondCoarseBeyondAreBoxesInOneMesh) {
+    CityData data = rowOfLots({});
+    RenderSceneBuilder builder;
+    std::vector<std::string> warnings;
+    generateCity(data, 0, 1, builder, warnings, nullptr, {{0, -20, 2}, 300.0f});
+    RenderScene scene = std::move(builder).build();
+    ASSERT_EQ(scene.lods.count("city/box"), 1u);
+    const LodCounts &facades = scene.lods.at("city/facades"), &boxes = scene.lods.at("city/box");
+    // Lots whose middle lies within 300 m: x + 6 < √(300² − 27² − 2²) ≈ 298.8, the first 25.
+    EXPECT_EQ(facades.buildings, 25u);
+    EXPECT_EQ(boxes.buildings, 575u);
+    EXPECT_EQ(boxes.meshes, 1u);
+    EXPECT_EQ(boxes.instances, 0u);
+    EXPECT_LT(boxes.triangles, 40 * boxes.buildings) << "a plain quad a wall and the roof";
+    EXPECT_EQ(scene.buildings.size(), 600u) << "every building keeps its record";
+}
+
+TEST(GenerateCity, TheGeometryBudgetTakesFacadesFromTheFarthestBuildingsFirst) {
+    CityData data = rowOfLots({});
+    auto built = [&](uint64_t budget, std::vector<std::string> &warnings) {
+        RenderSceneBuilder builder;
+        builder.setGeometryBudget(budget);
+        generateCity(data, 0, 1, builder, warnings, nullptr, {{0, -20, 2}, std::nullopt});
+        return std::move(builder).build();
+    };
+    std::vector<std::string> none, some;
+    RenderScene whole = built(UINT64_MAX, none);
+    EXPECT_EQ(whole.lods.count("city/box"), 0u);
+    RenderScene part = built(100'000'000, some);
+    ASSERT_EQ(part.lods.count("city/box"), 1u);
+    uint64_t kept = part.lods.at("city/facades").buildings;
+    EXPECT_GT(kept, 50u);
+    EXPECT_LT(kept, 500u);
+    bool warned = false;
+    for (const std::string &w : some) warned |= w.find("drawn as boxes") != std::string::npos;
+    EXPECT_TRUE(warned);
+    // The buildings that kept their facades are the nearest: every instance lies west of
+    // where the boxes begin.
+    float east = 0;
+    for (const Instance &instance : part.instances) east = std::max(east, instance.objectToWorld.m[3]);
+    EXPECT_LT(east, 12.0f * float(kept) + 1);
+}
+
 TEST(GenerateCity, ErrorsAreAtTheirPlace) {
     auto errorOf = [](const std::string &xml) { return test::inputErrorOf([&] { build(xml); }); };
     EXPECT_NE(errorOf("<scene version=\"1\"><city file=\"nowhere.xml\"/></scene>")
