@@ -5,9 +5,9 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.h"
-#include "core/memory_limit.h"
 #include "app/run_guarded.h"
 #include "app/version.h"
+#include "core/memory_limit.h"
 #include "io/gdal_guard.h"
 
 int main(int argc, char **argv) {

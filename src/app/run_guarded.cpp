@@ -7,8 +7,8 @@
 #include <string>
 
 #include "app/commands.h"
-#include "core/memory_limit.h"
 #include "core/error.h"
+#include "core/memory_limit.h"
 
 namespace veduta {
 
