@@ -91,6 +91,13 @@ class SceneAssembler {
             for (LocalPolygon &piece : streetAreaPieces(streetNetworkOf(cities.back().data)))
                 streetAreas.push_back(std::move(piece));
         }
+        // <slg level="atkis"> takes the landscape's settlement areas and footprints before the
+        // landscape takes its data, and stands on its ground after.
+        std::optional<SlgLand> slgLand;
+        if (land)
+            slgLand = SlgLand{
+                slgLandInput(land->objects, MapProjection(crsByEpsg(d_.georeference->epsg), *d_.georeference).frame()),
+                {}};
         std::optional<LandscapeGround> landscape;
         if (d_.landscape) {
             landscape = within(d_.landscape->loc, "<landscape>", [&] {
@@ -99,6 +106,7 @@ class SceneAssembler {
             });
         }
         GroundHeight ground = landscape ? landscape->ground : GroundHeight();
+        if (slgLand) slgLand->ground = ground;
         for (const BuildingGroupDesc &group : d_.buildingGroups) {
             within(group.loc, "<buildings>",
                    [&] { generateBuildings(group, seedOf(group.seed), ground, builder_, warnings_); });
@@ -115,7 +123,8 @@ class SceneAssembler {
         if (!d_.slg.empty()) {
             std::vector<uint32_t> seeds;
             for (const SlgDesc &slg : d_.slg) seeds.push_back(seedOf(slg.seed));
-            within(d_.slg.front().loc, "<slg>", [&] { generateSlg(d_.slg, seeds, camera, builder_, warnings_); });
+            within(d_.slg.front().loc, "<slg>",
+                   [&] { generateSlg(d_.slg, seeds, camera, slgLand ? &*slgLand : nullptr, builder_, warnings_); });
         }
         for (size_t i = 0; i < d_.cities.size(); ++i) {
             within(d_.cities[i].loc, elementName(d_.cities[i]), [&] {

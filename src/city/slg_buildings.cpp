@@ -74,16 +74,18 @@ Mesh groundMesh(const Polygon2d &ccw, double z, MaterialId material) {
 struct SlgBlock {
     uint32_t element = 0;  // which <slg>
     uint32_t index = 0;    // in its element, for the identities of its lots
-    Polygon2d outline;
+    Polygon2d outline;     // empty for a batch of given footprints
     LandUseWeights weights{};
     Locality locality = Locality::Kern;
+    std::vector<const SlgFootprint *> footprints;  // given (level="atkis"): no lots cut
+    bool onTerrain = false;                        // the terrain is the ground: no ground or sidewalk meshes
 };
 
 // The district's outline cut into blocks between streets (Table 6), each face moved back from
 // the streets by half their width (L1339). The level's faces run in a ring along the outline
 // and leave the middle as an inner face; a middle large enough for another ring is moved back
 // from its streets and cut the same way, one smaller is a block of its own (docs/slg.md).
-std::vector<Polygon2d> districtBlocks(const SlgDesc &desc, const Polygon2d &outline, const PlanParameters &district,
+std::vector<Polygon2d> districtBlocks(uint32_t identity, const Polygon2d &outline, const PlanParameters &district,
                                       uint32_t seed, int &lost) {
     double half = district.gapWidth / 2;
     std::vector<Polygon2d> blocks, parts{outline};
@@ -92,9 +94,9 @@ std::vector<Polygon2d> districtBlocks(const SlgDesc &desc, const Polygon2d &outl
         // corners of the next ring's outline.
         Polygon2d part;
         for (size_t corner : turningPoints(parts[next])) part.push_back(parts[next][corner]);
-        uint32_t identity = next == 0 ? desc.objectId : hashValues({desc.objectId, uint32_t(next), 0x52494e47u});
+        uint32_t ring = next == 0 ? identity : hashValues({identity, uint32_t(next), 0x52494e47u});  // "RING"
         Subdivision faces = subdivide(part, std::vector<EdgeLocation>(part.size(), EdgeLocation::Street), district,
-                                      PlanRandom(seed, identity, RandomStream::SlgPlan));
+                                      PlanRandom(seed, ring, RandomStream::SlgPlan));
         labelEdges(faces, PlanLevel::District);
         lost += faces.deletedFaces;
         if (faces.borderFaces().empty()) {
@@ -111,8 +113,8 @@ std::vector<Polygon2d> districtBlocks(const SlgDesc &desc, const Polygon2d &outl
                 ++lost;
                 continue;
             }
-            bool ring = !face.isBorder() && signedArea(moved->shape.points) > 2 * district.averageArea;
-            (ring ? parts : blocks).push_back(std::move(moved->shape.points));
+            bool another = !face.isBorder() && signedArea(moved->shape.points) > 2 * district.averageArea;
+            (another ? parts : blocks).push_back(std::move(moved->shape.points));
         }
     }
     return blocks;
@@ -123,25 +125,95 @@ std::vector<Polygon2d> districtBlocks(const SlgDesc &desc, const Polygon2d &outl
 void addBlocks(const SlgDesc &desc, uint32_t element, const Polygon2d &outline, const UrbanGeography &g, uint32_t seed,
                std::vector<SlgBlock> &blocks, int &lost) {
     if (desc.level == SlgDesc::Level::Block) {
-        blocks.push_back({element, 0, outline, blockWeights(g, g.blockDefaults.weights),
-                          g.blockDefaults.locality.value_or(Locality::Kern)});
+        blocks.push_back({element,
+                          0,
+                          outline,
+                          blockWeights(g, g.blockDefaults.weights),
+                          g.blockDefaults.locality.value_or(Locality::Kern),
+                          {},
+                          false});
         return;
     }
     Vec2d centre = vertexMean(outline);
     double farthest = 0;
     for (Vec2d p : outline) farthest = std::max(farthest, length(p - centre));
     uint32_t index = 0;
-    for (Polygon2d &block : districtBlocks(desc, outline, planParameters(g, PlanLevel::District), seed, lost)) {
+    for (Polygon2d &block :
+         districtBlocks(desc.objectId, outline, planParameters(g, PlanLevel::District), seed, lost)) {
         uint32_t identity = hashValues({desc.objectId, index, 0x424c4b53u});  // "BLKS"
         Locality locality = veduta::locality(length(vertexMean(block) - centre), farthest);
         LandUseWeights drawn = childWeights(g, g.districtDefaults.weights, locality, parameterRandom(seed, identity));
-        blocks.push_back({element, index++, std::move(block), blockWeights(g, drawn), locality});
+        blocks.push_back({element, index++, std::move(block), blockWeights(g, drawn), locality, {}, false});
+    }
+}
+
+// The weights of a settlement area's land use: all of it for one use, the district's mixture
+// for none.
+LandUseWeights settlementWeights(const UrbanGeography &g, std::optional<LandUse> use) {
+    if (!use) return g.districtDefaults.weights;
+    LandUseWeights weights{};
+    weights[size_t(*use)] = 1;
+    return weights;
+}
+
+// level="atkis" (digest-003 §8.3): a settlement area with no given footprint in it is filled
+// as a district is, ring by ring (one block when it is small); the footprints, in batches per
+// settlement area they lie in, are buildings of their own with its land use. Locality is the
+// distance from the middle of all settlement areas (eq 38).
+void addAtkisBlocks(const SlgDesc &desc, uint32_t element, const SlgLandInput &land, const UrbanGeography &g,
+                    uint32_t seed, std::vector<SlgBlock> &blocks, int &lost) {
+    constexpr size_t kBatch = 64;
+    const std::vector<SlgSettlement> &areas = land.settlements;
+    std::vector<std::vector<const SlgFootprint *>> within(areas.size() + 1);  // the last: in none
+    for (const SlgFootprint &footprint : land.footprints) {
+        Vec2d middle = vertexMean(footprint.outline);
+        size_t home = areas.size();
+        for (size_t a = 0; a < areas.size() && home == areas.size(); ++a)
+            if (sideOf(areas[a].outline, middle) == Side::Inside) home = a;
+        within[home].push_back(&footprint);
+    }
+    Vec2d centre;
+    size_t corners = 0;
+    for (const SlgSettlement &area : areas)
+        for (Vec2d p : area.outline) centre = centre + p, ++corners;
+    centre = corners > 0 ? centre * (1.0 / double(corners)) : centre;
+    double farthest = 0;
+    for (const SlgSettlement &area : areas)
+        for (Vec2d p : area.outline) farthest = std::max(farthest, length(p - centre));
+    PlanParameters district = planParameters(g, PlanLevel::District);
+    uint32_t index = 0;
+    for (size_t a = 0; a <= areas.size(); ++a) {
+        LandUseWeights weights = settlementWeights(g, a < areas.size() ? areas[a].use : std::nullopt);
+        auto blockOf = [&](Polygon2d outline, Vec2d middle) {
+            uint32_t identity = hashValues({desc.objectId, index, 0x424c4b53u});  // "BLKS"
+            Locality locality = farthest > 0 ? veduta::locality(length(middle - centre), farthest) : Locality::Mantel;
+            LandUseWeights drawn = childWeights(g, weights, locality, parameterRandom(seed, identity));
+            return SlgBlock{element, index++, std::move(outline), blockWeights(g, drawn), locality, {}, true};
+        };
+        for (size_t first = 0; first < within[a].size(); first += kBatch) {
+            SlgBlock batch = blockOf({}, a < areas.size() ? vertexMean(areas[a].outline) : centre);
+            batch.footprints.assign(within[a].begin() + first,
+                                    within[a].begin() + std::min(within[a].size(), first + kBatch));
+            blocks.push_back(std::move(batch));
+        }
+        if (a == areas.size() || !within[a].empty()) continue;
+        const Polygon2d &outline = areas[a].outline;
+        std::vector<Polygon2d> parts{outline};
+        if (signedArea(outline) > 2 * district.averageArea)
+            parts = districtBlocks(hashValues({desc.objectId, uint32_t(a), 0x53455454u}), outline, district, seed,
+                                   lost);  // "SETT"
+        for (Polygon2d &part : parts) {
+            Vec2d middle = vertexMean(part);
+            blocks.push_back(blockOf(std::move(part), middle));
+        }
     }
 }
 
 // A lot whose building is to be planned, with what the cascade made of it.
 struct SlgLot {
-    PlanShape shape;
+    PlanShape shape;  // the lot, or the given footprint
+    bool given = false;
+    double base = 0;  // the ground it stands on
     size_t frontEdges = 0;
     uint32_t identity = 0;
     LandUseWeights weights{};
@@ -152,7 +224,7 @@ struct SlgLot {
 
 struct BlockLots {
     std::vector<SlgLot> lots;
-    int lost = 0;
+    int lost = 0, unplanned = 0;
 };
 
 // What a level of detail is expected to cost, for the budget: triangles per storey at the two
@@ -201,8 +273,13 @@ struct BlockMeshes {
 class SlgGenerator {
   public:
     SlgGenerator(const std::vector<SlgDesc> &descs, const std::vector<uint32_t> &seeds, const Camera &camera,
-                 RenderSceneBuilder &builder) :
-        descs_(descs), seeds_(seeds), camera_(camera), builder_(builder), materials_(materialsOf(builder)) {
+                 const SlgLand *land, RenderSceneBuilder &builder) :
+        descs_(descs),
+        seeds_(seeds),
+        camera_(camera),
+        land_(land),
+        builder_(builder),
+        materials_(materialsOf(builder)) {
         for (const SlgDesc &desc : descs) tables_.push_back(&tablesAt(desc.tables));
     }
 
@@ -210,6 +287,14 @@ class SlgGenerator {
         std::vector<SlgBlock> blocks;
         std::vector<int> lost(descs_.size(), 0), unplanned(descs_.size(), 0);
         for (uint32_t e = 0; e < descs_.size(); ++e) {
+            if (descs_[e].level == SlgDesc::Level::Atkis) {
+                if (!land_)
+                    throw InputError(descs_[e].loc,
+                                     "level=\"atkis\" builds on the settlement areas and building "
+                                     "footprints of the scene's <landscape>; the scene has none");
+                addAtkisBlocks(descs_[e], e, land_->input, *tables_[e], seeds_[e], blocks, lost[e]);
+                continue;
+            }
             Polygon2d outline = outlineOf(descs_[e]);
             if (descs_[e].level == SlgDesc::Level::District)
                 builder_.addWorldMesh(groundMesh(outline, descs_[e].base, materials_.street), descs_[e].objectId);
@@ -225,12 +310,17 @@ class SlgGenerator {
         for (size_t b = 0; b < blocks.size(); ++b) {
             uint32_t e = blocks[b].element;
             lost[e] += lots[b].lost + meshes[b].lost;
-            unplanned[e] += meshes[b].unplanned;
+            unplanned[e] += lots[b].unplanned + meshes[b].unplanned;
             addBlock(descs_[e].objectId, std::move(meshes[b]), counts);
         }
         for (size_t l = 0; l < counts.size(); ++l)
             if (counts[l].buildings > 0) builder_.countLod(levelName(BuildingLod(l)), counts[l]);
         for (size_t e = 0; e < descs_.size(); ++e) {
+            if (descs_[e].level == SlgDesc::Level::Atkis && land_->input.unusable > 0)
+                warnings.push_back(
+                    fmt::format("{}: {} settlement areas and footprints left out: their outlines have "
+                                "fewer than three corners or cross themselves",
+                                descs_[e].loc.toString(), land_->input.unusable));
             if (lost[e] > 0)
                 warnings.push_back(fmt::format("{}: {} faces of the plans could not be made (docs/slg.md)",
                                                descs_[e].loc.toString(), lost[e]));
@@ -248,6 +338,7 @@ class SlgGenerator {
     }
 
     BlockLots lotsOf(const SlgBlock &block) const {
+        if (!block.footprints.empty()) return givenLots(block);
         const SlgDesc &desc = descs_[block.element];
         const UrbanGeography &g = *tables_[block.element];
         uint32_t seed = seeds_[block.element];
@@ -264,16 +355,60 @@ class SlgGenerator {
             LandUseWeights weights = lotWeights(g, block.weights, parameterRandom(seed, identity));
             auto building = lotBuilding(g, {weights, block.locality, {}}, seed, identity);
             if (!building) continue;  // open land
-            SlgLot lot{faceShape(lots, *face), frontEdges(*face), identity, weights, std::move(*building)};
-            Vec2d c = vertexMean(lot.shape.points);
-            double height = lot.building.parameters.storeys * kStoreyHeight;
-            lot.distance = length(Vec3f{float(c.x), float(c.y), float(desc.base + height / 2)} - camera_.position);
-            lot.lod = lot.distance < desc.rooms ? BuildingLod::Rooms
-                : lot.distance < desc.storeys   ? BuildingLod::Storeys
-                                                : BuildingLod::Box;
+            SlgLot lot{faceShape(lots, *face), false, 0, frontEdges(*face), identity, weights, std::move(*building)};
+            place(block, lot);
             out.lots.push_back(std::move(lot));
         }
         return out;
+    }
+
+    // Given footprints are buildings whatever the draw says: open land is not drawn for them.
+    // The front is the longest edge (their streets are not known); every edge is a street's.
+    BlockLots givenLots(const SlgBlock &block) const {
+        const SlgDesc &desc = descs_[block.element];
+        const UrbanGeography &g = *tables_[block.element];
+        uint32_t seed = seeds_[block.element];
+        BlockLots out;
+        for (const SlgFootprint *footprint : block.footprints) {
+            uint32_t identity = hashValues({desc.objectId, footprint->identity});
+            LandUseWeights weights = lotWeights(g, block.weights, parameterRandom(seed, identity));
+            weights[size_t(LandUse::Freiflaeche)] = 0;
+            auto building = lotBuilding(g, {weights, block.locality, {}}, seed, identity);
+            if (!building) {
+                ++out.unplanned;
+                continue;
+            }
+            const Polygon2d &outline = footprint->outline;
+            size_t longest = 0;
+            for (size_t i = 1; i < outline.size(); ++i)
+                if (length(outline[(i + 1) % outline.size()] - outline[i]) >
+                    length(outline[(longest + 1) % outline.size()] - outline[longest]))
+                    longest = i;
+            PlanShape shape{outline, std::vector<EdgeLocation>(outline.size(), EdgeLocation::Street)};
+            std::rotate(shape.points.begin(), shape.points.begin() + std::ptrdiff_t(longest), shape.points.end());
+            SlgLot lot{std::move(shape), true, 0, 1, identity, weights, std::move(*building)};
+            place(block, lot);
+            out.lots.push_back(std::move(lot));
+        }
+        return out;
+    }
+
+    // The ground a lot stands on (the terrain's lowest point under it, or the element's base),
+    // and the level of detail its distance from the camera asks for.
+    void place(const SlgBlock &block, SlgLot &lot) const {
+        const SlgDesc &desc = descs_[block.element];
+        lot.base = desc.base;
+        if (block.onTerrain && land_ && land_->ground) {
+            std::vector<Vec2f> points;
+            for (Vec2d p : lot.shape.points) points.push_back({float(p.x), float(p.y)});
+            lot.base = land_->ground(points).value_or(desc.base);
+        }
+        Vec2d c = vertexMean(lot.shape.points);
+        double height = lot.building.parameters.storeys * kStoreyHeight;
+        lot.distance = length(Vec3f{float(c.x), float(c.y), float(lot.base + height / 2)} - camera_.position);
+        lot.lod = lot.distance < desc.rooms ? BuildingLod::Rooms
+            : lot.distance < desc.storeys   ? BuildingLod::Storeys
+                                            : BuildingLod::Box;
     }
 
     // Within the budget every building keeps the level its distance asks for. Past it, the
@@ -314,7 +449,7 @@ class SlgGenerator {
     BlockMeshes meshesOf(const SlgBlock &block, const BlockLots &lots) const {
         const SlgDesc &desc = descs_[block.element];
         BlockMeshes out;
-        out.ground = groundMesh(block.outline, desc.base + 0.01, materials_.block);
+        if (!block.onTerrain) out.ground = groundMesh(block.outline, desc.base + 0.01, materials_.block);
         for (const SlgLot &lot : lots.lots) addBuilding(block, lot, out);
         return out;
     }
@@ -323,19 +458,22 @@ class SlgGenerator {
         const SlgDesc &desc = descs_[block.element];
         const UrbanGeography &g = *tables_[block.element];
         uint32_t seed = seeds_[block.element];
-        auto plan = planBuilding(lot.shape, fourSides(lot.shape.points, lot.frontEdges), lot.building.parameters, seed,
-                                 lot.identity, depthFor(lot.lod));
+        FaceSides sides = fourSides(lot.shape.points, lot.frontEdges);
+        auto plan = lot.given
+            ? planInFootprint(lot.shape, sides, lot.building.parameters, seed, lot.identity, depthFor(lot.lod))
+            : planBuilding(lot.shape, sides, lot.building.parameters, seed, lot.identity, depthFor(lot.lod));
         if (!plan) {
             ++out.unplanned;
             return;
         }
         out.lost += plan->losses.deletedFaces;
-        for (const Polygon2d &quad : plan->sidewalk)
-            out.ground.append(groundMesh(quad, desc.base + 0.02, materials_.sidewalk), Transform());
+        if (!block.onTerrain)
+            for (const Polygon2d &quad : plan->sidewalk)
+                out.ground.append(groundMesh(quad, desc.base + 0.02, materials_.sidewalk), Transform());
 
         int corners = int(turningPoints(plan->placement.footprint.points).size());
         BuildingShape shape;
-        shape.base = desc.base;
+        shape.base = lot.base;
         shape.storeyHeight = kStoreyHeight;
         shape.roof = roofKind(lot.weights, corners,
                               PlanRandom(seed, hashValues({lot.identity, kRoof}), RandomStream::SlgParameters));
@@ -364,7 +502,7 @@ class SlgGenerator {
 
     void addBlock(ObjectId objectId, BlockMeshes block, std::array<LodCounts, 3> &counts) {
         for (size_t l = 0; l < counts.size(); ++l) counts[l] += block.counts[l];
-        builder_.addWorldMesh(std::move(block.ground), objectId);
+        if (block.ground.triangleCount() > 0) builder_.addWorldMesh(std::move(block.ground), objectId);
         for (auto &[mesh, id] : block.buildings) builder_.addWorldMesh(std::move(mesh), objectId, id);
         if (block.boxes.triangleCount() > 0) {
             ++counts[size_t(BuildingLod::Box)].meshes;
@@ -375,6 +513,7 @@ class SlgGenerator {
     const std::vector<SlgDesc> &descs_;
     const std::vector<uint32_t> &seeds_;
     const Camera &camera_;
+    const SlgLand *land_;
     RenderSceneBuilder &builder_;
     SlgMaterials materials_;
     std::map<std::filesystem::path, UrbanGeography> geographies_;
@@ -384,9 +523,9 @@ class SlgGenerator {
 }  // namespace
 
 void generateSlg(const std::vector<SlgDesc> &descs, const std::vector<uint32_t> &seeds, const Camera &camera,
-                 RenderSceneBuilder &builder, std::vector<std::string> &warnings) {
+                 const SlgLand *land, RenderSceneBuilder &builder, std::vector<std::string> &warnings) {
     if (descs.empty()) return;
-    SlgGenerator(descs, seeds, camera, builder).generate(warnings);
+    SlgGenerator(descs, seeds, camera, land, builder).generate(warnings);
 }
 
 }  // namespace veduta

@@ -16,9 +16,6 @@ constexpr double kUnset = -std::numeric_limits<double>::infinity();
 // the plan's vertices are exact CGAL points rounded to float.
 constexpr double kSlack = 1e-3;
 
-double dot(Vec2d a, Vec2d b) { return a.x * b.x + a.y * b.y; }
-Vec2d operator+(Vec2d a, Vec2d b) { return {a.x + b.x, a.y + b.y}; }
-Vec2d operator-(Vec2d a, Vec2d b) { return {a.x - b.x, a.y - b.y}; }
 Vec2d operator*(double k, Vec2d a) { return {k * a.x, k * a.y}; }
 
 // Axis-aligned boxes bucketed on a square grid: the ids whose box may meet a query box.

@@ -24,6 +24,20 @@ inline Vec2f operator-(Vec2f a, Vec2f b) { return {a.x - b.x, a.y - b.y}; }
 inline Vec2f operator*(Vec2f a, float s) { return {a.x * s, a.y * s}; }
 inline float dot(Vec2f a, Vec2f b) { return a.x * b.x + a.y * b.y; }
 
+// A point or direction of a plan or the local frame kept in double: outlines are cut and
+// compared in double, and only the finished vertices are made float.
+struct Vec2d {
+    double x = 0, y = 0;
+    Vec2d operator+(Vec2d o) const { return {x + o.x, y + o.y}; }
+    Vec2d operator-(Vec2d o) const { return {x - o.x, y - o.y}; }
+    Vec2d operator*(double s) const { return {x * s, y * s}; }
+    bool operator==(const Vec2d &) const = default;
+};
+
+inline double dot(Vec2d a, Vec2d b) { return a.x * b.x + a.y * b.y; }
+inline double cross(Vec2d a, Vec2d b) { return a.x * b.y - a.y * b.x; }
+inline double length(Vec2d v) { return std::hypot(v.x, v.y); }
+
 struct Vec3f {
     float x = 0, y = 0, z = 0;
 

@@ -203,7 +203,8 @@ struct CityGmlDesc {
 // rooms and built at the level of detail its distance from the camera asks for.
 struct SlgDesc {
     FileLoc loc;
-    enum class Level : uint8_t { Block, District } level = SlgDesc::Level::Block;
+    // Atkis: the blocks are the <landscape>'s settlement areas, the buildings its footprints.
+    enum class Level : uint8_t { Block, District, Atkis } level = SlgDesc::Level::Block;
     std::vector<Vec2f> outline;  // counter-clockwise in the scene's x/y, at height `base`
     FileLoc outlineLoc;
     float base = 0;

@@ -506,15 +506,27 @@ class SceneFileReader {
         SlgDesc slg;
         slg.loc = e.loc();
         std::string level = e.string("level", "block");
-        if (level != "block" && level != "district")
-            e.failAt("level", fmt::format("level is 'block' or 'district', not '{}'", level));
-        slg.level = level == "district" ? SlgDesc::Level::District : SlgDesc::Level::Block;
-        std::vector<float> points = e.numbers("outline");
-        slg.outlineLoc = e.attributeLoc("outline");
-        if (points.size() < 6 || points.size() % 2 != 0)
-            e.failAt("outline", "outline takes x y pairs of at least three corners");
-        for (size_t i = 0; i < points.size(); i += 2) slg.outline.push_back({points[i], points[i + 1]});
-        slg.base = e.number("base", 0, -1e4f, 1e4f);
+        if (level != "block" && level != "district" && level != "atkis")
+            e.failAt("level", fmt::format("level is 'block', 'district' or 'atkis', not '{}'", level));
+        slg.level = level == "district" ? SlgDesc::Level::District
+            : level == "atkis"          ? SlgDesc::Level::Atkis
+                                        : SlgDesc::Level::Block;
+        if (slg.level == SlgDesc::Level::Atkis) {
+            // The outlines are the landscape's settlement areas and building footprints.
+            for (const char *attribute : {"outline", "base"})
+                if (e.has(attribute))
+                    e.failAt(attribute,
+                             fmt::format("level=\"atkis\" takes its outlines and heights from the "
+                                         "<landscape>; leave out {}",
+                                         attribute));
+        } else {
+            std::vector<float> points = e.numbers("outline");
+            slg.outlineLoc = e.attributeLoc("outline");
+            if (points.size() < 6 || points.size() % 2 != 0)
+                e.failAt("outline", "outline takes x y pairs of at least three corners");
+            for (size_t i = 0; i < points.size(); i += 2) slg.outline.push_back({points[i], points[i + 1]});
+            slg.base = e.number("base", 0, -1e4f, 1e4f);
+        }
         slg.tables = pathAttribute(e, "tables");
         slg.tablesLoc = e.attributeLoc("tables");
         slg.rooms = e.number("rooms_within", slg.rooms, 0, 1e6f);

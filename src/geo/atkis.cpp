@@ -125,6 +125,8 @@ LandClass landClass(const AtkisObject &object) {
         if (folie == "001") return LandClass::Parcel;
         return LandClass::Other;
     }
+    // ALKIS (AAA) building footprints: Objektart 31001 AX_Gebaeude, in NAS by its class name.
+    if (object.type == 31001 || object.typeName == "AX_Gebaeude") return LandClass::Building;
     switch (object.type) {
     case 3101: return LandClass::Road;
     case 3102: return LandClass::Path;

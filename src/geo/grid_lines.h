@@ -10,14 +10,6 @@
 
 namespace veduta {
 
-// A point of the local frame kept in double: outlines are cut and compared in double, and only
-// the finished vertices are made float.
-struct Vec2d {
-    double x = 0, y = 0;
-
-    friend bool operator==(const Vec2d &, const Vec2d &) = default;
-};
-
 struct GridLines {
     std::vector<double> xs;  // column lines from the west, strictly increasing
     std::vector<double> ys;  // row lines from the south, strictly increasing

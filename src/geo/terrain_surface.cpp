@@ -10,8 +10,6 @@ namespace {
 
 constexpr double kParameterSlack = 1e-12;  // an edge crossing just past an end still counts
 
-double cross(Vec2d a, Vec2d b) { return a.x * b.y - a.y * b.x; }
-Vec2d minus(Vec2d a, Vec2d b) { return {a.x - b.x, a.y - b.y}; }
 Vec2d plan(const Vec3f &p) { return {p.x, p.y}; }
 
 // Even–odd; a point on the boundary may fall either way (the boundary crossings cover it).
@@ -28,7 +26,7 @@ bool inside(std::span<const Vec2d> polygon, Vec2d p) {
 // collinear edges, at the mesh edge's ends that lie on a–b.
 template <typename F>
 void edgeCrossings(Vec2d a, Vec2d b, const Vec3f &p, const Vec3f &q, F &&found) {
-    Vec2d r = minus(b, a), s = minus(plan(q), plan(p)), ap = minus(plan(p), a);
+    Vec2d r = (b - a), s = plan(q) - plan(p), ap = plan(p) - a;
     double denominator = cross(r, s);
     if (denominator != 0) {
         double t = cross(ap, s) / denominator, u = cross(ap, r) / denominator;

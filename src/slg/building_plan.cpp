@@ -71,6 +71,29 @@ LevelFaces planLevel(const PlanShape &outline, PlanLevel level, const PlanParame
     return {std::move(plan.faces), s.graph.position(door)};
 }
 
+// The storey's plan of a building whose footprint is placed: apartments round the house
+// corridor from the entrance, rooms round each apartment's corridor, as deep as `depth`.
+void planStoreys(BuildingPlan &plan, const BuildingPlanParameters &p, uint32_t seed, uint32_t identity,
+                 PlanDepth depth) {
+    plan.storeys = p.storeys;
+    if (depth == PlanDepth::Footprint) return;
+    CorridorParameters house{CorridorKind::House, p.houseCorridorWidth, p.doorWidth};
+    EdgeLocation entranceSide = p.entranceAtRear ? EdgeLocation::Gap : EdgeLocation::Street;
+    LevelFaces storey = planLevel(plan.placement.footprint, PlanLevel::Building, p.storey, house, entranceSide,
+                                  planRandom(seed, identity, kStoreyPlan, 0), p.limits, plan.losses);
+    plan.storey.entrance = storey.door;
+    if (depth == PlanDepth::Entrance) return;
+
+    CorridorParameters inner{CorridorKind::Apartment, p.apartmentCorridorWidth, p.doorWidth};
+    for (size_t i = 0; i < storey.faces.size(); ++i) {
+        // A storey of one apartment has no house corridor: its door is the house door.
+        EdgeLocation doorSide = storey.faces.size() > 1 ? EdgeLocation::HouseCorridor : entranceSide;
+        LevelFaces rooms = planLevel(storey.faces[i], PlanLevel::Apartment, p.apartment, inner, doorSide,
+                                     planRandom(seed, identity, kApartmentPlan, uint32_t(i)), p.limits, plan.losses);
+        plan.storey.apartments.push_back({std::move(storey.faces[i]), std::move(rooms.faces), rooms.door});
+    }
+}
+
 }  // namespace
 
 PlanLosses &PlanLosses::operator+=(const PlanLosses &o) {
@@ -92,23 +115,16 @@ std::optional<BuildingPlan> planBuilding(const PlanShape &lot, const FaceSides &
     BuildingPlan plan;
     plan.sidewalk = std::move(sidewalk->quads);
     plan.placement = std::move(*placement);
-    plan.storeys = p.storeys;
-    if (depth == PlanDepth::Footprint) return plan;
-    CorridorParameters house{CorridorKind::House, p.houseCorridorWidth, p.doorWidth};
-    EdgeLocation entranceSide = p.entranceAtRear ? EdgeLocation::Gap : EdgeLocation::Street;
-    LevelFaces storey = planLevel(plan.placement.footprint, PlanLevel::Building, p.storey, house, entranceSide,
-                                  planRandom(seed, identity, kStoreyPlan, 0), p.limits, plan.losses);
-    plan.storey.entrance = storey.door;
-    if (depth == PlanDepth::Entrance) return plan;
+    planStoreys(plan, p, seed, identity, depth);
+    return plan;
+}
 
-    CorridorParameters inner{CorridorKind::Apartment, p.apartmentCorridorWidth, p.doorWidth};
-    for (size_t i = 0; i < storey.faces.size(); ++i) {
-        // A storey of one apartment has no house corridor: its door is the house door.
-        EdgeLocation doorSide = storey.faces.size() > 1 ? EdgeLocation::HouseCorridor : entranceSide;
-        LevelFaces rooms = planLevel(storey.faces[i], PlanLevel::Apartment, p.apartment, inner, doorSide,
-                                     planRandom(seed, identity, kApartmentPlan, uint32_t(i)), p.limits, plan.losses);
-        plan.storey.apartments.push_back({std::move(storey.faces[i]), std::move(rooms.faces), rooms.door});
-    }
+BuildingPlan planInFootprint(const PlanShape &footprint, const FaceSides &sides, const BuildingPlanParameters &p,
+                             uint32_t seed, uint32_t identity, PlanDepth depth) {
+    BuildingPlan plan;
+    plan.placement.footprint = footprint;
+    plan.placement.sides = sides;
+    planStoreys(plan, p, seed, identity, depth);
     return plan;
 }
 

@@ -67,4 +67,11 @@ std::optional<BuildingPlan> planBuilding(const PlanShape &lot, const FaceSides &
                                          const BuildingPlanParameters &parameters, uint32_t seed, uint32_t identity,
                                          PlanDepth depth = PlanDepth::Rooms);
 
+// The plan of a building whose footprint is given (an ATKIS or ALK outline, digest-003 §8.3):
+// its storeys, apartments and rooms as on a lot, without sidewalk or placement; the
+// footprint's edges keep their locations (a Street edge gets windows and may get the door).
+BuildingPlan planInFootprint(const PlanShape &footprint, const FaceSides &sides,
+                             const BuildingPlanParameters &parameters, uint32_t seed, uint32_t identity,
+                             PlanDepth depth = PlanDepth::Rooms);
+
 }  // namespace veduta

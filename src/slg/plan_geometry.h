@@ -8,19 +8,10 @@
 #include <optional>
 #include <vector>
 
+#include "core/vecmath.h"
+
 namespace veduta {
 
-struct Vec2d {
-    double x = 0, y = 0;
-    Vec2d operator+(Vec2d o) const { return {x + o.x, y + o.y}; }
-    Vec2d operator-(Vec2d o) const { return {x - o.x, y - o.y}; }
-    Vec2d operator*(double s) const { return {x * s, y * s}; }
-    bool operator==(const Vec2d &) const = default;
-};
-
-inline double dot(Vec2d a, Vec2d b) { return a.x * b.x + a.y * b.y; }
-inline double cross(Vec2d a, Vec2d b) { return a.x * b.y - a.y * b.x; }
-inline double length(Vec2d v) { return std::hypot(v.x, v.y); }
 inline Vec2d normalized(Vec2d v) { return v * (1 / length(v)); }
 // The inward normal of an edge of a counter-clockwise outline: the edge turned left (eq 8).
 inline Vec2d leftNormal(Vec2d v) { return {-v.y, v.x}; }

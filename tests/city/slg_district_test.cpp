@@ -65,7 +65,7 @@ SlgBuilt slgWithin(uint64_t budget, const std::string &slg, Vec3f cameraAt) {
     std::vector<uint32_t> seeds;
     for (const SlgDesc &element : d.slg) seeds.push_back(*element.seed);
     SlgBuilt out;
-    generateSlg(d.slg, seeds, camera, builder, out.warnings);
+    generateSlg(d.slg, seeds, camera, nullptr, builder, out.warnings);
     out.scene = std::move(builder).build();
     return out;
 }
@@ -143,7 +143,7 @@ TEST(SlgElement, MistakesAreNamedWithTheirPlace) {
     EXPECT_EQ(error(R"(<slg outline="0 0 10 10 10 0 0 10" tables="../rules/slg/urban-geography.xml"/>)"),
               "test.xml:1:93: the outline crosses itself");
     EXPECT_EQ(error(R"(<slg level="city" outline="0 0 10 0 5 5" tables="../rules/slg/urban-geography.xml"/>)"),
-              "test.xml:1:91: level is 'block' or 'district', not 'city'");
+              "test.xml:1:91: level is 'block', 'district' or 'atkis', not 'city'");
     EXPECT_NE(error(R"(<slg outline="0 0 10 0 5 5" tables="missing.xml"/>)").find("missing.xml"), std::string::npos);
 }
 
