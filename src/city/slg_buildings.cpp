@@ -12,6 +12,7 @@
 #include "slg/building_mesh.h"
 #include "slg/ear_clipping.h"
 #include "slg/lot_building.h"
+#include "slg/quarters.h"
 #include "slg/urban_geography_file.h"
 
 namespace veduta {
@@ -81,12 +82,13 @@ struct SlgBlock {
     bool onTerrain = false;                        // the terrain is the ground: no ground or sidewalk meshes
 };
 
-// The district's outline cut into blocks between streets (Table 6), each face moved back from
-// the streets by half their width (L1339). The level's faces run in a ring along the outline
-// and leave the middle as an inner face; a middle large enough for another ring is moved back
-// from its streets and cut the same way, one smaller is a block of its own (docs/slg.md).
-std::vector<Polygon2d> districtBlocks(uint32_t identity, const Polygon2d &outline, const PlanParameters &district,
-                                      uint32_t seed, int &lost) {
+// A district's (or quarter's) outline cut into blocks between streets (Table 6), each face
+// moved back from the streets by half their width (L1339). The level's faces run in a ring
+// along the outline and leave the middle as an inner face; a middle large enough for another
+// ring is moved back from its streets and cut the same way, one smaller is a block of its own
+// (docs/slg.md).
+std::vector<Polygon2d> ringBlocks(uint32_t identity, const Polygon2d &outline, const PlanParameters &district,
+                                  uint32_t seed, int &lost) {
     double half = district.gapWidth / 2;
     std::vector<Polygon2d> blocks, parts{outline};
     for (size_t next = 0; next < parts.size(); ++next) {
@@ -120,6 +122,28 @@ std::vector<Polygon2d> districtBlocks(uint32_t identity, const Polygon2d &outlin
     return blocks;
 }
 
+// A district larger than a quarter is cut into quarters of about a kilometre by the city's
+// main streets (Table 4's 20 m; quarters.h) first, and the quarters are filled on all cores.
+std::vector<Polygon2d> districtBlocks(uint32_t identity, const Polygon2d &outline, const UrbanGeography &g,
+                                      uint32_t seed, int &lost) {
+    constexpr double kQuarterSide = 1000;
+    PlanParameters district = planParameters(g, PlanLevel::District);
+    std::vector<Polygon2d> parts = quarters(outline, kQuarterSide, planParameters(g, PlanLevel::City).gapWidth);
+    if (parts.size() == 1) return ringBlocks(identity, outline, district, seed, lost);
+    std::vector<std::vector<Polygon2d>> filled(parts.size());
+    std::vector<int> losses(parts.size(), 0);
+    tbb::parallel_for(size_t(0), parts.size(), [&](size_t q) {
+        uint32_t quarter = hashValues({identity, uint32_t(q), 0x51525452u});  // "QRTR"
+        filled[q] = ringBlocks(quarter, parts[q], district, seed, losses[q]);
+    });
+    std::vector<Polygon2d> blocks;
+    for (size_t q = 0; q < parts.size(); ++q) {
+        lost += losses[q];
+        for (Polygon2d &block : filled[q]) blocks.push_back(std::move(block));
+    }
+    return blocks;
+}
+
 // A block's locality is its distance from the district's centre (eq 38), its land uses drawn
 // from the district's (eq 39–41, 44).
 void addBlocks(const SlgDesc &desc, uint32_t element, const Polygon2d &outline, const UrbanGeography &g, uint32_t seed,
@@ -138,8 +162,7 @@ void addBlocks(const SlgDesc &desc, uint32_t element, const Polygon2d &outline, 
     double farthest = 0;
     for (Vec2d p : outline) farthest = std::max(farthest, length(p - centre));
     uint32_t index = 0;
-    for (Polygon2d &block :
-         districtBlocks(desc.objectId, outline, planParameters(g, PlanLevel::District), seed, lost)) {
+    for (Polygon2d &block : districtBlocks(desc.objectId, outline, g, seed, lost)) {
         uint32_t identity = hashValues({desc.objectId, index, 0x424c4b53u});  // "BLKS"
         Locality locality = veduta::locality(length(vertexMean(block) - centre), farthest);
         LandUseWeights drawn = childWeights(g, g.districtDefaults.weights, locality, parameterRandom(seed, identity));
@@ -180,7 +203,7 @@ void addAtkisBlocks(const SlgDesc &desc, uint32_t element, const SlgLandInput &l
     double farthest = 0;
     for (const SlgSettlement &area : areas)
         for (Vec2d p : area.outline) farthest = std::max(farthest, length(p - centre));
-    PlanParameters district = planParameters(g, PlanLevel::District);
+    double districtArea = planParameters(g, PlanLevel::District).averageArea;
     uint32_t index = 0;
     for (size_t a = 0; a <= areas.size(); ++a) {
         LandUseWeights weights = settlementWeights(g, a < areas.size() ? areas[a].use : std::nullopt);
@@ -199,8 +222,8 @@ void addAtkisBlocks(const SlgDesc &desc, uint32_t element, const SlgLandInput &l
         if (a == areas.size() || !within[a].empty()) continue;
         const Polygon2d &outline = areas[a].outline;
         std::vector<Polygon2d> parts{outline};
-        if (signedArea(outline) > 2 * district.averageArea)
-            parts = districtBlocks(hashValues({desc.objectId, uint32_t(a), 0x53455454u}), outline, district, seed,
+        if (signedArea(outline) > 2 * districtArea)
+            parts = districtBlocks(hashValues({desc.objectId, uint32_t(a), 0x53455454u}), outline, g, seed,
                                    lost);  // "SETT"
         for (Polygon2d &part : parts) {
             Vec2d middle = vertexMean(part);

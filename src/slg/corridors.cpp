@@ -1,17 +1,13 @@
 #include "slg/corridors.h"
 
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Polygon_set_2.h>
-
 #include <algorithm>
 #include <array>
+
+#include "slg/exact_region.h"
 
 namespace veduta {
 
 namespace {
-
-using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
-using Region = CGAL::Polygon_set_2<Kernel>;
 
 // Points this close to a line lie on it: faces' corners are intersections of lines, a rounding
 // off the edges they stand on.
@@ -37,18 +33,6 @@ double coveredFraction(std::vector<std::pair<double, double>> parts) {
         reached = std::max(reached, hi);
     }
     return covered;
-}
-
-Region::Polygon_2 exactPolygon(const Polygon2d &points) {
-    Region::Polygon_2 polygon;
-    for (Vec2d p : points) polygon.push_back({p.x, p.y});
-    return polygon;
-}
-
-Polygon2d inexactPolygon(const Region::Polygon_2 &polygon) {
-    Polygon2d points;
-    for (const auto &p : polygon.vertices()) points.push_back({CGAL::to_double(p.x()), CGAL::to_double(p.y())});
-    return points;
 }
 
 enum SideName { kTop, kLeft, kRight };
@@ -165,9 +149,9 @@ class CorridorMaker {
 // Corners computed in double stand a rounding off the outline, so the exact difference leaves
 // slivers along it; pieces of no appreciable area are dropped.
 std::vector<std::vector<Polygon2d>> corridorPieces(const Polygon2d &outline, const std::vector<PlanShape> &faces) {
-    Region region(exactPolygon(outline));
+    ExactRegion region(exactPolygon(outline));
     for (const PlanShape &face : faces) region.difference(exactPolygon(face.points));
-    std::vector<CGAL::Polygon_with_holes_2<Kernel>> parts;
+    std::vector<CGAL::Polygon_with_holes_2<ExactKernel>> parts;
     region.polygons_with_holes(std::back_inserter(parts));
     double negligible = 1e-9 * signedArea(outline);
     std::vector<std::vector<Polygon2d>> pieces;

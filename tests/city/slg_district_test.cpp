@@ -111,10 +111,13 @@ TEST(SlgElement, TheGeometryBudgetTakesDetailFromTheFarthestBuildingsFirst) {
     EXPECT_LT(farthestRooms, length(Vec3f{350, 350, 0} - Vec3f{-50, -50, 30}));
 }
 
+// A district of four quarters, each filled on a thread of its own when there are two.
 TEST(SlgElement, TheSameBitsOnAnyNumberOfThreads) {
-    auto hashOn = [](int threads) {
+    const char *large = R"(<slg level="district" outline="0 0 2100 0 2100 1900 0 1900" seed="3" )"
+                        R"(tables="../rules/slg/urban-geography.xml" rooms_within="120" storeys_within="300"/>)";
+    auto hashOn = [&](int threads) {
         tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-        return sceneHash(slgWithin(UINT64_MAX, kDistrict, {-50, -50, 30}).scene);
+        return sceneHash(slgWithin(UINT64_MAX, large, {-50, -50, 30}).scene);
     };
     EXPECT_EQ(hashOn(1), hashOn(2));
 }
