@@ -44,6 +44,11 @@ void runInfo(const std::string &path) {
         std::printf("lod %s: %llu buildings, %llu triangles, %llu meshes, %llu instances\n", level.c_str(),
                     (unsigned long long)counts.buildings, (unsigned long long)counts.triangles,
                     (unsigned long long)counts.meshes, (unsigned long long)counts.instances);
+    // Eq 1 against Table 2's caps, reported and not judged (docs/slg.md).
+    for (const auto &[zone, d] : scene.densities)
+        std::printf("density %s: %llu lots, GRZ %.2f (cap %.2f), GFZ %.2f (cap %.2f)\n", zone.c_str(),
+                    (unsigned long long)d.lots, d.footprintArea / d.lotArea, d.grzCap, d.floorArea / d.lotArea,
+                    d.gfzCap);
     std::printf("stored_triangles: %llu\n", (unsigned long long)stored);
     std::printf("effective_triangles: %llu\n", (unsigned long long)scene.effectiveTriangleCount());
     std::printf("bvh_build_seconds: %.3f\n", bvh.stats().buildSeconds);

@@ -286,6 +286,7 @@ struct BlockMeshes {
     Mesh ground, boxes;
     std::vector<std::pair<Mesh, uint32_t>> buildings;  // with their building ids
     std::array<LodCounts, 3> counts{};
+    std::map<std::string, DensityTotals> densities;
     int lost = 0, unplanned = 0;
 };
 
@@ -508,6 +509,7 @@ class SlgGenerator {
         shape.windows.spacing = 1.3;
         shape.windows.wallDistance = 0.8;
         shape.wallThickness = g.wallThickness;
+        addDensity(block, lot, *plan, out);
         Mesh mesh = buildingMesh(*plan, shape, lot.lod, materials_.building);
         LodCounts &counts = out.counts[size_t(lot.lod)];
         ++counts.buildings;
@@ -523,7 +525,24 @@ class SlgGenerator {
         out.buildings.emplace_back(std::move(mesh), buildingId);
     }
 
+    // A lot's GRZ and GFZ (eq 1) toward its zone's totals; a given footprint has no lot.
+    void addDensity(const SlgBlock &block, const SlgLot &lot, const BuildingPlan &plan, BlockMeshes &out) const {
+        if (lot.given) return;
+        double lotArea = signedArea(lot.shape.points), footprint = signedArea(plan.placement.footprint.points);
+        std::vector<double> storeys(size_t(plan.storeys), footprint);
+        DensityReport report = densityReport(*tables_[block.element], dominantUse(lot.weights), block.locality, lotArea,
+                                             footprint, storeys);
+        if (!report.zone) return;
+        DensityTotals &totals = out.densities[report.zone->name];
+        ++totals.lots;
+        totals.lotArea += lotArea;
+        totals.footprintArea += footprint;
+        totals.floorArea += footprint * plan.storeys;
+        totals.grzCap = report.zone->grz, totals.gfzCap = report.zone->gfz;
+    }
+
     void addBlock(ObjectId objectId, BlockMeshes block, std::array<LodCounts, 3> &counts) {
+        for (const auto &[zone, totals] : block.densities) builder_.countDensity(zone, totals);
         for (size_t l = 0; l < counts.size(); ++l) counts[l] += block.counts[l];
         if (block.ground.triangleCount() > 0) builder_.addWorldMesh(std::move(block.ground), objectId);
         for (auto &[mesh, id] : block.buildings) builder_.addWorldMesh(std::move(mesh), objectId, id);

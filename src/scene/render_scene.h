@@ -86,6 +86,22 @@ struct LodCounts {
     }
 };
 
+// Eq 1's densities of the lots a plan generator built, summed per BauNVO zone (Table 2), with
+// the zone's caps: for `veduta info`, which reports and does not judge (docs/slg.md).
+struct DensityTotals {
+    uint64_t lots = 0;
+    double lotArea = 0, footprintArea = 0, floorArea = 0;  // m²
+    double grzCap = 0, gfzCap = 0;
+    DensityTotals &operator+=(const DensityTotals &o) {
+        lots += o.lots;
+        lotArea += o.lotArea;
+        footprintArea += o.footprintArea;
+        floorArea += o.floorArea;
+        grzCap = o.grzCap, gfzCap = o.gfzCap;
+        return *this;
+    }
+};
+
 struct RenderScene {
     std::vector<BakedMesh> meshes;
     std::vector<Mesh> prototypes;
@@ -99,7 +115,8 @@ struct RenderScene {
     std::shared_ptr<const Textures> textures;  // null when no material has maps
     std::vector<BuildingRecord> buildings;     // one per building a generator made
     ModelEffort effort;
-    std::map<std::string, LodCounts> lods;  // by "generator/level", e.g. "slg/box"
+    std::map<std::string, LodCounts> lods;           // by "generator/level", e.g. "slg/box"
+    std::map<std::string, DensityTotals> densities;  // by BauNVO zone
 
     uint64_t effectiveTriangleCount() const;  // counting every instance's triangles
 };
@@ -130,6 +147,7 @@ class RenderSceneBuilder {
     uint64_t geometryBytesLeft() const;
 
     void countLod(const std::string &level, const LodCounts &counts);
+    void countDensity(const std::string &zone, const DensityTotals &totals) { scene_.densities[zone] += totals; }
     void recordBuilding(BuildingRecord record) { scene_.buildings.push_back(std::move(record)); }
     void addEffort(const ModelEffort &effort);
 

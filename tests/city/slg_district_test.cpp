@@ -111,6 +111,23 @@ TEST(SlgElement, TheGeometryBudgetTakesDetailFromTheFarthestBuildingsFirst) {
     EXPECT_LT(farthestRooms, length(Vec3f{350, 350, 0} - Vec3f{-50, -50, 30}));
 }
 
+// Eq 1 for every built lot, summed by its BauNVO zone beside Table 2's caps (veduta info).
+TEST(SlgElement, DensitiesAreReportedBesideTableTwo) {
+    SlgBuilt built = slgWithin(UINT64_MAX, kDistrict, {-50, -50, 30});
+    uint64_t lots = 0;
+    for (const auto &[zone, d] : built.scene.densities) {
+        SCOPED_TRACE(zone);
+        lots += d.lots;
+        EXPECT_GT(d.footprintArea / d.lotArea, 0.05);
+        EXPECT_LT(d.footprintArea / d.lotArea, 1.0);
+        EXPECT_GE(d.floorArea, d.footprintArea);
+    }
+    EXPECT_EQ(lots, buildings(built.scene)) << "every lot with a building has a zone";
+    ASSERT_EQ(built.scene.densities.count("Wohngebiet"), 1u);
+    EXPECT_EQ(built.scene.densities.at("Wohngebiet").grzCap, 0.4);  // Table 2
+    EXPECT_EQ(built.scene.densities.at("Wohngebiet").gfzCap, 1.2);
+}
+
 // A district of four quarters, each filled on a thread of its own when there are two.
 TEST(SlgElement, TheSameBitsOnAnyNumberOfThreads) {
     const char *large = R"(<slg level="district" outline="0 0 2100 0 2100 1900 0 1900" seed="3" )"
