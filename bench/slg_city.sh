@@ -3,9 +3,10 @@
 # buildings (a Berlin), each built and rendered as a 960 × 540 still from an aerial and a
 # street-level camera under a memory budget (VEDUTA_MAX_MEMORY: 1G, 4G and 16G), printing the
 # build's time, the whole command's time and peak RSS, and buildings, triangles and meshes per
-# level of detail (`veduta info`). A render that runs out of its budget exits 3 and is reported.
-# Usage: bench/slg_city.sh [VEDUTA_BINARY] [BUILDINGS...]   (default build/release/src/veduta;
-#        10000 100000 500000)
+# level of detail (`veduta info`); times and memory are the medians of RUNS runs (default 3).
+# A render that runs out of its budget exits 3 and is reported.
+# Usage: [RUNS=n] bench/slg_city.sh [VEDUTA_BINARY] [BUILDINGS...]   (default
+#        build/release/src/veduta; 10000 100000 500000)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 veduta=$(realpath "${1:-build/release/src/veduta}")
@@ -14,6 +15,8 @@ if (($# > 0)); then sizes=("$@"); else sizes=(10000 100000 500000); fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 tables=$PWD/rules/slg/urban-geography.xml
+runs=${RUNS:-3}
+median() { printf '%s\n' "$@" | sort -g | sed -n "$((($# + 1) / 2))p"; }
 
 # A district of side s metres holds about 2,130 buildings per km² (measured on 4 to 100 km²).
 side_for() { awk -v n="$1" 'BEGIN { printf "%d", sqrt(n / 2130) * 1000 }'; }
@@ -49,17 +52,21 @@ for n in "${sizes[@]}"; do
             echo "$n $camera: veduta info failed: $info"
             continue
         }
-        build=$( (/usr/bin/time -f 'wall %e rss_kb %M' env VEDUTA_MAX_MEMORY="$budget" "$veduta" render -q "$file" \
-            -o "$work/city-$n-$camera.exr" --png "$work/city-$n-$camera.png") 2>&1) && status=0 || status=$?
-        if ((status != 0)); then
-            echo "$n $camera: render exited $status: $(tail -n 3 <<<"$build")"
-            continue
-        fi
-        wall=$(awk '/^wall /{print $2}' <<<"$build")
-        rss=$(awk '/^wall /{print int($4 / 1024)}' <<<"$build")
-        # The build's share: `veduta info` builds the same scene and its BVH without rendering.
-        info_wall=$( (/usr/bin/time -f 'wall %e' env VEDUTA_MAX_MEMORY="$budget" "$veduta" info "$file" >/dev/null) 2>&1 |
-            awk '/^wall /{print $2}')
+        walls=() rsss=() infos=()
+        for ((run = 0; run < runs; ++run)); do
+            out=$( (/usr/bin/time -f 'wall %e rss_kb %M' env VEDUTA_MAX_MEMORY="$budget" "$veduta" render -q "$file" \
+                -o "$work/city-$n-$camera.exr" --png "$work/city-$n-$camera.png") 2>&1) && status=0 || status=$?
+            if ((status != 0)); then
+                echo "$n $camera: render exited $status: $(tail -n 3 <<<"$out")"
+                continue 2
+            fi
+            walls+=("$(awk '/^wall /{print $2}' <<<"$out")")
+            rsss+=("$(awk '/^wall /{print int($4 / 1024)}' <<<"$out")")
+            # The build's share: `veduta info` builds the same scene and its BVH without rendering.
+            infos+=("$( (/usr/bin/time -f 'wall %e' env VEDUTA_MAX_MEMORY="$budget" "$veduta" info "$file" \
+                >/dev/null) 2>&1 | awk '/^wall /{print $2}')")
+        done
+        wall=$(median "${walls[@]}") rss=$(median "${rsss[@]}") info_wall=$(median "${infos[@]}")
         render=$(awk -v a="$wall" -v b="$info_wall" 'BEGIN { printf "%.1f", a - b }')
         lods=$(awk -F': ' '/^lod /{sub(/^lod /, "", $1); gsub(/ buildings,| triangles,| meshes,| instances/, "", $2);
                               split($2, v, " "); printf "%s %s/%s/%s  ", $1, v[1], v[2], v[3]}' <<<"$info")
