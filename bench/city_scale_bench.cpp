@@ -48,20 +48,23 @@ const Grid &grid(int columns, int rows) {
     return *g;
 }
 
-// generateCity and the scene build, as `veduta info` times them for a scene of just this <city>.
-void BM_CityGrid(benchmark::State &state) {
+// generateCity and the scene build, as `veduta info` times them for a scene of just this <city>;
+// with `detail`, seen from its corner with seed 000's 300 m switch to boxes.
+void buildGrid(benchmark::State &state, const BuildingDetail &detail) {
     const Grid &g = grid(int(state.range(0)), int(state.range(1)));
     tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(state.range(2)));
     std::vector<Material> materials = gruenderzeitMaterials();
     uint32_t built = 0;
-    size_t instances = 0;
+    size_t instances = 0, boxes = 0, triangles = 0;
     for (auto _ : state) {
         RenderSceneBuilder builder;
         for (const Material &m : materials) builder.addMaterial(m);
         std::vector<std::string> warnings;
-        built = generateCity(g.city, kSeed, 1, builder, warnings);
+        built = generateCity(g.city, kSeed, 1, builder, warnings, nullptr, detail);
         RenderScene scene = std::move(builder).build();
         instances = scene.instances.size();
+        boxes = scene.lods.count("city/box") ? scene.lods.at("city/box").buildings : 0;
+        triangles = scene.effectiveTriangleCount();
         benchmark::DoNotOptimize(scene);
         // Freeing a city's gigabytes is no part of building it.
         state.PauseTiming();
@@ -70,7 +73,12 @@ void BM_CityGrid(benchmark::State &state) {
     }
     state.counters["buildings"] = built;
     state.counters["instances"] = double(instances);
+    state.counters["boxes"] = double(boxes);
+    state.counters["triangles"] = double(triangles);
 }
+
+void BM_CityGrid(benchmark::State &state) { buildGrid(state, {}); }
+void BM_CityGridCoarseBeyond300(benchmark::State &state) { buildGrid(state, {{0, 0, 1.7f}, 300.0f}); }
 
 // generateSlg and the scene build of one square district; arguments: side (m)/threads.
 void BM_SlgDistrict(benchmark::State &state) {
@@ -151,6 +159,7 @@ void gridRuns(benchmark::internal::Benchmark *b) {
         ->Iterations(1);
 }
 BENCHMARK(BM_CityGrid)->Apply(gridRuns);
+BENCHMARK(BM_CityGridCoarseBeyond300)->Args({32, 40, 2})->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 BENCHMARK(BM_GridStreets)->Apply(gridRuns);
 
 }  // namespace
