@@ -340,6 +340,12 @@ class SlgGenerator {
         for (size_t l = 0; l < counts.size(); ++l)
             if (counts[l].buildings > 0) builder_.countLod(levelName(BuildingLod(l)), counts[l]);
         for (size_t e = 0; e < descs_.size(); ++e) {
+            if (descs_[e].level == SlgDesc::Level::Atkis && land_->input.settlements.empty() &&
+                land_->input.footprints.empty())
+                warnings.push_back(
+                    fmt::format("{}: the <landscape>'s layers hold no settlement area (Objektart "
+                                "2101, 2111–2114) and no building footprint: nothing to build",
+                                descs_[e].loc.toString()));
             if (descs_[e].level == SlgDesc::Level::Atkis && land_->input.unusable > 0)
                 warnings.push_back(
                     fmt::format("{}: {} settlement areas and footprints left out: their outlines have "
