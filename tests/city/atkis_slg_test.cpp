@@ -11,6 +11,7 @@
 
 #include "assembly/build_scene.h"
 #include "city/atkis_slg_input.h"
+#include "esri_ascii_grid.h"
 #include "geo/edbs.h"
 #include "input_error.h"
 #include "shared_data.h"
@@ -46,14 +47,9 @@ class AtkisSlg : public ::testing::Test {
             fmt::format("veduta_atkis_slg_{}_{}", ::testing::UnitTest::GetInstance()->current_test_info()->name(),
                         getpid());
         fs::create_directories(dir_);
-        std::string asc =
-            fmt::format("ncols {}\nnrows {}\nxllcorner {}\nyllcorner {}\ncellsize {}\nNODATA_value -9999\n", kNodes,
-                        kNodes, kWest - kSpacing / 2, kSouth - kSpacing / 2, kSpacing);
-        for (int r = kNodes - 1; r >= 0; --r) {
-            for (int c = 0; c < kNodes; ++c) asc += fmt::format("{}{:.3f}", c ? " " : "", height(c * 10.0, r * 10.0));
-            asc += "\n";
-        }
-        std::ofstream(dir_ / "dgm.asc") << asc;
+        std::ofstream(dir_ / "dgm.asc") << test::esriAsciiGrid(
+            kNodes, kNodes, kWest, kSouth, kSpacing,
+            [](int c, int r) { return fmt::format("{:.3f}", height(c * 10.0, r * 10.0)); });
         // A residential area in the west; an industrial one in the east with two footprints.
         std::ofstream(dir_ / "areas.geojson") << fmt::format(
             R"({{"type": "FeatureCollection",

@@ -15,6 +15,7 @@
 #include "city/streets_on_terrain.h"
 #include "city/terrain_checks.h"
 #include "description/scene_description.h"
+#include "esri_ascii_grid.h"
 #include "geo/generate_landscape.h"
 #include "test_paths.h"
 
@@ -74,14 +75,8 @@ class CityOnTerrain : public ::testing::Test {
             fmt::format("veduta_city_terrain_{}_{}", ::testing::UnitTest::GetInstance()->current_test_info()->name(),
                         getpid());
         fs::create_directories(dir_);
-        std::string asc =
-            fmt::format("ncols {}\nnrows {}\nxllcorner {}\nyllcorner {}\ncellsize {}\nNODATA_value -9999\n", kNodes,
-                        kNodes, kWest - kSpacing / 2, kSouth - kSpacing / 2, kSpacing);
-        for (int r = kNodes - 1; r >= 0; --r) {
-            for (int c = 0; c < kNodes; ++c) asc += fmt::format("{}{:.3f}", c ? " " : "", height(c, r));
-            asc += "\n";
-        }
-        std::ofstream(dir_ / "dgm.asc") << asc;
+        std::ofstream(dir_ / "dgm.asc") << test::esriAsciiGrid(
+            kNodes, kNodes, kWest, kSouth, kSpacing, [](int c, int r) { return fmt::format("{:.3f}", height(c, r)); });
         // A forest over the north half and a meadow over the south, both across the streets.
         std::ofstream(dir_ / "areas.geojson") << R"({"type": "FeatureCollection",
  "crs": {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::25832"}},

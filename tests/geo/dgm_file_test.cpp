@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include "core/error.h"
+#include "esri_ascii_grid.h"
 #include "geo/no_data_fill.h"
 #include "geo/terrain_mesh.h"
 #include "geodesy/crs.h"
@@ -69,15 +70,9 @@ class DgmFileTest : public ::testing::Test {
     }
 
     fs::path writeAsc(const std::string &name, const SmallDgm &d) const {
-        std::string text =
-            fmt::format("ncols {}\nnrows {}\nxllcorner {}\nyllcorner {}\ncellsize {}\nNODATA_value -9999\n", d.columns,
-                        d.rows, d.west - d.spacing / 2, d.south - d.spacing / 2, d.spacing);
-        for (int r = d.rows - 1; r >= 0; --r) {
-            for (int c = 0; c < d.columns; ++c)
-                text += (c ? " " : "") + (d.text(c, r).empty() ? "-9999" : d.text(c, r));
-            text += "\n";
-        }
-        return write(name, text);
+        return write(name, test::esriAsciiGrid(d.columns, d.rows, d.west, d.south, d.spacing, [&](int c, int r) {
+                         return d.text(c, r).empty() ? std::string("-9999") : d.text(c, r);
+                     }));
     }
 
     // Written by GDAL itself, float32, north-up, EPSG:25832, no-data −9999.

@@ -14,6 +14,7 @@
 
 #include "assembly/build_scene.h"
 #include "city/plinth.h"
+#include "esri_ascii_grid.h"
 #include "geo/terrain_surface.h"
 #include "input_error.h"
 #include "test_paths.h"
@@ -36,14 +37,9 @@ class Landscape : public ::testing::Test {
         dir_ = fs::temp_directory_path() /
             fmt::format("veduta_land_{}_{}", ::testing::UnitTest::GetInstance()->current_test_info()->name(), getpid());
         fs::create_directories(dir_);
-        std::string asc =
-            fmt::format("ncols {}\nnrows {}\nxllcorner {}\nyllcorner {}\ncellsize {}\nNODATA_value -9999\n", kColumns,
-                        kRows, kWest - kSpacing / 2, kSouth - kSpacing / 2, kSpacing);
-        for (int r = kRows - 1; r >= 0; --r) {
-            for (int c = 0; c < kColumns; ++c) asc += fmt::format("{}{:.3f}", c ? " " : "", height(c, r));
-            asc += "\n";
-        }
-        write("dgm.asc", asc);
+        write("dgm.asc", test::esriAsciiGrid(kColumns, kRows, kWest, kSouth, kSpacing, [](int c, int r) {
+                  return fmt::format("{:.3f}", height(c, r));
+              }));
     }
     void TearDown() override { fs::remove_all(dir_); }
 
