@@ -1,15 +1,22 @@
 #include "slg/building_mesh.h"
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_triangulation_decomposition_2.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 
 #include "slg/ear_clipping.h"
 #include "slg/face_sides.h"
+#include "slg/stairs.h"
 
 namespace veduta {
 
 namespace {
+
+using Triangles2d = std::vector<std::array<Vec2d, 3>>;
 
 Vec3f at(Vec2d p, double z) { return {float(p.x), float(p.y), float(z)}; }
 
@@ -28,20 +35,20 @@ class MeshWriter {
         mesh_.triangleMaterials.push_back(material);
     }
 
-    // A vertical quad over the segment a → b from z0 to z1, facing to the right of a → b;
-    // u runs along it from `u0` metres, v up from the ground.
-    void wall(Vec2d a, Vec2d b, double z0, double z1, double u0, MaterialId material) {
-        float u1 = float(u0 + length(b - a));
+    // A vertical quad over the segment a → b from z0 to z1, facing to the right of a → b; u runs
+    // from u0 at a to u1 at b, v up from the ground.
+    void wall(Vec2d a, Vec2d b, double z0, double z1, double u0, double u1, MaterialId material) {
         Vec3f a0 = at(a, z0), b0 = at(b, z0), b1 = at(b, z1), a1 = at(a, z1);
-        Vec2f ua0{float(u0), float(z0)}, ub0{u1, float(z0)}, ub1{u1, float(z1)}, ua1{float(u0), float(z1)};
+        Vec2f ua0{float(u0), float(z0)}, ub0{float(u1), float(z0)}, ub1{float(u1), float(z1)},
+            ua1{float(u0), float(z1)};
         triangle(a0, b0, b1, ua0, ub0, ub1, material);
         triangle(a0, b1, a1, ua0, ub1, ua1, material);
     }
 
-    // A counter-clockwise polygon at height z, facing up, or down when `down`.
-    void polygon(const Polygon2d &ccw, double z, bool down, MaterialId material) {
-        for (auto [i, j, k] : clipEars(ccw)) {
-            Vec2d a = ccw[i], b = ccw[down ? k : j], c = ccw[down ? j : k];
+    // Counter-clockwise triangles at height z, facing up, or down when `down`.
+    void horizontal(const Triangles2d &triangles, double z, bool down, MaterialId material) {
+        for (auto [a, b, c] : triangles) {
+            if (down) std::swap(b, c);
             triangle(at(a, z), at(b, z), at(c, z), uvOf(a), uvOf(b), uvOf(c), material);
         }
     }
@@ -51,14 +58,77 @@ class MeshWriter {
     Mesh &mesh_;
 };
 
-double topOf(const BuildingPlan &plan, const BuildingShape &shape) {
-    return shape.base + plan.storeys * shape.storeyHeight;
+Triangles2d earTriangles(const Polygon2d &ccw) {
+    Triangles2d triangles;
+    for (auto [i, j, k] : clipEars(ccw)) triangles.push_back({ccw[i], ccw[j], ccw[k]});
+    return triangles;
 }
+
+// §3.4's ear clipping takes no holes, and a corridor may run round an apartment: its pieces go
+// through CGAL's constrained Delaunay triangulation of their rings, the faces inside kept. Two
+// exact corners of a piece can round to one point, a constraint from a vertex to itself that the
+// triangulation does not survive: such a point is kept once.
+Triangles2d pieceTriangles(const std::vector<Polygon2d> &piece) {
+    using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+    auto ring = [](const Polygon2d &points) {
+        CGAL::Polygon_2<Kernel> polygon;
+        for (size_t i = 0; i < points.size(); ++i)
+            if (points[i] != points[(i + 1) % points.size()]) polygon.push_back({points[i].x, points[i].y});
+        return polygon;
+    };
+    CGAL::Polygon_with_holes_2<Kernel> region(ring(piece.front()));
+    for (size_t h = 1; h < piece.size(); ++h) region.add_hole(ring(piece[h]));
+    std::vector<CGAL::Polygon_2<Kernel>> parts;
+    CGAL::Polygon_triangulation_decomposition_2<Kernel>()(region, std::back_inserter(parts));
+    auto point = [](const Kernel::Point_2 &p) { return Vec2d{p.x(), p.y()}; };
+    Triangles2d triangles;
+    for (const auto &t : parts) triangles.push_back({point(t.vertex(0)), point(t.vertex(1)), point(t.vertex(2))});
+    return triangles;
+}
+
+// Eq 35's tiled mapping: a wall from a to b whose u is `u0` metres at a and runs on along it, so
+// that the pieces cut from it (windows, a door) and the wall after it take the texture up where
+// it left off.
+struct WallRun {
+    Vec2d a, b;
+    double u0 = 0;
+
+    double length() const { return veduta::length(b - a); }
+    // Exactly a and b at the ends, so that neighbouring walls share their corners.
+    Vec2d point(double s) const {
+        double t = s / length();
+        return a * (1 - t) + b * t;
+    }
+};
+
+void piece(MeshWriter &out, const WallRun &wall, double s0, double s1, double z0, double z1, MaterialId material) {
+    out.wall(wall.point(s0), wall.point(s1), z0, z1, wall.u0 + s0, wall.u0 + s1, material);
+}
+
+// Walls round a closed loop, each facing to the right of the way round; u runs on from the first
+// point, its seam there.
+void wallLoop(MeshWriter &out, const Polygon2d &loop, double z0, double z1, MaterialId material) {
+    double u = 0;
+    for (size_t i = 0; i < loop.size(); ++i) {
+        WallRun wall{loop[i], loop[(i + 1) % loop.size()], u};
+        piece(out, wall, 0, wall.length(), z0, z1, material);
+        u += wall.length();
+    }
+}
+
+double floorOf(int storey, const BuildingShape &shape) { return shape.base + storey * shape.storeyHeight; }
+
+// A room's ceiling lies a slab below the next floor: under the top storey's flat roof it would
+// otherwise share the roof's plane.
+double ceilingOf(int storey, const BuildingShape &shape) { return floorOf(storey + 1, shape) - shape.slab; }
+
+double topOf(const BuildingPlan &plan, const BuildingShape &shape) { return floorOf(plan.storeys, shape); }
 
 void boxWalls(MeshWriter &out, const Polygon2d &footprint, const std::vector<size_t> &corners, double z0, double z1,
               MaterialId material) {
-    for (size_t c = 0; c < corners.size(); ++c)
-        out.wall(footprint[corners[c]], footprint[corners[(c + 1) % corners.size()]], z0, z1, 0, material);
+    Polygon2d sides;
+    for (size_t c : corners) sides.push_back(footprint[c]);
+    wallLoop(out, sides, z0, z1, material);
 }
 
 // §3.2's roofs: a gable (a wedge on four corners, its gables on the sides for eaves to the
@@ -88,100 +158,243 @@ void roof(MeshWriter &out, const Polygon2d &footprint, const std::vector<size_t>
                          at(apex, ridge), flat, flat, flat, material);
         return;
     }
-    out.polygon(footprint, z, false, material);
+    out.horizontal(earTriangles(footprint), z, false, material);
 }
 
-// One storey of a wall from a to b: windows centred as a group (plan_extension's rule), each a
-// sill, a pane and a lintel, wall between.
-void windowedWall(MeshWriter &out, Vec2d a, Vec2d b, double z0, const BuildingShape &shape,
-                  const BuildingMaterials &m) {
-    double total = length(b - a), z1 = z0 + shape.storeyHeight;
-    int n = windowsThatFit(shape.windows, total);
-    if (n == 0) {
-        out.wall(a, b, z0, z1, 0, m.wall);
-        return;
-    }
-    double spacing = shape.windows.arrangement == WindowArrangement::Contiguous ? 0 : shape.windows.spacing;
-    double width = shape.windows.width, group = n * width + (n - 1) * spacing;
-    Vec2d along = (b - a) * (1 / total);
-    auto point = [&](double s) { return a + along * s; };
-    double s = (total - group) / 2;
-    out.wall(a, point(s), z0, z1, 0, m.wall);
-    double sill = z0 + shape.sill, lintel = std::min(sill + shape.windowHeight, z1);
-    for (int i = 0; i < n; ++i) {
-        Vec2d p = point(s), q = point(s + width);
-        if (shape.sill > 0) out.wall(p, q, z0, sill, s, m.wall);
-        out.wall(p, q, sill, lintel, s, m.glass);
-        if (lintel < z1) out.wall(p, q, lintel, z1, s, m.wall);
-        s += width;
-        double next = i + 1 < n ? s + spacing : total;
-        if (next > s) out.wall(q, point(next), z0, z1, s, m.wall);
-        s = next;
-    }
+// A stretch along a wall, in metres from its start.
+struct Opening {
+    double from = 0, to = 0;
+};
+
+// The windows of the stretch [from, to] of a wall: centred in it as a group (plan_extension's
+// rule).
+std::vector<Opening> windowLayout(const WindowRule &rule, double from, double to) {
+    int n = windowsThatFit(rule, to - from);
+    double spacing = rule.arrangement == WindowArrangement::Contiguous ? 0 : rule.spacing;
+    double s = from + (to - from - (n * rule.width + (n - 1) * spacing)) / 2;
+    std::vector<Opening> windows;
+    for (int i = 0; i < n; ++i, s += rule.width + spacing) windows.push_back({s, s + rule.width});
+    return windows;
 }
 
 bool takesWindows(EdgeLocation location) { return location == EdgeLocation::Street || location == EdgeLocation::Gap; }
 
-// The outer walls storey by storey. On the ground floor the wall with the house door has it
-// where the plan's entrance is, and windows on either side of it.
+// The house door in footprint edge e on a storey: on the ground floor, where the plan's
+// entrance is, when the door fits in the edge.
+std::optional<Opening> houseDoor(const BuildingPlan &plan, const BuildingShape &shape, int storey, size_t e) {
+    const PlanShape &footprint = plan.placement.footprint;
+    Vec2d a = footprint.start(e), b = footprint.end(e);
+    double total = length(b - a), s = dot(plan.storey.entrance - a, b - a) / total;
+    Opening door{s - shape.doorWidth / 2, s + shape.doorWidth / 2};
+    if (storey != 0 || !takesWindows(footprint.locations[e]) || door.from <= 0 || door.to >= total ||
+        distanceToBoundary({a, b}, plan.storey.entrance) >= 1e-6)
+        return std::nullopt;
+    return door;
+}
+
+// The windows of footprint edge e on a storey, either side of the house door where it has it.
+std::vector<Opening> shellWindows(const BuildingPlan &plan, const BuildingShape &shape, int storey, size_t e) {
+    const PlanShape &footprint = plan.placement.footprint;
+    if (!takesWindows(footprint.locations[e])) return {};
+    double total = length(footprint.end(e) - footprint.start(e));
+    std::optional<Opening> door = houseDoor(plan, shape, storey, e);
+    if (!door) return windowLayout(shape.windows, 0, total);
+    std::vector<Opening> windows = windowLayout(shape.windows, 0, door->from);
+    std::ranges::copy(windowLayout(shape.windows, door->to, total), std::back_inserter(windows));
+    return windows;
+}
+
+// One storey of the stretch [from, to] of a wall with its windows: each a sill, a pane and a
+// lintel, wall between.
+void windowedWall(MeshWriter &out, const WallRun &wall, double from, double to, const std::vector<Opening> &windows,
+                  double z0, const BuildingShape &shape, const BuildingMaterials &m) {
+    double z1 = z0 + shape.storeyHeight, sill = z0 + shape.sill, lintel = std::min(sill + shape.windowHeight, z1);
+    double s = from;
+    for (const Opening &window : windows) {
+        if (window.from < from || window.to > to) continue;
+        if (window.from > s) piece(out, wall, s, window.from, z0, z1, m.wall);
+        if (shape.sill > 0) piece(out, wall, window.from, window.to, z0, sill, m.wall);
+        piece(out, wall, window.from, window.to, sill, lintel, m.glass);
+        if (lintel < z1) piece(out, wall, window.from, window.to, lintel, z1, m.wall);
+        s = window.to;
+    }
+    if (to > s) piece(out, wall, s, to, z0, z1, m.wall);
+}
+
+// The outer walls storey by storey, u running on round each storey from the footprint's first
+// point. On the ground floor the wall with the house door has it where the plan's entrance is,
+// and windows on either side of it; the door is a motif of its own, its u from 0.
 void storeyWalls(MeshWriter &out, const BuildingPlan &plan, const BuildingShape &shape, const BuildingMaterials &m) {
     const PlanShape &footprint = plan.placement.footprint;
     for (int storey = 0; storey < plan.storeys; ++storey) {
-        double z0 = shape.base + storey * shape.storeyHeight;
+        double z0 = floorOf(storey, shape), z1 = z0 + shape.storeyHeight, u = 0;
         for (size_t e = 0; e < footprint.size(); ++e) {
-            Vec2d a = footprint.start(e), b = footprint.end(e);
-            if (!takesWindows(footprint.locations[e])) {
-                out.wall(a, b, z0, z0 + shape.storeyHeight, 0, m.wall);
-                continue;
-            }
-            double s = dot(plan.storey.entrance - a, b - a) / length(b - a);
-            bool door = storey == 0 && distanceToBoundary({a, b}, plan.storey.entrance) < 1e-6 &&
-                s - shape.doorWidth / 2 > 0 && s + shape.doorWidth / 2 < length(b - a);
+            WallRun wall{footprint.start(e), footprint.end(e), u};
+            double total = wall.length();
+            u += total;
+            std::vector<Opening> windows = shellWindows(plan, shape, storey, e);
+            std::optional<Opening> door = houseDoor(plan, shape, storey, e);
             if (!door) {
-                windowedWall(out, a, b, z0, shape, m);
+                windowedWall(out, wall, 0, total, windows, z0, shape, m);
                 continue;
             }
-            Vec2d along = (b - a) * (1 / length(b - a));
-            Vec2d p = a + along * (s - shape.doorWidth / 2), q = a + along * (s + shape.doorWidth / 2);
-            double top = std::min(z0 + shape.doorHeight, z0 + shape.storeyHeight);
-            windowedWall(out, a, p, z0, shape, m);
-            out.wall(p, q, z0, top, 0, m.door);
-            out.wall(p, q, top, z0 + shape.storeyHeight, 0, m.wall);
-            windowedWall(out, q, b, z0, shape, m);
+            double top = std::min(z0 + shape.doorHeight, z1);
+            windowedWall(out, wall, 0, door->from, windows, z0, shape, m);
+            out.wall(wall.point(door->from), wall.point(door->to), z0, top, 0, shape.doorWidth, m.door);
+            piece(out, wall, door->from, door->to, top, z1, m.wall);
+            windowedWall(out, wall, door->to, total, windows, z0, shape, m);
         }
     }
 }
 
-// §3.5's interiors: each room's floor, ceiling and walls, the walls facing into the room; a
-// room stands the whole wall thickness inside the shell and half of it from its neighbours.
-void rooms(MeshWriter &out, const BuildingPlan &plan, const BuildingShape &shape, const BuildingMaterials &m) {
+// A flight up from z0: each step its riser, facing down the flight, and its tread.
+void stairs(MeshWriter &out, const Flight &flight, double z0, MaterialId material) {
+    for (int i = 0; i < flight.risers; ++i) {
+        Polygon2d step = tread(flight, i);
+        double lower = z0 + i * flight.riser, upper = z0 + (i + 1) * flight.riser;
+        out.wall(step[3], step[0], lower, upper, 0, flight.width, material);
+        out.horizontal(earTriangles(step), upper, false, material);
+    }
+}
+
+// A room's wall from a to b with holes where windows of the shell lie behind it: each hole lined
+// by its reveal, the wall's thickness round the window between the wall and the glass, `out`
+// from the wall to the shell.
+void wallWithHoles(MeshWriter &out, const WallRun &wall, const std::vector<Opening> &holes, double z0, double z1,
+                   double sill, double lintel, Vec2d outward, MaterialId material) {
+    double s = 0;
+    for (const Opening &hole : holes) {
+        piece(out, wall, s, hole.from, z0, z1, material);
+        piece(out, wall, hole.from, hole.to, z0, sill, material);
+        piece(out, wall, hole.from, hole.to, lintel, z1, material);
+        Vec2d p = wall.point(hole.from), q = wall.point(hole.to);
+        double depth = length(outward);
+        out.wall(p, p + outward, sill, lintel, 0, depth, material);
+        out.wall(q + outward, q, sill, lintel, 0, depth, material);
+        Triangles2d reveal = earTriangles({p, q, q + outward, p + outward});
+        out.horizontal(reveal, sill, false, material);
+        out.horizontal(reveal, lintel, true, material);
+        s = hole.to;
+    }
+    piece(out, wall, s, wall.length(), z0, z1, material);
+}
+
+// The walls of a room on a storey, up to z1, facing into it, u running on round it. Where a wall
+// runs inside the shell, the shell's windows on that storey leave holes in it, so that the room
+// shows through the glass (§3.5) rather than the back of its wall.
+void roomWalls(MeshWriter &out, const SpaceFloor &floor, const BuildingPlan &plan, const BuildingShape &shape,
+               int storey, double z1, MaterialId material) {
     const PlanShape &shell = plan.placement.footprint;
-    auto onShell = [&](Vec2d a, Vec2d b) {
-        return distanceToBoundary(shell.points, a) < 1e-6 && distanceToBoundary(shell.points, b) < 1e-6 &&
-            distanceToBoundary(shell.points, (a + b) * 0.5) < 1e-6;
-    };
-    for (const ApartmentPlan &apartment : plan.storey.apartments) {
-        for (const PlanShape &room : apartment.rooms) {
-            std::vector<double> inset;
-            for (size_t e = 0; e < room.size(); ++e)
-                inset.push_back(onShell(room.start(e), room.end(e)) ? shape.wallThickness : shape.wallThickness / 2);
-            auto inner = moveEdges(room, inset, EdgeLocation::NeighbourRoom);
-            if (!inner) continue;  // a room narrower than its walls
-            const Polygon2d &floor = inner->shape.points;
-            for (int storey = 0; storey < plan.storeys; ++storey) {
-                // The ceiling lies a slab below the next floor: under the top storey's flat roof
-                // it would otherwise share the roof's plane.
-                double z0 = shape.base + storey * shape.storeyHeight, z1 = z0 + shape.storeyHeight - shape.slab;
-                out.polygon(floor, z0, false, m.interior);
-                out.polygon(floor, z1, true, m.interior);
-                for (size_t i = 0; i < floor.size(); ++i)
-                    out.wall(floor[(i + 1) % floor.size()], floor[i], z0, z1, 0, m.interior);
-            }
+    double z0 = floorOf(storey, shape), sill = z0 + shape.sill;
+    double lintel = std::min(sill + shape.windowHeight, z0 + shape.storeyHeight);
+    size_t n = floor.points.size();
+    double u = 0;
+    // Counter-clockwise edge k runs as its shell edge does; the wall facing in goes the other way.
+    for (size_t k = n; k-- > 0;) {
+        WallRun wall{floor.points[(k + 1) % n], floor.points[k], u};
+        u += wall.length();
+        std::vector<Opening> holes;
+        Vec2d along = normalized(wall.b - wall.a);
+        if (std::optional<size_t> e = floor.shellEdges[k]) {
+            Vec2d start = shell.start(*e), direction = normalized(shell.end(*e) - start);
+            double at = dot(wall.a - start, direction);
+            if (std::abs(cross(along, direction)) < 1e-9)
+                for (const Opening &window : shellWindows(plan, shape, storey, *e)) {
+                    Opening hole{std::max(at - window.to, 0.0), std::min(at - window.from, wall.length())};
+                    if (hole.to > hole.from) holes.insert(holes.begin(), hole);
+                }
         }
+        wallWithHoles(out, wall, holes, z0, z1, sill, lintel, leftNormal(along) * shape.wallThickness, material);
+    }
+}
+
+// §3.5's interiors: a room's floor, ceiling and walls on every storey, the walls facing into it.
+// The stairwell, where its flight fits, is open from the ground floor's floor to the top
+// storey's ceiling as the thesis draws it (§3.2: a floor only at the bottom, a ceiling only at
+// the top): each flight stands over the one below, so a floor on the storeys between would be cut
+// where that one comes up, and the shaft's walls run on through the slabs between storeys to
+// close it. A flight goes up from every storey but the top.
+void room(MeshWriter &out, const SpaceFloor &floor, bool stairwell, const BuildingPlan &plan,
+          const BuildingShape &shape, MaterialId material) {
+    Triangles2d triangles = earTriangles(floor.points);
+    std::optional<Flight> flight = stairwell ? straightFlight(floor.points, shape.storeyHeight) : std::nullopt;
+    for (int storey = 0; storey < plan.storeys; ++storey) {
+        bool up = flight && storey + 1 < plan.storeys, fromBelow = flight && storey > 0;
+        double z0 = floorOf(storey, shape), z1 = up ? floorOf(storey + 1, shape) : ceilingOf(storey, shape);
+        if (!fromBelow) out.horizontal(triangles, z0, false, material);
+        if (!up) out.horizontal(triangles, z1, true, material);
+        roomWalls(out, floor, plan, shape, storey, z1, material);
+        if (up) stairs(out, *flight, z0, material);
+    }
+}
+
+void rooms(MeshWriter &out, const BuildingPlan &plan, const BuildingShape &shape, MaterialId material) {
+    for (const ApartmentPlan &apartment : plan.storey.apartments)
+        for (size_t r = 0; r < apartment.rooms.size(); ++r)
+            if (auto floor = insideWalls(apartment.rooms[r], plan.placement.footprint, shape.wallThickness))
+                room(out, *floor, apartment.stairwell == r, plan, shape, material);
+}
+
+// A face grown by half a wall all round: the space beside it keeps clear of that. The face
+// itself where growing it folds.
+PlanShape withWalls(const PlanShape &face, double wallThickness) {
+    auto grown = moveEdges(face, std::vector<double>(face.size(), -wallThickness / 2), EdgeLocation::NeighbourRoom);
+    return grown ? std::move(grown->shape) : face;
+}
+
+// What `faces` leave of `outline`, inside the walls: the outline moved in as a room's, less the
+// faces with their walls.
+void addCorridor(const PlanShape &outline, const std::vector<PlanShape> &faces, const PlanShape &shell,
+                 double wallThickness, Triangles2d &triangles) {
+    auto inside = insideWalls(outline, shell, wallThickness);
+    if (!inside) return;
+    std::vector<PlanShape> walled;
+    for (const PlanShape &face : faces) walled.push_back(withWalls(face, wallThickness));
+    for (const std::vector<Polygon2d> &piece : corridorPieces(inside->points, walled))
+        std::ranges::copy(pieceTriangles(piece), std::back_inserter(triangles));
+}
+
+// §3.5's floors and ceilings of the corridors on every storey, as the rooms': the house
+// corridor is what the apartments leave of the footprint, an apartment's corridor what its
+// rooms leave of it.
+void corridors(MeshWriter &out, const BuildingPlan &plan, const BuildingShape &shape, MaterialId material) {
+    const PlanShape &shell = plan.placement.footprint;
+    Triangles2d triangles;
+    std::vector<PlanShape> apartments;
+    for (const ApartmentPlan &apartment : plan.storey.apartments) {
+        apartments.push_back(apartment.outline);
+        addCorridor(apartment.outline, apartment.rooms, shell, shape.wallThickness, triangles);
+    }
+    addCorridor(shell, apartments, shell, shape.wallThickness, triangles);
+    for (int storey = 0; storey < plan.storeys; ++storey) {
+        out.horizontal(triangles, floorOf(storey, shape), false, material);
+        out.horizontal(triangles, ceilingOf(storey, shape), true, material);
     }
 }
 
 }  // namespace
+
+std::optional<size_t> shellEdgeUnder(const PlanShape &shell, Vec2d a, Vec2d b) {
+    for (size_t e = 0; e < shell.size(); ++e) {
+        Polygon2d edge{shell.start(e), shell.end(e)};
+        if (distanceToBoundary(edge, a) < 1e-6 && distanceToBoundary(edge, b) < 1e-6) return e;
+    }
+    return std::nullopt;
+}
+
+std::optional<SpaceFloor> insideWalls(const PlanShape &space, const PlanShape &shell, double wallThickness) {
+    std::vector<std::optional<size_t>> under;
+    std::vector<double> inset;
+    for (size_t e = 0; e < space.size(); ++e) {
+        under.push_back(shellEdgeUnder(shell, space.start(e), space.end(e)));
+        inset.push_back(under.back() ? wallThickness : wallThickness / 2);
+    }
+    auto inner = moveEdges(space, inset, EdgeLocation::NeighbourRoom);
+    if (!inner) return std::nullopt;
+    SpaceFloor floor{std::move(inner->shape.points), {}};
+    for (size_t source : inner->source) floor.shellEdges.push_back(under[source]);
+    return floor;
+}
 
 Mesh buildingMesh(const BuildingPlan &plan, const BuildingShape &shape, BuildingLod lod,
                   const BuildingMaterials &materials) {
@@ -193,9 +406,12 @@ Mesh buildingMesh(const BuildingPlan &plan, const BuildingShape &shape, Building
     double top = topOf(plan, shape);
     if (lod == BuildingLod::Box) boxWalls(out, footprint, corners, shape.base, top, materials.wall);
     else storeyWalls(out, plan, shape, materials);
-    if (lod == BuildingLod::Rooms) rooms(out, plan, shape, materials);
+    if (lod == BuildingLod::Rooms) {
+        rooms(out, plan, shape, materials.interior);
+        corridors(out, plan, shape, materials.interior);
+    }
     roof(out, footprint, corners, shape, top, materials.roof);
-    return mesh;
+    return weldVertices(mesh);
 }
 
 }  // namespace veduta

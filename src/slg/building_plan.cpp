@@ -52,10 +52,12 @@ PlanLosses lossesOf(const CorridorPlan &plan) { return {0, 0, plan.unreached, pl
 
 // A face of a level subdivided, its faces moved back for the corridor from the door at a landmark
 // on its edges of `doorLocation`; a face the rules give fewer than two landmarks stays whole
-// (L1228).
+// (L1228). The subdivision stays for the floor-plan extension: its border faces come first and
+// in the order of `faces`, so an index into its faces is one into these.
 struct LevelFaces {
     std::vector<PlanShape> faces;
     Vec2d door;
+    Subdivision subdivision;
 };
 
 LevelFaces planLevel(const PlanShape &outline, PlanLevel level, const PlanParameters &parameters,
@@ -64,11 +66,29 @@ LevelFaces planLevel(const PlanShape &outline, PlanLevel level, const PlanParame
     Subdivision s = subdivide(outline.points, outline.locations, parameters, random, limits);
     labelEdges(s, level);
     losses += lossesOf(s);
-    if (s.borderFaces().empty()) return {{outline}, vertexMean(outline.points)};
+    if (s.borderFaces().empty()) return {{outline}, vertexMean(outline.points), std::move(s)};
     SlgNodeId door = doorLandmark(s, doorLocation);
     CorridorPlan plan = makeCorridor(s, door, corridor);
     losses += lossesOf(plan);
-    return {std::move(plan.faces), s.graph.position(door)};
+    Vec2d entrance = s.graph.position(door);  // before s moves into the result
+    return {std::move(plan.faces), entrance, std::move(s)};
+}
+
+// The building's stairwell: of the rooms each apartment's rule allows, the smallest (the first
+// of equal ones), as insertStairwell compares them, before the corridor took its strips.
+struct StairwellChoice {
+    size_t apartment = 0, room = 0;
+    double area = 0;
+};
+
+void offerStairwell(Subdivision &rooms, size_t apartment, int storeys, const StairwellRule &rule,
+                    std::optional<StairwellChoice> &best) {
+    // The stair door it cuts into the subdivision goes no further: the plan keeps no inner doors.
+    std::optional<size_t> room = insertStairwell(rooms, storeys, rule);
+    if (!room) return;
+    double area = signedArea(rooms.graph.polygon(rooms.faces[*room].path));
+    if (best && area >= best->area) return;
+    best = StairwellChoice{apartment, *room, area};
 }
 
 // The storey's plan of a building whose footprint is placed: apartments round the house
@@ -85,13 +105,16 @@ void planStoreys(BuildingPlan &plan, const BuildingPlanParameters &p, uint32_t s
     if (depth == PlanDepth::Entrance) return;
 
     CorridorParameters inner{CorridorKind::Apartment, p.apartmentCorridorWidth, p.doorWidth};
+    std::optional<StairwellChoice> stairwell;
     for (size_t i = 0; i < storey.faces.size(); ++i) {
         // A storey of one apartment has no house corridor: its door is the house door.
         EdgeLocation doorSide = storey.faces.size() > 1 ? EdgeLocation::HouseCorridor : entranceSide;
         LevelFaces rooms = planLevel(storey.faces[i], PlanLevel::Apartment, p.apartment, inner, doorSide,
                                      planRandom(seed, identity, kApartmentPlan, uint32_t(i)), p.limits, plan.losses);
-        plan.storey.apartments.push_back({std::move(storey.faces[i]), std::move(rooms.faces), rooms.door});
+        offerStairwell(rooms.subdivision, i, p.storeys, p.stairwell, stairwell);
+        plan.storey.apartments.push_back({std::move(storey.faces[i]), std::move(rooms.faces), rooms.door, {}});
     }
+    if (stairwell) plan.storey.apartments[stairwell->apartment].stairwell = stairwell->room;
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // A building planned down to its rooms (digest-003 §1 and §2.2, L802–829, L1946–1950): on a
 // lot, the sidewalk and the footprint; the footprint subdivided into apartments round a house
 // corridor from the entrance; each apartment into rooms round its own corridor from its door.
-// The ground floor's plan is every storey's (the thesis copies it upward).
+// The ground floor's plan is every storey's (the thesis copies it upward), the stairwell's too.
 #pragma once
 
 #include <cstdint>
@@ -10,6 +10,7 @@
 
 #include "slg/building_placement.h"
 #include "slg/corridors.h"
+#include "slg/plan_extension.h"
 #include "slg/plan_parameters.h"
 
 namespace veduta {
@@ -18,6 +19,9 @@ struct ApartmentPlan {
     PlanShape outline;             // after the house corridor took its strip
     std::vector<PlanShape> rooms;  // the apartment corridor is what they leave of it (corridorPieces)
     Vec2d door;                    // the landmark its corridor starts at
+    // The building's stairwell (L2009–2020) when it is one of these rooms: an index into them.
+    // One apartment of a storey at most holds it, the same room on every storey.
+    std::optional<size_t> stairwell;
 };
 
 struct StoreyPlan {
@@ -50,6 +54,7 @@ struct BuildingPlanParameters {
     PlanParameters apartment;  // Table 16
     double houseCorridorWidth = 1.5, apartmentCorridorWidth = 1.5;
     double doorWidth = 1.0;       // a door from a corridor into an apartment or a room must fit
+    StairwellRule stairwell;      // in a building of kStairwellMinimumStoreys or more
     bool entranceAtRear = false;  // eq 58: a shop or restaurant on the ground floor has the street
     int storeys = 1;
     SearchLimits limits;

@@ -13,6 +13,7 @@ std::optional<LotBuilding> lotBuilding(const UrbanGeography &geography, const Lo
     p.apartment = planParameters(geography, PlanLevel::Apartment);
     p.houseCorridorWidth = p.storey.gapWidth;
     p.apartmentCorridorWidth = p.apartment.gapWidth;
+    p.stairwell.minimumArea = geography.stairwellArea;
     p.sidewalkWidth = sidewalkWidth(geography, random);
 
     PlacementParameters &placement = p.placement;

@@ -64,6 +64,14 @@ bool goesStraightOn(Vec2d p, Vec2d q, Vec2d r) {
     return dot(u, v) > 0 && std::abs(cross(u, v)) <= kRounding * length(u) * length(v);
 }
 
+size_t longestEdge(const Polygon2d &polygon) {
+    auto edge = [&](size_t i) { return length(polygon[(i + 1) % polygon.size()] - polygon[i]); };
+    size_t longest = 0;
+    for (size_t i = 1; i < polygon.size(); ++i)
+        if (edge(i) > edge(longest)) longest = i;
+    return longest;
+}
+
 std::vector<size_t> turningPoints(const Polygon2d &polygon) {
     std::vector<size_t> corners;
     size_t n = polygon.size();

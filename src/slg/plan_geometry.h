@@ -37,6 +37,8 @@ Turn turnAt(Vec2d p, Vec2d q, Vec2d r);
 bool goesStraightOn(Vec2d p, Vec2d q, Vec2d r);
 // The indices of the points where a polygon turns (not goesStraightOn), in order.
 std::vector<size_t> turningPoints(const Polygon2d &polygon);
+// The index of the point that starts the polygon's longest edge (the first of equal ones).
+size_t longestEdge(const Polygon2d &polygon);
 // Whether the corner at points[i] of a counter-clockwise polygon is reflex (turns right).
 bool isReflexCorner(const Polygon2d &ccw, size_t i);
 

@@ -8,11 +8,7 @@
 namespace veduta {
 
 std::vector<Polygon2d> quarters(const Polygon2d &outline, double side, double street) {
-    size_t longest = 0;
-    for (size_t i = 1; i < outline.size(); ++i)
-        if (length(outline[(i + 1) % outline.size()] - outline[i]) >
-            length(outline[(longest + 1) % outline.size()] - outline[longest]))
-            longest = i;
+    size_t longest = longestEdge(outline);
     Vec2d origin = outline[longest];
     Vec2d u = normalized(outline[(longest + 1) % outline.size()] - origin), v = leftNormal(u);
     double lowU = 0, highU = 0, lowV = 0, highV = 0;

@@ -1,13 +1,18 @@
 // Buildings as meshes at their levels of detail (digest-003 §3.2–3.5, §8.2): the ear clipping's
 // n − 2 counter-clockwise triangles, 14 triangles for the coarsest gable house on four corners,
-// outward normals, a closed shell, and a four-storey house with its rooms under about 3,000.
+// outward normals, a closed shell, a four-storey house with its rooms under about 3,000, shared
+// corners, wall textures that run on round a storey, corridor floors where the rooms leave the
+// storey, and the stairs in the stairwell.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
+#include <set>
 #include <tuple>
 
 #include "slg/building_mesh.h"
 #include "slg/ear_clipping.h"
+#include "slg/stairs.h"
 #include "slg/thesis_levels.h"
 
 namespace veduta {
@@ -116,7 +121,8 @@ TEST(BuildingMesh, PointsOnTheSidesMakeNoMoreWallsAtTheCoarsestLevel) {
     expectOutward(tent, footprint);
 }
 
-TEST(BuildingMesh, AFourStoreyHouseWithItsRoomsStaysUnderThreeThousandTriangles) {
+// A terraced house of four storeys on a lot between two neighbours, planned down to its rooms.
+std::optional<BuildingPlan> fourStoreyHouse() {
     PlanShape lot{{{0, 0}, {14, 0}, {14, 40}, {0, 40}},
                   {EdgeLocation::Street, EdgeLocation::NeighbourArea, EdgeLocation::Gap, EdgeLocation::NeighbourArea}};
     BuildingPlanParameters p;
@@ -126,7 +132,11 @@ TEST(BuildingMesh, AFourStoreyHouseWithItsRoomsStaysUnderThreeThousandTriangles)
     p.storey = storeyLevel();
     p.apartment = apartmentLevel();
     p.storeys = 4;
-    auto plan = planBuilding(lot, fourSides(lot.points, 1), p, 1, 7);
+    return planBuilding(lot, fourSides(lot.points, 1), p, 1, 7);
+}
+
+TEST(BuildingMesh, AFourStoreyHouseWithItsRoomsStaysUnderThreeThousandTriangles) {
+    auto plan = fourStoreyHouse();
     ASSERT_TRUE(plan);
     BuildingMaterials m{1, 2, 3, 4, 5};
     BuildingShape shape;
@@ -150,6 +160,251 @@ TEST(BuildingMesh, AFourStoreyHouseWithItsRoomsStaysUnderThreeThousandTriangles)
     EXPECT_GT(count(rooms, 5), 0);
     std::cout << "four storeys: " << box.triangleCount() << " (box), " << storeys.triangleCount() << " (storeys), "
               << rooms.triangleCount() << " (rooms) triangles\n";
+}
+
+double areaOf(const Mesh &mesh, size_t t) { return length(normalOf(mesh, t)) / 2; }
+
+Vec3f corner(const Mesh &mesh, size_t t, int k) { return mesh.positions[mesh.indices[3 * t + size_t(k)]]; }
+
+// The mesh with three corners of its own for every triangle, as it was before welding.
+// The distance along a ray to triangle t, if it meets it (Möller and Trumbore).
+std::optional<float> hitDistance(const Mesh &mesh, size_t t, Vec3f origin, Vec3f direction) {
+    Vec3f a = mesh.positions[mesh.indices[3 * t]], b = mesh.positions[mesh.indices[3 * t + 1]],
+          c = mesh.positions[mesh.indices[3 * t + 2]];
+    Vec3f e1 = b - a, e2 = c - a, p = cross(direction, e2);
+    float det = dot(e1, p);
+    if (std::abs(det) < 1e-9f) return std::nullopt;
+    Vec3f s = origin - a, q = cross(s, e1);
+    float u = dot(s, p) / det, v = dot(direction, q) / det, d = dot(e2, q) / det;
+    if (u < 0 || v < 0 || u + v > 1 || d <= 0) return std::nullopt;
+    return d;
+}
+
+// §3.5: at the nearest level a room shows through the glass. Looking in through the middle of
+// every window, the first surface behind the pane lies deeper than the wall: the room's far
+// side, not the back of its own wall.
+TEST(BuildingMesh, EveryWindowLooksIntoItsRoom) {
+    auto plan = fourStoreyHouse();
+    ASSERT_TRUE(plan);
+    BuildingShape shape;
+    MaterialId glass = 2, interior = 5;
+    Mesh mesh = buildingMesh(*plan, shape, BuildingLod::Rooms, {1, glass, 3, 4, interior});
+    int windows = 0;
+    for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+        if (mesh.triangleMaterials[t] != glass) continue;
+        Vec3f inward = normalize(normalOf(mesh, t)) * -1.0f;
+        Vec3f centre = (mesh.positions[mesh.indices[3 * t]] + mesh.positions[mesh.indices[3 * t + 1]] +
+                        mesh.positions[mesh.indices[3 * t + 2]]) *
+            (1.0f / 3);
+        float nearest = 1e30f;
+        for (size_t other = 0; other < mesh.triangleCount(); ++other)
+            if (mesh.triangleMaterials[other] == interior)
+                if (auto d = hitDistance(mesh, other, centre, inward)) nearest = std::min(nearest, *d);
+        EXPECT_GT(nearest, shape.wallThickness + 0.5) << "pane triangle " << windows;
+        ++windows;
+    }
+    EXPECT_GE(windows, 4 * 2 * 2);
+}
+
+Mesh unwelded(const Mesh &mesh) {
+    Mesh soup;
+    for (uint32_t i : mesh.indices) {
+        soup.indices.push_back(uint32_t(soup.positions.size()));
+        soup.positions.push_back(mesh.positions[i]);
+        soup.uvs.push_back(mesh.uvs[i]);
+    }
+    soup.triangleMaterials = mesh.triangleMaterials;
+    return soup;
+}
+
+TEST(BuildingMesh, PiecesShareTheirCornersAndNoTriangleIsLost) {
+    auto plan = fourStoreyHouse();
+    ASSERT_TRUE(plan);
+    BuildingShape shape;
+    shape.roof = RoofKind::Flat;
+    Mesh mesh = buildingMesh(*plan, shape, BuildingLod::Storeys, {1, 2, 3, 4, 5});
+    // Unwelded, every triangle has three corners of its own; a quad's two triangles share two,
+    // and the quads of a wall, its windows and the storeys above their edges.
+    EXPECT_LT(mesh.vertexCount(), mesh.triangleCount());
+    EXPECT_EQ(weldVertices(unwelded(mesh)).vertexCount(), mesh.vertexCount()) << "nothing left to merge";
+    // Every triangle keeps three corners, and together they are the walls of every storey and
+    // the flat roof: welding merged corners only.
+    double area = 0;
+    for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+        const uint32_t *i = &mesh.indices[3 * t];
+        EXPECT_TRUE(i[0] != i[1] && i[1] != i[2] && i[2] != i[0]) << t;
+        EXPECT_GT(areaOf(mesh, t), 0) << t;
+        area += areaOf(mesh, t);
+    }
+    const PlanShape &footprint = plan->placement.footprint;
+    double perimeter = 0;
+    for (size_t e = 0; e < footprint.size(); ++e) perimeter += footprint.edgeLength(e);
+    double expected = perimeter * plan->storeys * shape.storeyHeight + signedArea(footprint.points);
+    EXPECT_NEAR(area, expected, 1e-5 * expected);
+}
+
+TEST(BuildingMesh, TheWallTextureRunsOnRoundTheCorners) {
+    Polygon2d footprint = {{0, 0}, {10, 0}, {10, 12}, {0, 12}};
+    Mesh mesh = buildingMesh(boxPlan(footprint, 2), {}, BuildingLod::Storeys, {1, 2, 3, 4, 5});
+    // u is the way walked round the storey from point 0, so both walls at a corner agree there;
+    // at point 0 itself the last wall ends the perimeter on (the seam).
+    std::vector<std::set<float>> expected = {{0, 44}, {10}, {22}, {32}};
+    for (size_t c = 0; c < footprint.size(); ++c) {
+        std::set<float> us;
+        std::set<std::pair<float, float>> walls;  // their outward directions
+        for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+            Vec3f n = normalOf(mesh, t);
+            if (mesh.triangleMaterials[t] != 1) continue;  // the walls', not the gables'
+            for (int k = 0; k < 3; ++k) {
+                Vec3f p = corner(mesh, t, k);
+                if (p.x != float(footprint[c].x) || p.y != float(footprint[c].y)) continue;
+                us.insert(mesh.uvs[mesh.indices[3 * t + size_t(k)]].x);
+                Vec3f out = normalize(n);
+                walls.insert({std::round(out.x), std::round(out.y)});
+            }
+        }
+        EXPECT_EQ(walls.size(), 2u) << c;
+        EXPECT_EQ(us, expected[c]) << c;
+    }
+}
+
+using Triangle2 = std::array<Vec2d, 3>;
+
+Triangle2 flat(const Mesh &mesh, size_t t) {
+    Triangle2 out;
+    for (int k = 0; k < 3; ++k) out[size_t(k)] = {corner(mesh, t, k).x, corner(mesh, t, k).y};
+    return out;
+}
+
+// Two triangles overlap in more than a rounding when no side of either separates them.
+bool overlap(const Triangle2 &a, const Triangle2 &b) {
+    constexpr double kRounding = 1e-5;
+    for (const Triangle2 *t : {&a, &b})
+        for (size_t i = 0; i < 3; ++i) {
+            Vec2d side = (*t)[(i + 1) % 3] - (*t)[i];
+            if (length(side) == 0) return false;
+            Vec2d n = normalized(leftNormal(side));
+            auto [aLow, aHigh] = std::ranges::minmax({dot(a[0], n), dot(a[1], n), dot(a[2], n)});
+            auto [bLow, bHigh] = std::ranges::minmax({dot(b[0], n), dot(b[1], n), dot(b[2], n)});
+            if (aHigh <= bLow + kRounding || bHigh <= aLow + kRounding) return false;
+        }
+    return true;
+}
+
+// The upward triangles of a mesh at height z, as the plan sees them.
+std::vector<Triangle2> floorAt(const Mesh &mesh, double z) {
+    std::vector<Triangle2> floor;
+    for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+        Vec3f n = normalOf(mesh, t);
+        bool level = std::ranges::all_of(std::array{0, 1, 2}, [&](int k) { return corner(mesh, t, k).z == float(z); });
+        if (level && n.z > 0) floor.push_back(flat(mesh, t));
+    }
+    return floor;
+}
+
+double areaOf(const Triangle2 &t) { return cross(t[1] - t[0], t[2] - t[0]) / 2; }
+
+TEST(BuildingMesh, TheCorridorsFloorWhatTheRoomsLeaveOfAStorey) {
+    auto plan = fourStoreyHouse();
+    ASSERT_TRUE(plan);
+    BuildingShape shape;
+    Mesh mesh = buildingMesh(*plan, shape, BuildingLod::Rooms, {1, 2, 3, 4, 5});
+    std::vector<Triangle2> floor = floorAt(mesh, shape.base);
+    double area = 0;
+    for (size_t i = 0; i < floor.size(); ++i) {
+        area += areaOf(floor[i]);
+        for (size_t j = 0; j < i; ++j) EXPECT_FALSE(overlap(floor[i], floor[j])) << i << " " << j;
+    }
+    // The spaces of the plan — the rooms, the apartments' corridors, the house corridor — each
+    // lose a strip inside their walls: the wall thickness t along the shell, t/2 elsewhere. On a
+    // plan of right angles the strips of a space's sides add up to what it loses but at its
+    // corners, where two strips overlap (a convex corner, counted twice) or leave a square
+    // between them (a reflex one): at most t² a corner either way.
+    const PlanShape &shell = plan->placement.footprint;
+    double t = shape.wallThickness, strips = 0;
+    size_t corners = 0;
+    auto addSpace = [&](const Polygon2d &ring) {
+        for (size_t e = 0; e < ring.size(); ++e) {
+            Vec2d a = ring[e], b = ring[(e + 1) % ring.size()];
+            bool onShell = distanceToBoundary(shell.points, a) < 1e-6 && distanceToBoundary(shell.points, b) < 1e-6 &&
+                distanceToBoundary(shell.points, (a + b) * 0.5) < 1e-6;
+            strips += (onShell ? t : t / 2) * length(b - a);
+        }
+        corners += turningPoints(ring).size();
+    };
+    std::vector<PlanShape> outlines;
+    double corridors = 0;
+    auto addCorridor = [&](const Polygon2d &outline, const std::vector<PlanShape> &faces) {
+        for (const auto &piece : corridorPieces(outline, faces))
+            for (const Polygon2d &ring : piece) {
+                addSpace(ring);
+                corridors += signedArea(ring);
+            }
+    };
+    for (const ApartmentPlan &apartment : plan->storey.apartments) {
+        outlines.push_back(apartment.outline);
+        for (const PlanShape &room : apartment.rooms) addSpace(room.points);
+        addCorridor(apartment.outline.points, apartment.rooms);
+    }
+    addCorridor(shell.points, outlines);
+    double walls = signedArea(shell.points) - area, slack = double(corners) * t * t;
+    EXPECT_NEAR(walls, strips, slack);
+    EXPECT_GT(corridors, 2 * slack) << "the bound would not see the corridors missing";
+    std::cout << "ground floor: " << area << " m² of " << signedArea(shell.points) << " m², walls " << walls
+              << " m² against strips of " << strips << " ± " << slack << " m², corridors " << corridors << " m²\n";
+}
+
+TEST(BuildingMesh, TheStairwellClimbsFromEveryStoreyButTheTop) {
+    auto plan = fourStoreyHouse();
+    ASSERT_TRUE(plan);
+    BuildingShape shape;
+    shape.roof = RoofKind::Flat;
+    std::optional<Polygon2d> well;
+    for (const ApartmentPlan &apartment : plan->storey.apartments)
+        if (apartment.stairwell)
+            if (auto floor =
+                    insideWalls(apartment.rooms[*apartment.stairwell], plan->placement.footprint, shape.wallThickness))
+                well = floor->points;
+    ASSERT_TRUE(well);
+    auto flight = straightFlight(*well, shape.storeyHeight);
+    ASSERT_TRUE(flight);
+
+    Mesh mesh = buildingMesh(*plan, shape, BuildingLod::Rooms, {1, 2, 3, 4, 5});
+    double top = shape.base + plan->storeys * shape.storeyHeight;
+    std::vector<float> treads, ceilings;
+    int floors = 0, risers = 0;
+    for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+        Vec3f a = corner(mesh, t, 0), b = corner(mesh, t, 1), c = corner(mesh, t, 2), n = normalOf(mesh, t);
+        Vec2d middle = centreOf(mesh, t);
+        if (sideOf(*well, middle) != Side::Inside || std::max({a.z, b.z, c.z}) >= float(top)) continue;
+        for (int k = 0; k < 3; ++k)
+            EXPECT_LE(distanceOutside(*well, {corner(mesh, t, k).x, corner(mesh, t, k).y}), 1e-5);
+        float low = std::min({a.z, b.z, c.z}), high = std::max({a.z, b.z, c.z});
+        if (n.z < 0) ceilings.push_back(low);
+        else if (n.z > 0 && low == float(shape.base)) ++floors;
+        else if (n.z > 0) treads.push_back(low);
+        else if (std::abs(high - low - flight->riser) < 1e-5) {
+            ++risers;
+            EXPECT_LT(dot(Vec2d{n.x, n.y}, flight->up), 0) << "a riser faces down the flight";
+        }
+    }
+    // The ground floor's floor and the top storey's ceiling, each the room in n − 2 triangles;
+    // between them nothing across the shaft but the steps, a tread and a riser each.
+    int flights = plan->storeys - 1, triangles = int(well->size()) - 2;
+    EXPECT_EQ(floors, triangles);
+    EXPECT_EQ(ceilings.size(), size_t(triangles));
+    for (float z : ceilings) EXPECT_NEAR(z, top - shape.slab, 1e-5);
+    EXPECT_EQ(risers, 2 * flight->risers * flights);
+    std::vector<float> expected;
+    for (int storey = 0; storey < flights; ++storey)
+        for (int step = 1; step <= flight->risers; ++step)
+            for (int k = 0; k < 2; ++k)
+                expected.push_back(float(shape.base + storey * shape.storeyHeight + step * flight->riser));
+    std::ranges::sort(treads);
+    ASSERT_EQ(treads.size(), expected.size());
+    for (size_t i = 0; i < treads.size(); ++i) EXPECT_NEAR(treads[i], expected[i], 1e-5) << i;
+    // Each flight's last tread is the next floor.
+    EXPECT_NEAR(treads.back(), shape.base + flights * shape.storeyHeight, 1e-5);
 }
 
 }  // namespace

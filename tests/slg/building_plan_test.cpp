@@ -92,6 +92,37 @@ TEST(BuildingPlan, TheSameSeedAndIdentityGiveTheSamePlanAndAnotherIdentityAnothe
     EXPECT_NE(points(4), points(5));
 }
 
+// The stairwell of every plan: (apartment, room) for each apartment that holds it.
+std::vector<std::pair<size_t, size_t>> stairwells(const BuildingPlan &plan) {
+    std::vector<std::pair<size_t, size_t>> found;
+    for (size_t a = 0; a < plan.storey.apartments.size(); ++a)
+        if (auto room = plan.storey.apartments[a].stairwell) found.emplace_back(a, *room);
+    return found;
+}
+
+TEST(BuildingPlan, AHouseOfTwoStoreysOrMoreHasOneStairwellOnTheHouseCorridor) {
+    PlanShape face = lot(14, 40);
+    BuildingPlanParameters p = thesisBuilding();
+    auto plan = planBuilding(face, fourSides(face.points, 1), p, 1, 7);
+    ASSERT_TRUE(plan);
+    auto found = stairwells(*plan);
+    ASSERT_EQ(found.size(), 1u) << "one stairwell for the building";
+    auto [a, r] = found.front();
+    const ApartmentPlan &apartment = plan->storey.apartments[a];
+    ASSERT_LT(r, apartment.rooms.size());
+    // L2018: its door opens to the house corridor.
+    EXPECT_GT(std::ranges::count(apartment.rooms[r].locations, EdgeLocation::HouseCorridor), 0);
+
+    auto again = planBuilding(face, fourSides(face.points, 1), p, 1, 7);
+    EXPECT_EQ(stairwells(*again), found);
+    EXPECT_EQ(again->storey.apartments[a].rooms[r].points, apartment.rooms[r].points);
+
+    p.storeys = kStairwellMinimumStoreys;
+    EXPECT_EQ(stairwells(*planBuilding(face, fourSides(face.points, 1), p, 1, 7)), found);
+    p.storeys = kStairwellMinimumStoreys - 1;
+    EXPECT_TRUE(stairwells(*planBuilding(face, fourSides(face.points, 1), p, 1, 7)).empty());
+}
+
 TEST(BuildingPlan, EveryLotOfABlockIsPlannedDownToItsRooms) {
     Polygon2d outline = {{0, 0}, {100, 0}, {100, 80}, {0, 80}};
     Subdivision block = subdivide(outline, std::vector<EdgeLocation>(4, EdgeLocation::Street), blockLevel(175),
@@ -106,6 +137,7 @@ TEST(BuildingPlan, EveryLotOfABlockIsPlannedDownToItsRooms) {
         ++planned;
         losses += plan->losses;
         expectCovering(*plan);
+        EXPECT_LE(stairwells(*plan).size(), 1u);
     }
     EXPECT_GE(planned, int(block.borderFaces().size()) - 2);
     EXPECT_EQ(losses.unreached, 0);

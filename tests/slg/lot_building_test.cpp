@@ -27,6 +27,15 @@ TEST(LotBuilding, OpenLandHasNoBuilding) {
     EXPECT_FALSE(lotBuilding(shipped(), {weights(0, 10, 0, 0, 0, 90), Locality::Rand, {}}, 1, 1));
 }
 
+// Table 12's stairwell area reaches the plan's stairwell rule.
+TEST(LotBuilding, TheStairwellTakesTheTablesArea) {
+    UrbanGeography geography = shipped();
+    geography.stairwellArea = 7.5;
+    auto building = lotBuilding(geography, {weights(0, 100, 0, 0, 0, 0), Locality::Mantel, {}}, 1, 1);
+    ASSERT_TRUE(building);
+    EXPECT_EQ(building->parameters.stairwell.minimumArea, 7.5);
+}
+
 TEST(LotBuilding, AShopOnTheGroundFloorPutsTheHouseDoorAtTheBack) {
     // Kern, mostly shops with housing above: eq 62 gives the ground floor to Einzelhandel.
     int rear = 0;
