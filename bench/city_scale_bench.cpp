@@ -49,7 +49,8 @@ const Grid &grid(int columns, int rows) {
 }
 
 // generateCity and the scene build, as `veduta info` times them for a scene of just this <city>;
-// with `detail`, seen from its corner with seed 000's 300 m switch to boxes.
+// with `detail`, seen from its corner with seed 000's 300 m switch to boxes (and the default
+// switch for buildings under 8 pixels high).
 void buildGrid(benchmark::State &state, const BuildingDetail &detail) {
     const Grid &g = grid(int(state.range(0)), int(state.range(1)));
     tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(state.range(2)));
@@ -78,7 +79,13 @@ void buildGrid(benchmark::State &state, const BuildingDetail &detail) {
 }
 
 void BM_CityGrid(benchmark::State &state) { buildGrid(state, {}); }
-void BM_CityGridCoarseBeyond300(benchmark::State &state) { buildGrid(state, {{0, 0, 1.7f}, 300.0f}); }
+// At eye height on the grid's corner, looking along its diagonal.
+void BM_CityGridCoarseBeyond300(benchmark::State &state) {
+    Camera camera;
+    camera.position = {0, 0, 1.7f};
+    camera.lookAt = {100, 100, 1.7f};
+    buildGrid(state, {camera, CoarseRule{300.0f}});
+}
 
 // generateSlg and the scene build of one square district; arguments: side (m)/threads.
 void BM_SlgDistrict(benchmark::State &state) {

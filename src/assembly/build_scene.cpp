@@ -114,7 +114,7 @@ class SceneAssembler {
         for (const CityGmlDesc &gml : d_.cityGml)
             within(gml.loc, "<citygml>", [&] {
                 generateCityGml(
-                    gml, d_.georeference, builder_,
+                    gml, d_.georeference, camera, builder_,
                     [&](const std::filesystem::path &image) {
                         return texture({image, "", gml.fileLoc});
                     },
@@ -129,7 +129,7 @@ class SceneAssembler {
         for (size_t i = 0; i < d_.cities.size(); ++i) {
             within(d_.cities[i].loc, elementName(d_.cities[i]), [&] {
                 generateCity(d_.cities[i], cities[i], seedOf(d_.cities[i].seed), landscape ? &*landscape : nullptr,
-                             builder_, warnings_, camera.position);
+                             builder_, warnings_, camera);
             });
         }
         if (textures_) builder_.setTextures(textures_);

@@ -1,6 +1,7 @@
 #include "city/citygml_buildings.h"
 
 #include <algorithm>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <utility>
@@ -11,6 +12,7 @@
 #include "core/error.h"
 #include "core/hash.h"
 #include "geodesy/map_projection.h"
+#include "slg/ear_clipping.h"
 
 namespace veduta {
 
@@ -147,6 +149,129 @@ ModelEffort effortOf(const CityGmlBuilding &building) {
     return effort;
 }
 
+// The first untextured material of a polygon of this kind, else the kind's own: what a box
+// takes for its walls and roof.
+MaterialId boxMaterial(const CityGmlBuilding &building, SurfaceKind kind, AppearanceMaterials &materials,
+                       RenderSceneBuilder &builder) {
+    for (const CityGmlPolygon &polygon : building.polygons)
+        if (polygon.kind == kind && polygon.texture.empty()) return materials.of(polygon).first;
+    return builder.findOrAddMaterial(cityGmlMaterial(kind));
+}
+
+// The coarse level of a building: each outline of its footprint raised from its ground to half
+// way between its eaves and its ridge (a gable roof's mean height), with a flat top; none for a
+// building without a footprint (it is drawn as the file has it).
+std::optional<Mesh> boxMesh(const CityGmlBuilding &building, const MapProjection &projection, MaterialId wall,
+                            MaterialId roof) {
+    BuildingMeasures m = measureBuilding(building);
+    if (m.footprint.empty()) return std::nullopt;
+    double top = (m.eaves + m.ridge) / 2;
+    Mesh mesh;
+    for (const std::vector<CrsCoordinate> &outline : m.footprint) {
+        Polygon2d plan;
+        auto first = uint32_t(mesh.positions.size());
+        for (const CrsCoordinate &p : outline) {
+            Vec3f low = projection.toRender({p.x, p.y, m.ground}), high = projection.toRender({p.x, p.y, top});
+            mesh.positions.insert(mesh.positions.end(), {low, high});
+            plan.push_back({low.x, low.y});
+        }
+        auto n = uint32_t(outline.size());
+        for (uint32_t i = 0; i < n; ++i) {
+            uint32_t a = first + 2 * i, b = first + 2 * ((i + 1) % n);
+            mesh.indices.insert(mesh.indices.end(), {a, b, b + 1, a, b + 1, a + 1});
+            mesh.triangleMaterials.insert(mesh.triangleMaterials.end(), 2, wall);
+        }
+        for (auto [i, j, k] : clipEars(plan)) {
+            mesh.indices.insert(mesh.indices.end(), {first + 2 * i + 1, first + 2 * j + 1, first + 2 * k + 1});
+            mesh.triangleMaterials.push_back(roof);
+        }
+    }
+    return mesh;
+}
+
+// A building of the file as it will be drawn: how far from the camera and whether as a box.
+struct PlacedBuilding {
+    const CityGmlBuilding *building = nullptr;
+    Mesh mesh;                // as the file has it
+    std::optional<Mesh> box;  // when drawn coarse
+    float distance = 0;
+};
+
+uint64_t bytesOf(const PlacedBuilding &b) {
+    return (b.box ? b.box->triangleCount() : b.mesh.triangleCount()) * kBytesPerTriangle;
+}
+
+// The buildings the element's coarse rule picks are boxes; past the builder's geometry budget,
+// the farthest become boxes too (ties in file order), with a warning.
+void chooseDetail(std::vector<PlacedBuilding> &placed, const CityGmlDesc &desc, const Camera &camera,
+                  const MapProjection &projection, AppearanceMaterials &materials, RenderSceneBuilder &builder,
+                  std::vector<std::string> &warnings) {
+    auto coarsen = [&](PlacedBuilding &b) {
+        MaterialId wall = boxMaterial(*b.building, SurfaceKind::Wall, materials, builder);
+        MaterialId roof = boxMaterial(*b.building, SurfaceKind::Roof, materials, builder);
+        b.box = boxMesh(*b.building, projection, wall, roof);
+        return b.box.has_value();
+    };
+    uint64_t expected = 0;
+    for (PlacedBuilding &b : placed) {
+        Vec3f low(std::numeric_limits<float>::max()), high(-std::numeric_limits<float>::max());
+        for (const Vec3f &p : b.mesh.positions) {
+            low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
+            high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
+        }
+        if (b.mesh.positions.empty()) continue;
+        b.distance = length((low + high) * 0.5f - camera.position);
+        if (desc.coarse.isCoarse(camera, low, high)) coarsen(b);
+        expected += bytesOf(b);
+    }
+    uint64_t budget = builder.geometryBytesLeft();
+    if (expected <= budget) return;
+    std::vector<PlacedBuilding *> order;
+    for (PlacedBuilding &b : placed) order.push_back(&b);
+    std::stable_sort(order.begin(), order.end(),
+                     [](const PlacedBuilding *a, const PlacedBuilding *b) { return a->distance > b->distance; });
+    size_t coarsened = 0;
+    for (PlacedBuilding *b : order) {
+        if (expected <= budget) break;
+        if (b->box) continue;
+        expected -= bytesOf(*b);
+        coarsened += coarsen(*b) ? 1 : 0;
+        expected += bytesOf(*b);
+    }
+    warnings.push_back(fmt::format(
+        "{}: the buildings would take more than the geometry budget of {:.1f} GB; {} of them drawn as boxes{}",
+        desc.loc.toString(), double(budget) / double(1ull << 30), coarsened,
+        expected > budget ? ", and even so they do not fit" : ""));
+}
+
+// Each building in full as a mesh of its own with its building id; the boxes in one mesh
+// together, which keeps their records but not their ids.
+void addBuildings(std::vector<PlacedBuilding> &placed, const CityGmlDesc &desc, const MapProjection &projection,
+                  RenderSceneBuilder &builder) {
+    LodCounts file, boxes;
+    Mesh merged;
+    for (PlacedBuilding &b : placed) {
+        LodCounts &counts = b.box ? boxes : file;
+        ++counts.buildings;
+        counts.triangles += b.box ? b.box->triangleCount() : b.mesh.triangleCount();
+        if (b.box) {
+            ++counts.merged;
+            merged.append(*b.box, Transform());
+        } else {
+            ++counts.meshes;
+            builder.addWorldMesh(std::move(b.mesh), desc.objectId, cityGmlBuildingId(b.building->id));
+        }
+        builder.recordBuilding(recordOf(*b.building, projection));
+        builder.addEffort(effortOf(*b.building));
+    }
+    if (merged.triangleCount() > 0) {
+        ++boxes.meshes;
+        builder.addWorldMesh(std::move(merged), desc.objectId);
+    }
+    if (file.buildings > 0) builder.countLod("citygml/file", file);
+    if (boxes.buildings > 0) builder.countLod("citygml/box", boxes);
+}
+
 }  // namespace
 
 Material cityGmlMaterial(SurfaceKind kind) {
@@ -191,7 +316,7 @@ int cityGmlEpsg(const CityGmlDesc &desc, const CityGmlModel &model) {
     return desc.epsg;
 }
 
-uint32_t generateCityGml(const CityGmlDesc &desc, const std::optional<Georeference> &georeference,
+uint32_t generateCityGml(const CityGmlDesc &desc, const std::optional<Georeference> &georeference, const Camera &camera,
                          RenderSceneBuilder &builder, const AddTexture &addTexture,
                          std::vector<std::string> &warnings) {
     CityGmlModel model;
@@ -209,26 +334,24 @@ uint32_t generateCityGml(const CityGmlDesc &desc, const std::optional<Georeferen
                                      epsg, envelopeCentre(model)));
     MapProjection projection(crsByEpsg(epsg), *georeference);
     AppearanceMaterials materials(builder, addTexture);
-    uint32_t placed = 0;
+    std::vector<PlacedBuilding> placed;
     for (const CityGmlBuilding &building : model.buildings) {
         if (desc.bbox && !centreWithin(building, projection, *desc.bbox, desc.loc)) continue;
-        builder.addWorldMesh(buildingMesh(building, projection, desc.loc, materials), desc.objectId,
-                             cityGmlBuildingId(building.id));
-        builder.recordBuilding(recordOf(building, projection));
-        builder.addEffort(effortOf(building));
-        ++placed;
+        placed.push_back({&building, buildingMesh(building, projection, desc.loc, materials), std::nullopt, 0});
     }
+    chooseDetail(placed, desc, camera, projection, materials, builder, warnings);
+    addBuildings(placed, desc, projection, builder);
     materials.warnUnread(warnings);
     if (desc.bbox)
         warnings.push_back(fmt::format("{}: the bbox keeps {} of the file's {} buildings", desc.bboxLoc.toString(),
-                                       placed, model.buildings.size()));
+                                       placed.size(), model.buildings.size()));
     if (model.buildings.empty())
         warnings.push_back(fmt::format(
             "{}: {} draws nothing: it holds {} building(s) with no polygon of LoD {} to {} and {} other city "
             "object(s), which veduta does not draw",
             desc.loc.toString(), desc.file.string(), model.buildingsWithoutGeometry, desc.minLod, desc.maxLod,
             model.otherObjects));
-    return placed;
+    return uint32_t(placed.size());
 }
 
 }  // namespace veduta

@@ -36,12 +36,15 @@ using AddTexture = std::function<TextureId(const std::filesystem::path &image)>;
 // Reads the element's file and adds each building (within the element's bbox, when it has
 // one: a warning says how many it keeps) as a world mesh with the element's object
 // id and cityGmlBuildingId, its coordinates placed through the georeference in double
-// (geodesy/map_projection.h). Polygons take the file's ParameterizedTexture (its image through
-// `addTexture`) or X3DMaterial colour when it gives one, else cityGmlMaterial of their kind; an
-// image that cannot be read is said once, with how many polygons go without it. The reader's warnings, and one when the
-// file holds no building to draw (saying how many objects it read and why), are appended. Returns how many buildings it
-// added. Throws InputError (the scene needs a georeference).
-uint32_t generateCityGml(const CityGmlDesc &desc, const std::optional<Georeference> &georeference,
+// (geodesy/map_projection.h). A building the element's coarse rule picks seen from `camera`
+// (or, past the builder's geometry budget, the farthest first, with a warning) is
+// a box instead: its footprint raised to its mean roof height, flat-topped, in one mesh with the
+// other boxes (its record stays, its building id does not). Polygons take the file's ParameterizedTexture (its image
+// through `addTexture`) or X3DMaterial colour when it gives one, else cityGmlMaterial of their kind; an image that
+// cannot be read is said once, with how many polygons go without it. The reader's warnings, and one when the file holds
+// no building to draw (saying how many objects it read and why), are appended. Returns how many buildings it added.
+// Throws InputError (the scene needs a georeference).
+uint32_t generateCityGml(const CityGmlDesc &desc, const std::optional<Georeference> &georeference, const Camera &camera,
                          RenderSceneBuilder &builder, const AddTexture &addTexture, std::vector<std::string> &warnings);
 
 }  // namespace veduta

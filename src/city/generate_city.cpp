@@ -257,19 +257,32 @@ double expectedBytes(const PlannedBuilding &p, uint32_t seed) {
     return perimeter * randomiseHeights(p.spec.settings, seed, p.spec.id).building * kFacadeBytesPerSquareMetre;
 }
 
-// Buildings beyond coarse_beyond are boxes. The rest keep their facades while the budget
-// lasts; past it the farthest become boxes first (ties in lot order, so the choice is always
-// the same), and the warning says how many.
+// The box a building fills: its footprint's bounds from its base up to its height.
+std::pair<Vec3f, Vec3f> boundsOf(const PlannedBuilding &p, uint32_t seed) {
+    const Footprint &footprint = p.spec.footprint;
+    Vec3f low{1e30f, 1e30f, footprint.base}, high{-1e30f, -1e30f, footprint.base};
+    for (Vec2f q : footprint.points) {
+        low.x = std::min(low.x, q.x), low.y = std::min(low.y, q.y);
+        high.x = std::max(high.x, q.x), high.y = std::max(high.y, q.y);
+    }
+    high.z += randomiseHeights(p.spec.settings, seed, p.spec.id).building;
+    return {low, high};
+}
+
+// The buildings the coarse rule picks are boxes. The rest keep their facades while the budget
+// lasts; past it the farthest become boxes first (ties in lot order, so the choice is always the
+// same), and the warning says how many. Farthest rather than smallest in the image: a facade's
+// detail, its windows and mouldings, is alike on every building.
 void chooseDetail(std::vector<PlannedBuilding> &planned, uint32_t seed, const BuildingDetail &detail,
                   const RenderSceneBuilder &builder, const FileLoc &loc, std::vector<std::string> &warnings) {
-    std::vector<float> distance(planned.size());
+    std::vector<float> distance(planned.size(), 0.0f);
     double expected = 0;
     for (size_t i = 0; i < planned.size(); ++i) {
-        BuildingSpec &spec = planned[i].spec;
-        Vec2f middle;
-        for (Vec2f p : spec.footprint.points) middle = middle + p * (1.0f / float(spec.footprint.points.size()));
-        distance[i] = length(Vec3f{middle.x, middle.y, spec.footprint.base} - detail.camera);
-        spec.coarse = detail.coarseBeyond && distance[i] > *detail.coarseBeyond;
+        if (detail.camera) {
+            auto [low, high] = boundsOf(planned[i], seed);
+            distance[i] = length((low + high) * 0.5f - detail.camera->position);
+            planned[i].spec.coarse = detail.coarse.isCoarse(*detail.camera, low, high);
+        }
         expected += expectedBytes(planned[i], seed);
     }
     double budget = double(builder.geometryBytesLeft());
@@ -547,9 +560,9 @@ std::vector<Vec3f> groundJunctions(const CityData &data, const LandscapeGround *
 }
 
 uint32_t generateCity(const CityDesc &city, const SceneCity &read, uint32_t seed, const LandscapeGround *landscape,
-                      RenderSceneBuilder &builder, std::vector<std::string> &out, const Vec3f &camera) {
+                      RenderSceneBuilder &builder, std::vector<std::string> &out, const Camera &camera) {
     return withWarnings(out, [&](std::vector<std::string> &warnings) {
-        uint32_t built = buildCity(read.data, seed, city.objectId, city.fileLoc, landscape, {camera, city.coarseBeyond},
+        uint32_t built = buildCity(read.data, seed, city.objectId, city.fileLoc, landscape, {camera, city.coarse},
                                    builder, warnings);
         if (read.upperLevels.empty()) return built;
         return built +

@@ -50,16 +50,17 @@ SceneCity readCity(const CityDesc &city, const std::optional<Georeference> &geor
 // renormalised, two buildings of one id …) are appended once each as "file:line:col: message";
 // errors throw InputError.
 //
-// Seen from `detail.camera`, a building farther than `detail.coarseBeyond` is one plain quad a
-// wall and its roof (seed 000's switch at 300 m); while the builder's geometry budget lasts
-// the others keep their facades, past it the farthest lose them first, with a warning.
-// Distant buildings share one mesh.
+// Seen from `detail.camera`, a building the coarse rule picks (too few pixels high, or beyond
+// coarse_beyond) is one plain quad a wall and its roof; while the builder's geometry budget
+// lasts the others keep their facades, past it the farthest lose them first, with
+// a warning. Distant buildings share one mesh. Without a camera every building keeps its
+// facades while the budget lasts.
 struct BuildingDetail {
-    Vec3f camera;
-    std::optional<float> coarseBeyond;  // <city coarse_beyond>; none: by the budget alone
+    std::optional<Camera> camera;
+    CoarseRule coarse;
 };
 uint32_t generateCity(const CityDesc &city, const SceneCity &read, uint32_t seed, const LandscapeGround *landscape,
-                      RenderSceneBuilder &builder, std::vector<std::string> &warnings, const Vec3f &camera);
+                      RenderSceneBuilder &builder, std::vector<std::string> &warnings, const Camera &camera);
 // The same for a city made in memory (as the benchmark does); errors about the city as a
 // whole (no rule file) have no place in a file.
 uint32_t generateCity(const CityData &data, uint32_t seed, ObjectId objectId, RenderSceneBuilder &builder,

@@ -22,8 +22,6 @@ namespace {
 // Purposes of the generator's own draws under a building's identity.
 enum Draw : uint32_t { kRoof = 0x534c5246u, kRoofSize = 0x534c5253u };  // "SLRF", "SLRS"
 
-constexpr double kStoreyHeight = 3;  // BuildingShape's
-
 struct SlgMaterials {
     BuildingMaterials building;
     MaterialId street = 0, block = 0, sidewalk = 0;
@@ -241,7 +239,7 @@ struct SlgLot {
     uint32_t identity = 0;
     LandUseWeights weights{};
     LotBuilding building;
-    float distance = 0;  // from the camera to the lot's middle at half the building's height
+    float distance = 0;  // from the camera to the middle of its building's box
     BuildingLod lod = BuildingLod::Box;
 };
 
@@ -252,10 +250,11 @@ struct BlockLots {
 
 // What a level of detail is expected to cost, for the budget: triangles per storey at the two
 // finer levels and per building as a box (Table 17's 14 for a gable on four corners), each the
-// mean over the 8,639 buildings of a 2 × 2 km district plus a tenth (189, 98 and 14.2).
+// mean plus a tenth: storeys 98 and boxes 14.2 over the 8,639 buildings of a 2 × 2 km district;
+// rooms 394, with corridors, stairs and the windows' reveals, over the 1,109 of a 700 m one.
 double expectedTriangles(BuildingLod lod, int storeys) {
     switch (lod) {
-    case BuildingLod::Rooms: return 210.0 * storeys;
+    case BuildingLod::Rooms: return 435.0 * storeys;
     case BuildingLod::Storeys: return 110.0 * storeys;
     case BuildingLod::Box: return 16;
     }
@@ -291,9 +290,9 @@ struct BlockMeshes {
 };
 
 // Every <slg> of a scene in four steps: the districts cut into blocks; the blocks into lots on
-// all cores; a level of detail for each lot's building, from its distance and the geometry
-// budget; the buildings planned and built on all cores. Blocks are added in their order, so the
-// scene is the same for any number of threads.
+// all cores; a level of detail for each lot's building, from its size in the image, its
+// distance and the geometry budget; the buildings planned and built on all cores. Blocks are added in their order, so
+// the scene is the same for any number of threads.
 class SlgGenerator {
   public:
     SlgGenerator(const std::vector<SlgDesc> &descs, const std::vector<uint32_t> &seeds, const Camera &camera,
@@ -409,13 +408,9 @@ class SlgGenerator {
                 continue;
             }
             const Polygon2d &outline = footprint->outline;
-            size_t longest = 0;
-            for (size_t i = 1; i < outline.size(); ++i)
-                if (length(outline[(i + 1) % outline.size()] - outline[i]) >
-                    length(outline[(longest + 1) % outline.size()] - outline[longest]))
-                    longest = i;
             PlanShape shape{outline, std::vector<EdgeLocation>(outline.size(), EdgeLocation::Street)};
-            std::rotate(shape.points.begin(), shape.points.begin() + std::ptrdiff_t(longest), shape.points.end());
+            std::rotate(shape.points.begin(), shape.points.begin() + std::ptrdiff_t(longestEdge(outline)),
+                        shape.points.end());
             SlgLot lot{std::move(shape), true, 0, 1, identity, weights, std::move(*building)};
             place(block, lot);
             out.lots.push_back(std::move(lot));
@@ -424,7 +419,7 @@ class SlgGenerator {
     }
 
     // The ground a lot stands on (the terrain's lowest point under it, or the element's base),
-    // and the level of detail its distance from the camera asks for.
+    // and the level of detail its size in the image and its distance from the camera ask for.
     void place(const SlgBlock &block, SlgLot &lot) const {
         const SlgDesc &desc = descs_[block.element];
         lot.base = desc.base;
@@ -433,17 +428,25 @@ class SlgGenerator {
             for (Vec2d p : lot.shape.points) points.push_back({float(p.x), float(p.y)});
             lot.base = land_->ground(points).value_or(desc.base);
         }
-        Vec2d c = vertexMean(lot.shape.points);
-        double height = lot.building.parameters.storeys * kStoreyHeight;
-        lot.distance = length(Vec3f{float(c.x), float(c.y), float(lot.base + height / 2)} - camera_.position);
-        lot.lod = lot.distance < desc.rooms ? BuildingLod::Rooms
-            : lot.distance < desc.storeys   ? BuildingLod::Storeys
-                                            : BuildingLod::Box;
+        Vec3f low{1e30f, 1e30f, float(lot.base)}, high{-1e30f, -1e30f, float(lot.base)};
+        for (Vec2d p : lot.shape.points) {
+            low.x = std::min(low.x, float(p.x)), low.y = std::min(low.y, float(p.y));
+            high.x = std::max(high.x, float(p.x)), high.y = std::max(high.y, float(p.y));
+        }
+        high.z += float(lot.building.parameters.storeys * BuildingShape().storeyHeight);
+        float pixels = camera_.pixelsSpanned(low, high);
+        lot.distance = length((low + high) * 0.5f - camera_.position);
+        auto shows = [&](float within, float least) { return lot.distance < within && pixels >= least; };
+        lot.lod = shows(desc.rooms, desc.roomsPixels) ? BuildingLod::Rooms
+            : shows(desc.storeys, desc.storeysPixels) ? BuildingLod::Storeys
+                                                      : BuildingLod::Box;
     }
 
-    // Within the budget every building keeps the level its distance asks for. Past it, the
-    // farthest buildings drawn with rooms lose them first, then the farthest drawn storey by
-    // storey become boxes, until the expected triangles fit; the warning says how many.
+    // Within the budget every building keeps the level place() gave it. Past it, the farthest
+    // buildings drawn with rooms lose them first, then the farthest drawn storey by storey become
+    // boxes, until the expected triangles fit; the warning says how many. Farthest rather than
+    // smallest in the image: what they lose is windows and rooms, alike on every building, so
+    // smallest in the image where they are farthest.
     void chooseLevels(std::vector<BlockLots> &blocks, std::vector<std::string> &warnings) const {
         std::vector<SlgLot *> lots;
         for (BlockLots &block : blocks)
@@ -504,7 +507,6 @@ class SlgGenerator {
         int corners = int(turningPoints(plan->placement.footprint.points).size());
         BuildingShape shape;
         shape.base = lot.base;
-        shape.storeyHeight = kStoreyHeight;
         shape.roof = roofKind(lot.weights, corners,
                               PlanRandom(seed, hashValues({lot.identity, kRoof}), RandomStream::SlgParameters));
         shape.orientation = lot.building.orientation;

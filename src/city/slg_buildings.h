@@ -1,8 +1,8 @@
 // The <slg> element (docs/slg.md): a block or a district planned with Schrader's Spatial
 // Landmark Graph from the urban-geography tables alone — the district cut into blocks between
 // streets, each block into lots, each lot's building planned down to its rooms and built at the
-// level of detail its distance from the camera asks for — with its streets, block surfaces and
-// sidewalks.
+// level of detail its size in the image and its distance from the camera ask for — with its
+// streets, block surfaces and sidewalks.
 #pragma once
 
 #include <string>

@@ -161,6 +161,20 @@ struct CityGrowthDesc {
     float levelSpacing = 40, liftReach = 15, streetThickness = 1;
 };
 
+// When a generator draws a building coarse (a box with its roof) rather than in full: when it
+// spans fewer than `belowPixels` pixels of the image's height (Camera::pixelsSpanned), or lies
+// farther from the camera than `beyond` metres where that is given (seed 000's switch at 300 m).
+// Either makes it coarse. `coarse_below_px` and `coarse_beyond` on <city>, <generate> and
+// <citygml>.
+struct CoarseRule {
+    std::optional<float> beyond;
+    float belowPixels = 8;  // a building this small shows no window as large as a pixel
+    bool isCoarse(const Camera &camera, Vec3f low, Vec3f high) const {
+        if (camera.pixelsSpanned(low, high) < belowPixels) return true;
+        return beyond && length((low + high) * 0.5f - camera.position) > *beyond;
+    }
+};
+
 struct CityDesc {
     FileLoc loc;
     std::filesystem::path file;  // resolved against the scene's folder; .osm: OpenStreetMap (docs/osm.md)
@@ -174,8 +188,7 @@ struct CityDesc {
     int epsg = 0;
     FileLoc crsLoc;
     std::optional<uint32_t> seed;  // with each lot's identity, every random choice; unset: the scene's
-    // coarse_beyond: buildings farther from the camera are plain boxes with their roofs.
-    std::optional<float> coarseBeyond;
+    CoarseRule coarse;
     uint32_t objectId = 0;
 };
 
@@ -194,6 +207,7 @@ struct CityGmlDesc {
     // of the scene's CRS are placed; unset: all.
     std::optional<std::array<double, 4>> bbox;
     FileLoc bboxLoc;
+    CoarseRule coarse;
     uint32_t objectId = 0;
 };
 
@@ -210,9 +224,12 @@ struct SlgDesc {
     float base = 0;
     std::filesystem::path tables;  // rules/slg/urban-geography.xml or one like it
     FileLoc tablesLoc;
-    // Nearer than `rooms` metres a building shows its rooms behind the glass; nearer than
-    // `storeys` its storeys, windows and door; farther one quad a side (Table 12's 50 and 100 m).
+    // A building shows its rooms behind the glass when it is nearer than `rooms` metres and spans
+    // at least `roomsPixels` of the image's height (Camera::pixelsSpanned); its storeys, windows
+    // and door when nearer than `storeys` metres and at least `storeysPixels` high; else one quad
+    // a side. The distances are Table 12's; the pixels keep the levels where they show.
     float rooms = 50, storeys = 100;
+    float roomsPixels = 100, storeysPixels = 8;
     std::optional<uint32_t> seed;  // with each building's identity, every random choice; unset: the scene's
     uint32_t objectId = 0;
 };

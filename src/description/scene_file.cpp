@@ -408,9 +408,11 @@ class SceneFileReader {
         return e.unsignedInteger("seed", 0);
     }
 
-    static std::optional<float> coarseBeyond(const XmlElement &e) {
-        if (!e.has("coarse_beyond")) return std::nullopt;
-        return e.number("coarse_beyond", 300, 0, 1e6f);
+    static CoarseRule coarseRule(const XmlElement &e) {
+        CoarseRule rule;
+        if (e.has("coarse_beyond")) rule.beyond = e.number("coarse_beyond", 300, 0, 1e6f);
+        rule.belowPixels = e.number("coarse_below_px", rule.belowPixels, 0, 1e6f);
+        return rule;
     }
 
     // A required file attribute, resolved against the scene's folder when relative.
@@ -430,7 +432,7 @@ class SceneFileReader {
         }
         readFileCrs(e, city.epsg, city.crsLoc);
         city.seed = seedOverride(e);
-        city.coarseBeyond = coarseBeyond(e);
+        city.coarse = coarseRule(e);
         readObjectId(e, city.loc);
         e.checkLeaf();
         scene_.cities.push_back(std::move(city));
@@ -477,7 +479,7 @@ class SceneFileReader {
             growth.roadsLoc = e.attributeLoc("roads");
         }
         city.seed = seedOverride(e);
-        city.coarseBeyond = coarseBeyond(e);
+        city.coarse = coarseRule(e);
         readObjectId(e, city.loc);
         e.checkLeaf();
         scene_.cities.push_back(std::move(city));
@@ -497,6 +499,7 @@ class SceneFileReader {
             gml.bbox = std::array<double, 4>{box[0], box[1], box[2], box[3]};
             gml.bboxLoc = e.attributeLoc("bbox");
         }
+        gml.coarse = coarseRule(e);
         readObjectId(e, gml.loc);
         e.checkLeaf();
         scene_.cityGml.push_back(std::move(gml));
@@ -532,6 +535,10 @@ class SceneFileReader {
         slg.rooms = e.number("rooms_within", slg.rooms, 0, 1e6f);
         slg.storeys = e.number("storeys_within", slg.storeys, 0, 1e6f);
         if (slg.storeys < slg.rooms) e.failAt("storeys_within", "storeys_within is less than rooms_within");
+        slg.roomsPixels = e.number("rooms_above_px", slg.roomsPixels, 0, 1e6f);
+        slg.storeysPixels = e.number("storeys_above_px", slg.storeysPixels, 0, 1e6f);
+        if (slg.roomsPixels < slg.storeysPixels)
+            e.failAt("rooms_above_px", "rooms_above_px is less than storeys_above_px");
         slg.seed = seedOverride(e);
         readObjectId(e, slg.loc);
         e.checkLeaf();

@@ -15,6 +15,14 @@ Vec2f Camera::halfExtent() const {
     return {halfHeight * float(width) / float(height), halfHeight};
 }
 
+float Camera::pixelsSpanned(Vec3f low, Vec3f high) const {
+    float diagonal = length(high - low);
+    float metresPerPixel = 2 * halfExtent().y / float(height);  // on the plane one metre ahead, or on any
+    if (projection == Projection::Orthographic) return diagonal / metresPerPixel;
+    float distance = length((low + high) * 0.5f - position);
+    return diagonal / (std::max(distance, 1e-3f) * metresPerPixel);
+}
+
 const char *Camera::framingProblem() const {
     if (length(lookAt - position) == 0) return "camera position and look_at are the same point";
     if (length(cross(lookAt - position, up)) == 0) return "camera up is parallel to the view direction";

@@ -52,6 +52,11 @@ struct Camera {
     // Half the frame's extent, right and up, before lens shift: on the plane one metre ahead
     // for a perspective camera, in metres for an orthographic one.
     Vec2f halfExtent() const;
+    // The pixels of the image's height that the diagonal of the box from `low` to `high` spans,
+    // seen face on from the distance of the box's centre: the measure levels of detail are chosen
+    // by. Nothing is culled (a building beside or behind the view still casts its shadow and shows
+    // in reflections), so it is as large as the box would appear at the image's centre.
+    float pixelsSpanned(Vec3f low, Vec3f high) const;
 };
 
 // Rays of a camera, with its frame worked out once rather than per sample.

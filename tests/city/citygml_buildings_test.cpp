@@ -136,6 +136,83 @@ TEST(CityGmlBuildings, TexturedSurfacesShowTheirImage) {
         << fmt::format("{}", fmt::join(materials, ", "));
 }
 
+std::string texturedHouseFrom(const std::string &cameraAt, const std::string &extra = "") {
+    return fmt::format(
+        "<scene version=\"1\"><georeference crs=\"EPSG:25832\" origin=\"500005 5400004\"/>"
+        "<camera position=\"{}\" look_at=\"0 0 3\"/><citygml file=\"{}\"{}/></scene>",
+        cameraAt, test::sourceFile("tests/data/citygml/textured-house.gml"), extra);
+}
+
+uint64_t buildingsAt(const RenderScene &scene, const std::string &level) {
+    auto it = scene.lods.find(level);
+    return it == scene.lods.end() ? 0 : it->second.buildings;
+}
+
+// Three kilometres away the house spans about 2 pixels: a box of its footprint up to half way
+// between eaves and ridge, in a mesh shared by the boxes (no building id), its record kept.
+TEST(CityGmlBuildings, BuildingsTooSmallInTheImageAreBoxes) {
+    RenderScene near = build(texturedHouseFrom("0 -30 5"));
+    EXPECT_EQ(buildingsAt(near, "citygml/file"), 1u);
+    EXPECT_EQ(buildingsAt(near, "citygml/box"), 0u);
+    RenderScene far = build(texturedHouseFrom("0 -3000 50"));
+    ASSERT_EQ(buildingsAt(far, "citygml/box"), 1u);
+    EXPECT_EQ(far.lods.at("citygml/box").merged, 1u);
+    ASSERT_EQ(far.meshes.size(), 1u);
+    EXPECT_EQ(far.meshes[0].buildingId, 0u);
+    ASSERT_EQ(far.buildings.size(), 1u);
+    const BuildingRecord &record = far.buildings[0];
+    float top = -1e30f, bottom = 1e30f;
+    for (Vec3f p : far.meshes[0].mesh.positions) top = std::max(top, p.z), bottom = std::min(bottom, p.z);
+    EXPECT_NEAR(top, (record.eaves + record.ridge) / 2, 1e-3f);
+    EXPECT_NEAR(bottom, record.base, 1e-3f);
+    EXPECT_LT(far.meshes[0].mesh.triangleCount(), near.meshes[0].mesh.triangleCount());
+    // A closed prism: four walls of two triangles and a roof of two on the house's rectangle.
+    EXPECT_EQ(far.meshes[0].mesh.triangleCount(), 10u);
+    // coarse_below_px="0" keeps it as the file has it; coarse_beyond="100" makes it a box again.
+    EXPECT_EQ(buildingsAt(build(texturedHouseFrom("0 -3000 50", " coarse_below_px=\"0\"")), "citygml/file"), 1u);
+    EXPECT_EQ(buildingsAt(build(texturedHouseFrom("0 -300 5", " coarse_below_px=\"0\" coarse_beyond=\"100\"")),
+                          "citygml/box"),
+              1u);
+}
+
+// Past the geometry budget the farther of the two Bavarian buildings becomes a box, with a warning.
+TEST(CityGmlBuildings, TheGeometryBudgetMakesTheFarthestBuildingsBoxes) {
+    std::optional<std::filesystem::path> file = test::sharedDataFile("citygml/citygml_lod2_713_5322.xml");
+    if (!file) GTEST_SKIP() << "../shared/data/citygml is not there";
+    SceneDescription d = readSceneText(fmt::format("<scene version=\"1\"><georeference crs=\"EPSG:25832\" "
+                                                   "origin=\"713500 5322750\"/><citygml file=\"{}\"/></scene>",
+                                                   file->string()),
+                                       "test.xml", test::sourceFile("scenes"));
+    d.cityGml[0].coarse.belowPixels = 0;  // the budget alone
+    auto built = [&](uint64_t budget, const Camera &camera, std::vector<std::string> &warnings) {
+        RenderSceneBuilder builder;
+        builder.setGeometryBudget(budget);
+        generateCityGml(
+            d.cityGml[0], d.georeference, camera, builder, [](const auto &) { return kNoTexture; }, warnings);
+        return std::move(builder).build();
+    };
+    Camera camera;
+    std::vector<std::string> none;
+    RenderScene whole = built(UINT64_MAX, camera, none);
+    ASSERT_EQ(whole.meshes.size(), 2u);
+    EXPECT_EQ(buildingsAt(whole, "citygml/file"), 2u);
+    // The camera beside the first building: the second is the farther.
+    Vec3f first = whole.meshes[0].mesh.positions[0];
+    camera.position = first + Vec3f{0, -20, 2};
+    camera.lookAt = first;
+    // One triangle short of both in full.
+    uint64_t budget =
+        (whole.meshes[0].mesh.triangleCount() + whole.meshes[1].mesh.triangleCount() - 1) * kBytesPerTriangle;
+    std::vector<std::string> warnings;
+    RenderScene part = built(budget, camera, warnings);
+    EXPECT_EQ(buildingsAt(part, "citygml/file"), 1u);
+    EXPECT_EQ(buildingsAt(part, "citygml/box"), 1u);
+    ASSERT_EQ(part.meshes.size(), 2u);
+    EXPECT_EQ(part.meshes[0].buildingId, whole.meshes[0].buildingId) << "the nearer keeps its model";
+    std::string said = fmt::format("{}", fmt::join(warnings, "\n"));
+    EXPECT_NE(said.find("geometry budget of 0.0 GB; 1 of them drawn as boxes"), std::string::npos) << said;
+}
+
 TEST(CityGmlBuildings, WhatTheSceneLacksIsSaid) {
     std::string box = test::sourceFile("fuzz/corpus/citygml/lod1-box.gml");
     std::string noGeoreference =

@@ -181,12 +181,22 @@ TEST(GenerateCity, BatchesOfBuildingsAreTheSameOnAnyNumberOfThreads) {
     EXPECT_EQ(sceneHash(one), sceneHash(two));
 }
 
-// The row of 600 lots runs 7.2 km east from the origin; the camera stands at its west end.
+// The row of 600 lots runs 7.2 km east from the origin; this camera stands at its west end,
+// looking along it.
+Camera atTheWestEnd(int width = 640, int height = 360) {
+    Camera camera;
+    camera.position = {0, -20, 2};
+    camera.lookAt = {100, 20, 2};
+    camera.width = width;
+    camera.height = height;
+    return camera;
+}
+
 TEST(GenerateCity, BuildingsBeyondCoarseBeyondAreBoxesInOneMesh) {
     CityData data = rowOfLots({});
     RenderSceneBuilder builder;
     std::vector<std::string> warnings;
-    generateCity(data, 0, 1, builder, warnings, nullptr, {{0, -20, 2}, 300.0f});
+    generateCity(data, 0, 1, builder, warnings, nullptr, {atTheWestEnd(), CoarseRule{300.0f, 0.0f}});
     RenderScene scene = std::move(builder).build();
     ASSERT_EQ(scene.lods.count("city/box"), 1u);
     const LodCounts &facades = scene.lods.at("city/facades"), &boxes = scene.lods.at("city/box");
@@ -199,12 +209,34 @@ TEST(GenerateCity, BuildingsBeyondCoarseBeyondAreBoxesInOneMesh) {
     EXPECT_EQ(scene.buildings.size(), 600u) << "every building keeps its record";
 }
 
+// By default a building that spans fewer than 8 pixels of the image's height is a box: along
+// the row those are the farthest, and a sharper image keeps more of them in full.
+TEST(GenerateCity, BuildingsTooSmallInTheImageAreBoxes) {
+    CityData data = rowOfLots({});
+    auto withFacades = [&](int width, int height) {
+        RenderSceneBuilder builder;
+        std::vector<std::string> warnings;
+        generateCity(data, 0, 1, builder, warnings, nullptr, {atTheWestEnd(width, height), CoarseRule{}});
+        RenderScene scene = std::move(builder).build();
+        uint64_t kept = scene.lods.at("city/facades").buildings;
+        EXPECT_EQ(kept + scene.lods.at("city/box").buildings, 600u);
+        float east = 0;
+        for (const Instance &instance : scene.instances) east = std::max(east, instance.objectToWorld.m[3]);
+        EXPECT_LT(east, 12.0f * float(kept) + 1) << "the buildings in full are the nearest";
+        return kept;
+    };
+    uint64_t small = withFacades(640, 360), large = withFacades(2560, 1440);
+    EXPECT_GT(small, 10u);
+    EXPECT_LT(small, 300u);
+    EXPECT_GT(large, small + small / 2);
+}
+
 TEST(GenerateCity, TheGeometryBudgetTakesFacadesFromTheFarthestBuildingsFirst) {
     CityData data = rowOfLots({});
     auto built = [&](uint64_t budget, std::vector<std::string> &warnings) {
         RenderSceneBuilder builder;
         builder.setGeometryBudget(budget);
-        generateCity(data, 0, 1, builder, warnings, nullptr, {{0, -20, 2}, std::nullopt});
+        generateCity(data, 0, 1, builder, warnings, nullptr, {atTheWestEnd(), CoarseRule{std::nullopt, 0.0f}});
         return std::move(builder).build();
     };
     std::vector<std::string> none, some;

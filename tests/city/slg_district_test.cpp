@@ -3,6 +3,7 @@
 // mistakes named with their place, and the same scene from the same seed.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <set>
 
 #include <fmt/format.h>
@@ -49,17 +50,19 @@ TEST(SlgElement, ABlockIsBuiltWithABuildingOnEveryLotItPlans) {
 }
 
 // <slg> elements built straight into a builder with a geometry budget; every building within
-// `rooms` metres asks for its rooms.
+// `rooms` metres and at least `rooms_above_px` high asks for its rooms.
 struct SlgBuilt {
     RenderScene scene;
     std::vector<std::string> warnings;
 };
 
-SlgBuilt slgWithin(uint64_t budget, const std::string &slg, Vec3f cameraAt) {
+SlgBuilt slgWithin(uint64_t budget, const std::string &slg, Vec3f cameraAt, int imageHeight = 360) {
     SceneDescription d =
         readSceneText(fmt::format(R"(<scene version="1">{}</scene>)", slg), "test.xml", test::sourceFile("scenes"));
     Camera camera;
     camera.position = cameraAt;
+    camera.height = imageHeight;
+    camera.width = imageHeight * 16 / 9;
     RenderSceneBuilder builder;
     builder.setGeometryBudget(budget);
     std::vector<uint32_t> seeds;
@@ -71,7 +74,8 @@ SlgBuilt slgWithin(uint64_t budget, const std::string &slg, Vec3f cameraAt) {
 }
 
 const char *kDistrict = R"(<slg level="district" outline="0 0 700 0 700 700 0 700" seed="3" )"
-                        R"(tables="../rules/slg/urban-geography.xml" rooms_within="100000" storeys_within="100000"/>)";
+                        R"(tables="../rules/slg/urban-geography.xml" rooms_within="100000" storeys_within="100000" )"
+                        R"(rooms_above_px="0" storeys_above_px="0"/>)";
 
 TEST(SlgElement, ADistrictIsFilledRingByRingToItsMiddle) {
     SlgBuilt built = slgWithin(UINT64_MAX, kDistrict, {-50, -50, 30});
@@ -89,10 +93,13 @@ TEST(SlgElement, TheGeometryBudgetTakesDetailFromTheFarthestBuildingsFirst) {
     uint64_t bytes = whole.scene.lods.at("slg/rooms").triangles * kBytesPerTriangle;
     EXPECT_TRUE(whole.warnings.empty() || whole.warnings[0].find("budget") == std::string::npos);
 
-    SlgBuilt part = slgWithin(bytes * 3 / 4, kDistrict, {-50, -50, 30});
+    // A building drawn storey by storey costs about a quarter of one with its rooms, so at half
+    // the cost of all with rooms about a third of them keep their rooms.
+    uint64_t budget = bytes / 2;
+    SlgBuilt part = slgWithin(budget, kDistrict, {-50, -50, 30});
     ASSERT_FALSE(part.warnings.empty());
     EXPECT_NE(part.warnings[0].find("drawn coarser"), std::string::npos) << part.warnings[0];
-    EXPECT_LE(triangles(part.scene) * kBytesPerTriangle, bytes * 3 / 4);
+    EXPECT_LE(triangles(part.scene) * kBytesPerTriangle, budget);
     EXPECT_EQ(buildings(part.scene), buildings(whole.scene));
     // Rooms are kept for the buildings nearest the camera: the farthest corner of any with
     // rooms is nearer than the middle of the district.
@@ -109,6 +116,27 @@ TEST(SlgElement, TheGeometryBudgetTakesDetailFromTheFarthestBuildingsFirst) {
     }
     EXPECT_GT(farthestRooms, 0);
     EXPECT_LT(farthestRooms, length(Vec3f{350, 350, 0} - Vec3f{-50, -50, 30}));
+}
+
+// Without distances, the levels follow the buildings' size in the image alone: a sharper image
+// shows more of them storey by storey and with their rooms.
+TEST(SlgElement, LevelsFollowTheSizeInTheImage) {
+    const char *district = R"(<slg level="district" outline="0 0 700 0 700 700 0 700" seed="3" )"
+                           R"(tables="../rules/slg/urban-geography.xml" rooms_within="100000" )"
+                           R"(storeys_within="100000"/>)";
+    auto levels = [&](int imageHeight) {
+        SlgBuilt built = slgWithin(UINT64_MAX, district, {-50, -50, 30}, imageHeight);
+        auto count = [&](const char *level) {
+            auto it = built.scene.lods.find(level);
+            return it == built.scene.lods.end() ? uint64_t(0) : it->second.buildings;
+        };
+        return std::array<uint64_t, 3>{count("slg/rooms"), count("slg/storeys"), count("slg/box")};
+    };
+    std::array<uint64_t, 3> small = levels(120), sharp = levels(1080);
+    EXPECT_EQ(small[0] + small[1] + small[2], sharp[0] + sharp[1] + sharp[2]);
+    EXPECT_GT(small[2], 0u) << "the farthest are boxes";
+    EXPECT_GT(sharp[0], small[0]);
+    EXPECT_GT(sharp[0] + sharp[1], small[0] + small[1]);
 }
 
 // Eq 1 for every built lot, summed by its BauNVO zone beside Table 2's caps (veduta info).

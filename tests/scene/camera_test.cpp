@@ -86,6 +86,22 @@ TEST(Camera, OrthographicMapsMetresToPixelsEverywhereAlike) {
     EXPECT_NEAR(x, 230 - 200, 1e-3f);
 }
 
+// A box's diagonal in pixels agrees with where its ends project when it stands face on at the
+// image's centre; beside the view, at the same distance, it counts as large.
+TEST(Camera, PixelsSpannedAreWhatAFaceOnBoxCoversOnTheRaster) {
+    Camera c = northCamera();
+    CameraRays rays(c);
+    float x0, y0, x1, y1;
+    ASSERT_TRUE(rays.project({0, 40, -3}, x0, y0));
+    ASSERT_TRUE(rays.project({0, 40, 3}, x1, y1));
+    EXPECT_NEAR(c.pixelsSpanned({0, 40, -3}, {0, 40, 3}), y0 - y1, 1e-3f);
+    EXPECT_NEAR(c.pixelsSpanned({40, 0, -3}, {40, 0, 3}), y0 - y1, 1e-3f);
+    EXPECT_NEAR(c.pixelsSpanned({0, 80, -3}, {0, 80, 3}), (y0 - y1) / 2, 1e-3f);
+    c.projection = Projection::Orthographic;
+    c.orthoScale = 40;  // 10 px a metre, at any distance
+    EXPECT_NEAR(c.pixelsSpanned({0, 500, 0}, {3, 500, 4}), 50, 1e-3f);
+}
+
 // Blender's camera: lens = sensor / 2 / tan(fov / 2) along the longer side, aperture = lens / N.
 TEST(Camera, FocalLengthAndApertureFollowTheSensor) {
     Camera c = northCamera();
