@@ -21,10 +21,10 @@ AtlasRect gridMotif(int column, int row, int columns, int rows) {
 
 QuadUv simpleMapping(const AtlasRect &motif) { return spanning(motif.topLeft.u, motif.bottomRight.u, motif); }
 
-QuadUv tiledMapping(const AtlasRect &motif, double textureLength, double u0, double wallLength) {
+QuadUv tiledMapping(const AtlasRect &motif, double textureLength, double from, double to) {
     VEDUTA_CHECK(motif.topLeft.u == 0 && motif.bottomRight.u == 1, "a tiled motif spans the atlas's width");
     VEDUTA_CHECK(textureLength > 0, "a tiled motif has a real length");
-    return spanning(u0, u0 + wallLength / textureLength, motif);
+    return spanning(from / textureLength, to / textureLength, motif);
 }
 
 }  // namespace veduta

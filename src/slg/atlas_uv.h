@@ -30,10 +30,13 @@ using QuadUv = std::array<Uv, 4>;
 // Simple mapping (L2225): the whole motif stretched over the quad.
 QuadUv simpleMapping(const AtlasRect &motif);
 
-// Tiled mapping (eq 35): a wall `wallLength` long shows wallLength / textureLength repeats of the
-// motif, starting at u0, the u of the previous wall's right corners (0 for the first), so the
-// texture runs on across a storey's walls without a seam. Only a motif as wide as the atlas can
-// repeat along u (the neighbouring motifs would show otherwise); its height is stretched.
-QuadUv tiledMapping(const AtlasRect &motif, double textureLength, double u0, double wallLength);
+// Tiled mapping (eq 35): a wall shows wallLength / textureLength repeats of the motif, starting
+// at u0, the u of the previous wall's right corners (0 for the first), so the texture runs on
+// across a storey's walls without a seam. The wall is given by where it starts and ends along
+// the run of walls, `from` and `to` metres from the first corner: u0 = from / textureLength,
+// worked out alike for the wall that ends there, so the corners' u agree to the bit. Only a
+// motif as wide as the atlas can repeat along u (the neighbouring motifs would show otherwise);
+// its height is stretched.
+QuadUv tiledMapping(const AtlasRect &motif, double textureLength, double from, double to);
 
 }  // namespace veduta

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <iterator>
 
+#include "slg/atlas_uv.h"
 #include "slg/ear_clipping.h"
 #include "slg/face_sides.h"
 #include "slg/stairs.h"
@@ -20,10 +21,14 @@ using Triangles2d = std::vector<std::array<Vec2d, 3>>;
 
 Vec3f at(Vec2d p, double z) { return {float(p.x), float(p.y), float(z)}; }
 
-// Appends triangles to a mesh, each with its material; texture coordinates are given per corner.
+// Appends triangles to a mesh, each with its material. Texture coordinates count motifs, a
+// motif being a square one storey high (§3.3): so a wall texture is one storey of wall, tiled
+// along the walls (eq 35's tiled mapping) and up the storeys, and floors and roofs take the
+// same squares across the plan; a door's and a pane's image is stretched over it once (the
+// simple mapping).
 class MeshWriter {
   public:
-    explicit MeshWriter(Mesh &mesh) : mesh_(mesh) {}
+    MeshWriter(Mesh &mesh, double motif, double base) : mesh_(mesh), motif_(motif), base_(base) {}
 
     void triangle(Vec3f a, Vec3f b, Vec3f c, Vec2f ua, Vec2f ub, Vec2f uc, MaterialId material) {
         uint32_t first = uint32_t(mesh_.positions.size());
@@ -35,28 +40,47 @@ class MeshWriter {
         mesh_.triangleMaterials.push_back(material);
     }
 
-    // A vertical quad over the segment a → b from z0 to z1, facing to the right of a → b; u runs
-    // from u0 at a to u1 at b, v up from the ground.
-    void wall(Vec2d a, Vec2d b, double z0, double z1, double u0, double u1, MaterialId material) {
+    // A vertical quad over the segment a → b from z0 to z1, facing to the right of a → b, its
+    // corners' coordinates in Listing 4's order (bottom left, bottom right, top right, top left).
+    void wall(Vec2d a, Vec2d b, double z0, double z1, const QuadUv &uv, MaterialId material) {
         Vec3f a0 = at(a, z0), b0 = at(b, z0), b1 = at(b, z1), a1 = at(a, z1);
-        Vec2f ua0{float(u0), float(z0)}, ub0{float(u1), float(z0)}, ub1{float(u1), float(z1)},
-            ua1{float(u0), float(z1)};
-        triangle(a0, b0, b1, ua0, ub0, ub1, material);
-        triangle(a0, b1, a1, ua0, ub1, ua1, material);
+        triangle(a0, b0, b1, lookupUv(uv[0]), lookupUv(uv[1]), lookupUv(uv[2]), material);
+        triangle(a0, b1, a1, lookupUv(uv[0]), lookupUv(uv[2]), lookupUv(uv[3]), material);
+    }
+
+    // The tiled mapping of the stretch of wall from z0 to z1 between `from` and `to` metres
+    // along the run of walls: the motif's rows for those heights above the base, counted on up
+    // the storeys (the lookup wraps), so that storeys share their corners.
+    QuadUv tiled(double from, double to, double z0, double z1) const {
+        AtlasRect rows{{0, 1 - (z1 - base_) / motif_}, {1, 1 - (z0 - base_) / motif_}};
+        return tiledMapping(rows, motif_, from, to);
     }
 
     // Counter-clockwise triangles at height z, facing up, or down when `down`.
     void horizontal(const Triangles2d &triangles, double z, bool down, MaterialId material) {
         for (auto [a, b, c] : triangles) {
             if (down) std::swap(b, c);
-            triangle(at(a, z), at(b, z), at(c, z), uvOf(a), uvOf(b), uvOf(c), material);
+            triangle(at(a, z), at(b, z), at(c, z), plan(a), plan(b), plan(c), material);
         }
     }
 
+    // A sloped triangle, its texture laid on it from above.
+    void slope(Vec3f a, Vec3f b, Vec3f c, MaterialId material) {
+        auto uv = [&](Vec3f p) { return plan({p.x, p.y}); };
+        triangle(a, b, c, uv(a), uv(b), uv(c), material);
+    }
+
   private:
-    static Vec2f uvOf(Vec2d p) { return {float(p.x), float(p.y)}; }
+    Vec2f plan(Vec2d p) const { return {float(p.x / motif_), float(p.y / motif_)}; }
+    // The atlas counts v down from the image's top (L2188), the texture lookup up from its bottom.
+    static Vec2f lookupUv(Uv uv) { return {float(uv.u), float(1 - uv.v)}; }
+
     Mesh &mesh_;
+    double motif_, base_;
 };
+
+// The whole image of a door or a pane, stretched over it.
+const QuadUv kStretched = simpleMapping(gridMotif(0, 0, 1, 1));
 
 Triangles2d earTriangles(const Polygon2d &ccw) {
     Triangles2d triangles;
@@ -102,7 +126,7 @@ struct WallRun {
 };
 
 void piece(MeshWriter &out, const WallRun &wall, double s0, double s1, double z0, double z1, MaterialId material) {
-    out.wall(wall.point(s0), wall.point(s1), z0, z1, wall.u0 + s0, wall.u0 + s1, material);
+    out.wall(wall.point(s0), wall.point(s1), z0, z1, out.tiled(wall.u0 + s0, wall.u0 + s1, z0, z1), material);
 }
 
 // Walls round a closed loop, each facing to the right of the way round; u runs on from the first
@@ -141,21 +165,19 @@ void roof(MeshWriter &out, const Polygon2d &footprint, const std::vector<size_t>
         size_t k = shape.orientation == RoofOrientation::Giebelstaendig ? 0 : 1;
         auto q = [&](size_t i) { return footprint[corners[(k + i) % 4]]; };
         Vec2d m0 = (q(0) + q(1)) * 0.5, m2 = (q(2) + q(3)) * 0.5;
-        Vec2f flat{0, 0};
-        out.triangle(at(q(0), z), at(q(1), z), at(m0, ridge), flat, flat, flat, material);
-        out.triangle(at(q(2), z), at(q(3), z), at(m2, ridge), flat, flat, flat, material);
+        out.slope(at(q(0), z), at(q(1), z), at(m0, ridge), material);
+        out.slope(at(q(2), z), at(q(3), z), at(m2, ridge), material);
         for (auto [a, b, top, back] : {std::array{q(1), q(2), m2, m0}, std::array{q(3), q(0), m0, m2}}) {
-            out.triangle(at(a, z), at(b, z), at(top, ridge), flat, flat, flat, material);
-            out.triangle(at(a, z), at(top, ridge), at(back, ridge), flat, flat, flat, material);
+            out.slope(at(a, z), at(b, z), at(top, ridge), material);
+            out.slope(at(a, z), at(top, ridge), at(back, ridge), material);
         }
         return;
     }
     Vec2d apex = vertexMean(footprint);
     if (shape.roof != RoofKind::Flat && sideOf(footprint, apex) == Side::Inside) {
-        Vec2f flat{0, 0};
         for (size_t c = 0; c < corners.size(); ++c)
-            out.triangle(at(footprint[corners[c]], z), at(footprint[corners[(c + 1) % corners.size()]], z),
-                         at(apex, ridge), flat, flat, flat, material);
+            out.slope(at(footprint[corners[c]], z), at(footprint[corners[(c + 1) % corners.size()]], z),
+                      at(apex, ridge), material);
         return;
     }
     out.horizontal(earTriangles(footprint), z, false, material);
@@ -214,7 +236,7 @@ void windowedWall(MeshWriter &out, const WallRun &wall, double from, double to, 
         if (window.from < from || window.to > to) continue;
         if (window.from > s) piece(out, wall, s, window.from, z0, z1, m.wall);
         if (shape.sill > 0) piece(out, wall, window.from, window.to, z0, sill, m.wall);
-        piece(out, wall, window.from, window.to, sill, lintel, m.glass);
+        out.wall(wall.point(window.from), wall.point(window.to), sill, lintel, kStretched, m.glass);
         if (lintel < z1) piece(out, wall, window.from, window.to, lintel, z1, m.wall);
         s = window.to;
     }
@@ -223,7 +245,7 @@ void windowedWall(MeshWriter &out, const WallRun &wall, double from, double to, 
 
 // The outer walls storey by storey, u running on round each storey from the footprint's first
 // point. On the ground floor the wall with the house door has it where the plan's entrance is,
-// and windows on either side of it; the door is a motif of its own, its u from 0.
+// and windows on either side of it; the door's image is stretched over it.
 void storeyWalls(MeshWriter &out, const BuildingPlan &plan, const BuildingShape &shape, const BuildingMaterials &m) {
     const PlanShape &footprint = plan.placement.footprint;
     for (int storey = 0; storey < plan.storeys; ++storey) {
@@ -240,7 +262,7 @@ void storeyWalls(MeshWriter &out, const BuildingPlan &plan, const BuildingShape 
             }
             double top = std::min(z0 + shape.doorHeight, z1);
             windowedWall(out, wall, 0, door->from, windows, z0, shape, m);
-            out.wall(wall.point(door->from), wall.point(door->to), z0, top, 0, shape.doorWidth, m.door);
+            out.wall(wall.point(door->from), wall.point(door->to), z0, top, kStretched, m.door);
             piece(out, wall, door->from, door->to, top, z1, m.wall);
             windowedWall(out, wall, door->to, total, windows, z0, shape, m);
         }
@@ -252,7 +274,7 @@ void stairs(MeshWriter &out, const Flight &flight, double z0, MaterialId materia
     for (int i = 0; i < flight.risers; ++i) {
         Polygon2d step = tread(flight, i);
         double lower = z0 + i * flight.riser, upper = z0 + (i + 1) * flight.riser;
-        out.wall(step[3], step[0], lower, upper, 0, flight.width, material);
+        out.wall(step[3], step[0], lower, upper, out.tiled(0, flight.width, lower, upper), material);
         out.horizontal(earTriangles(step), upper, false, material);
     }
 }
@@ -268,9 +290,9 @@ void wallWithHoles(MeshWriter &out, const WallRun &wall, const std::vector<Openi
         piece(out, wall, hole.from, hole.to, z0, sill, material);
         piece(out, wall, hole.from, hole.to, lintel, z1, material);
         Vec2d p = wall.point(hole.from), q = wall.point(hole.to);
-        double depth = length(outward);
-        out.wall(p, p + outward, sill, lintel, 0, depth, material);
-        out.wall(q + outward, q, sill, lintel, 0, depth, material);
+        QuadUv jamb = out.tiled(0, length(outward), sill, lintel);
+        out.wall(p, p + outward, sill, lintel, jamb, material);
+        out.wall(q + outward, q, sill, lintel, jamb, material);
         Triangles2d reveal = earTriangles({p, q, q + outward, p + outward});
         out.horizontal(reveal, sill, false, material);
         out.horizontal(reveal, lintel, true, material);
@@ -399,7 +421,7 @@ std::optional<SpaceFloor> insideWalls(const PlanShape &space, const PlanShape &s
 Mesh buildingMesh(const BuildingPlan &plan, const BuildingShape &shape, BuildingLod lod,
                   const BuildingMaterials &materials) {
     Mesh mesh;
-    MeshWriter out(mesh);
+    MeshWriter out(mesh, shape.storeyHeight, shape.base);
     const Polygon2d &footprint = plan.placement.footprint.points;
     // From point 0, the front's left end: a corner, where the first wall starts.
     std::vector<size_t> corners = turningPoints(footprint);

@@ -5,9 +5,12 @@
 // top; at the coarsest, one quad per side of the building and the simple roof (14 triangles for
 // a gable house on four corners, Table 17). One indexed mesh per level, its corners shared where
 // the pieces meet (§3.2). Flat shading (the digest's suggestion for path tracing): no vertex
-// normals; texture coordinates in metres along the wall and up, or across the plan, u running on
-// round a storey from wall to wall (eq 35's tiled mapping), so that a wall texture crosses the
-// corners without a seam but at the first.
+// normals. Texture coordinates (§3.3) count motifs of one storey's height square: a wall's
+// texture is tiled along the walls and up the storeys, u running on round a storey from wall to
+// wall (eq 35's tiled mapping) so that it crosses the corners without a seam but at the first;
+// floors and roofs take the same squares across the plan; a door's or a pane's image is
+// stretched over it once (the simple mapping). Each motif is a material of its own rather than
+// a rectangle of one atlas image, so that glass stays glass.
 #pragma once
 
 #include <cstdint>

@@ -173,6 +173,22 @@ TEST(SlgElement, NearerCamerasSeeMoreDetail) {
     EXPECT_GT(near, 2 * far) << "storeys and rooms near the camera, boxes far away";
 }
 
+// A scene's material of an SLG material's name restyles every building's surfaces of it.
+TEST(SlgElement, TheScenesMaterialsRestyleTheBuildings) {
+    std::string slg = std::string(R"(<material name="slg/wall" diffuse="0.9 0.1 0.1"/>)") + kBlock;
+    RenderScene scene = sceneWith(R"(position="-10 -10 10")", slg);
+    MaterialId wall = kNoMaterial;
+    for (size_t m = 0; m < scene.materials.size(); ++m)
+        if (scene.materials[m].name == "slg/wall") {
+            EXPECT_EQ(wall, kNoMaterial) << "one slg/wall";
+            wall = MaterialId(m);
+            EXPECT_EQ(scene.materials[m].diffuse.x, 0.9f);
+        }
+    size_t walls = 0;
+    for (const BakedMesh &baked : scene.meshes) walls += std::ranges::count(baked.mesh.triangleMaterials, wall);
+    EXPECT_GT(walls, 100u);
+}
+
 TEST(SlgElement, TheSameSeedGivesTheSameSceneAndAnotherAnother) {
     std::string other = kBlock;
     other.replace(other.find("seed=\"4\""), 8, "seed=\"5\"");
