@@ -49,8 +49,8 @@ const Grid &grid(int columns, int rows) {
 }
 
 // generateCity and the scene build, as `veduta info` times them for a scene of just this <city>;
-// with `detail`, seen from its corner with seed 000's 300 m switch to boxes (and the default
-// switch for buildings under 8 pixels high).
+// with `detail`, seen from its corner with seed 000's 300 m switch to boxes and the default one
+// for buildings under 8 pixels high, or with the second alone.
 void buildGrid(benchmark::State &state, const BuildingDetail &detail) {
     const Grid &g = grid(int(state.range(0)), int(state.range(1)));
     tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(state.range(2)));
@@ -79,13 +79,18 @@ void buildGrid(benchmark::State &state, const BuildingDetail &detail) {
 }
 
 void BM_CityGrid(benchmark::State &state) { buildGrid(state, {}); }
-// At eye height on the grid's corner, looking along its diagonal.
-void BM_CityGridCoarseBeyond300(benchmark::State &state) {
+// At eye height on the grid's corner, looking along its diagonal, 960 × 540.
+Camera atTheCorner() {
     Camera camera;
     camera.position = {0, 0, 1.7f};
     camera.lookAt = {100, 100, 1.7f};
-    buildGrid(state, {camera, CoarseRule{300.0f}});
+    camera.width = 960;
+    camera.height = 540;
+    return camera;
 }
+void BM_CityGridCoarseBeyond300(benchmark::State &state) { buildGrid(state, {atTheCorner(), CoarseRule{300.0f}}); }
+// The default rule alone: boxes for buildings under 8 pixels high.
+void BM_CityGridBySize(benchmark::State &state) { buildGrid(state, {atTheCorner(), CoarseRule{}}); }
 
 // generateSlg and the scene build of one square district; arguments: side (m)/threads.
 void BM_SlgDistrict(benchmark::State &state) {
@@ -167,6 +172,7 @@ void gridRuns(benchmark::internal::Benchmark *b) {
 }
 BENCHMARK(BM_CityGrid)->Apply(gridRuns);
 BENCHMARK(BM_CityGridCoarseBeyond300)->Args({32, 40, 2})->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK(BM_CityGridBySize)->Args({32, 40, 2})->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 BENCHMARK(BM_GridStreets)->Apply(gridRuns);
 
 }  // namespace
