@@ -192,7 +192,7 @@ std::optional<Mesh> boxMesh(const CityGmlBuilding &building, const MapProjection
 // A building of the file as it will be drawn: how far from the camera and whether as a box.
 struct PlacedBuilding {
     const CityGmlBuilding *building = nullptr;
-    Mesh mesh;                // as the file has it
+    Mesh mesh;                // as the file has it; emptied when drawn as a box
     std::optional<Mesh> box;  // when drawn coarse
     float distance = 0;
 };
@@ -210,6 +210,7 @@ void chooseDetail(std::vector<PlacedBuilding> &placed, const CityGmlDesc &desc, 
         MaterialId wall = boxMaterial(*b.building, SurfaceKind::Wall, materials, builder);
         MaterialId roof = boxMaterial(*b.building, SurfaceKind::Roof, materials, builder);
         b.box = boxMesh(*b.building, projection, wall, roof);
+        if (b.box) b.mesh = Mesh();  // freed as soon as it is not wanted
         return b.box.has_value();
     };
     uint64_t expected = 0;
@@ -219,7 +220,7 @@ void chooseDetail(std::vector<PlacedBuilding> &placed, const CityGmlDesc &desc, 
             low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
             high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
         }
-        if (b.mesh.positions.empty()) continue;
+        if (b.mesh.positions.empty()) continue;  // no triangle to count or coarsen
         b.distance = length((low + high) * 0.5f - camera.position);
         if (desc.coarse.isCoarse(camera, low, high)) coarsen(b);
         expected += bytesOf(b);
