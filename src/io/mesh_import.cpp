@@ -1,11 +1,14 @@
 #include "io/mesh_import.h"
 
 #include <assimp/BaseImporter.h>
+#include <assimp/DefaultIOSystem.h>
+#include <assimp/MemoryIOWrapper.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <fmt/format.h>
 #include <assimp/Importer.hpp>
 #include <cmath>
+#include <memory>
 #include <set>
 
 #include "core/error.h"
@@ -87,6 +90,24 @@ Mesh toMesh(const MapMesh &in, const std::filesystem::path &file) {
 // of those read past the end of a short file (5.2.5's MD5 token search, found by
 // fuzz/mesh_fuzzer.cpp): the extension decides the format. Assimp forgets the readers it is
 // told to unregister, so they are deleted here.
+// Assimp 5's OBJ reader cuts a file into lines in a buffer as large as the file and hands the
+// last token to strtol without a terminator when the last line fills it (AddressSanitizer's
+// strict string checks caught the read; digits at the end would run on past the buffer). Text
+// files read through this end in a newline and a NUL, so every line the reader cuts has one.
+class TerminatedTextFiles : public Assimp::DefaultIOSystem {
+  public:
+    Assimp::IOStream *Open(const char *file, const char *mode) override {
+        std::unique_ptr<Assimp::IOStream> stream(DefaultIOSystem::Open(file, mode));
+        if (!stream) return nullptr;
+        size_t size = stream->FileSize();
+        auto bytes = std::make_unique<uint8_t[]>(size + 2);
+        size_t read = stream->Read(bytes.get(), 1, size);
+        bytes[read] = '\n';
+        bytes[read + 1] = '\0';
+        return new Assimp::MemoryIOStream(bytes.release(), read + 2, true);
+    }
+};
+
 void keepReadersOf(Assimp::Importer &importer, const std::string &extension) {
     for (size_t i = importer.GetImporterCount(); i-- > 0;) {
         Assimp::BaseImporter *reader = importer.GetImporter(i);
@@ -115,6 +136,7 @@ Mesh importMesh(const std::filesystem::path &file) {
         throw InputError({file.string()},
                          "a mesh file needs an extension that names its format (.obj, .gltf, .glb, …)");
     keepReadersOf(importer, extension.substr(1));
+    if (extension == ".obj") importer.SetIOHandler(new TerminatedTextFiles);  // the importer owns it
     // Normals are the file's own; we do not invent smooth normals for faceted models. Assimp
     // checks what its reader built (face indices, counts) before the other steps use it.
     const aiScene *scene = importer.ReadFile(file.string(),

@@ -63,6 +63,23 @@ TEST_F(MeshImport, AFileNoReaderOfItsExtensionTakesIsRefused) {
               bare.string() + ": a mesh file needs an extension that names its format (.obj, .gltf, .glb, …)");
 }
 
+// An OBJ whose only line fills the file: Assimp cut it into a buffer as large as the file and
+// gave strtol the last token with no terminator (found by fuzz/mesh_obj under ASan's strict
+// string checks, which the sanitize preset runs this test with). The file is read with a
+// newline and a NUL after it now, and its "p" (point) statement of no index is refused by
+// name. A triangle whose file ends in a digit without a newline is read whole.
+TEST_F(MeshImport, AnObjWhoseLastLineFillsTheFileIsReadWithinIt) {
+    std::ifstream in(test::sourceFile("fuzz/regressions/mesh_obj/last_line_filling_the_file_unterminated.obj"),
+                     std::ios::binary);
+    std::string text((std::istreambuf_iterator<char>(in)), {});
+    ASSERT_EQ(text.size(), 16u);
+    auto file = folder_.write("filled.obj", text);
+    EXPECT_EQ(test::inputErrorOf([&] { importMesh(file); }),
+              file.string() + ": cannot read mesh: OBJ: Invalid face index.");
+    auto unterminated = folder_.write("unterminated.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3");
+    EXPECT_EQ(importMesh(unterminated).triangleCount(), 1u);
+}
+
 TEST_F(MeshImport, CutPlyIsRefused) {
     std::string whole = kQuadHeader + kQuadBody;
     auto file = folder_.write("cut.ply", whole.substr(0, whole.size() - 8));
