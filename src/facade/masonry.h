@@ -1,0 +1,32 @@
+// What every kind of masonry produces (digest-001 §2.5): the stones of one wall face, laid in the
+// wall's own plane, and the mortar between them. The wall is a polygon with holes (its openings)
+// in metres: x along the wall seen from outside, y up, the origin where the caller puts it.
+// Masonry is a texture of the wall, not geometry (L1013: stones as geometry would "explode" the
+// triangle count): these polygons are baked to images, while the wall's mesh stays coarse.
+#pragma once
+
+#include <vector>
+
+#include "core/vecmath.h"
+
+namespace veduta {
+
+// A wall face to be filled: its outline and its openings, both counter-clockwise.
+struct WallFace {
+    std::vector<Vec2d> outline;
+    std::vector<std::vector<Vec2d>> openings;
+};
+
+struct Stone {
+    std::vector<Vec2d> outline;  // counter-clockwise, convex or not as its kind allows
+    Vec3f colour;                // linear RGB in [0, 1]
+    double depth = 0;            // how far it stands out of the mortar (Brick `tiefe`), metres
+};
+
+struct Masonry {
+    std::vector<Stone> stones;
+    Vec3f mortarColour;
+    double mortarThickness = 0;  // metres
+};
+
+}  // namespace veduta
