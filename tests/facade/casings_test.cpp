@@ -1,0 +1,223 @@
+#include "facade/casings.h"
+
+#include <CGAL/Boolean_set_operations_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <stdexcept>
+
+namespace veduta {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
+using Polygon = CGAL::Polygon_2<Kernel>;
+using PolygonWithHoles = CGAL::Polygon_with_holes_2<Kernel>;
+
+Polygon toCgal(const std::vector<Vec2d> &points) {
+    Polygon p;
+    for (Vec2d v : points) p.push_back(Kernel::Point_2(v.x, v.y));
+    return p;
+}
+
+double area(const std::vector<PolygonWithHoles> &parts) {
+    double sum = 0;
+    for (const PolygonWithHoles &p : parts) {
+        sum += CGAL::to_double(p.outer_boundary().area());
+        for (const Polygon &h : p.holes()) sum += CGAL::to_double(h.area());
+    }
+    return sum;
+}
+
+double overlap(const std::vector<Vec2d> &a, const std::vector<Vec2d> &b) {
+    std::vector<PolygonWithHoles> parts;
+    CGAL::intersection(toCgal(a), toCgal(b), std::back_inserter(parts));
+    return area(parts);
+}
+
+double outside(const std::vector<Vec2d> &piece, const std::vector<Vec2d> &region) {
+    std::vector<PolygonWithHoles> parts;
+    CGAL::difference(toCgal(piece), toCgal(region), std::back_inserter(parts));
+    return area(parts);
+}
+
+double areaOf(const std::vector<Vec2d> &polygon) { return CGAL::to_double(toCgal(polygon).area()); }
+
+const CoarseOpening kWindow{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+
+RefinedOpening archedWindow() {
+    std::array<EdgeRefinement, 4> e;
+    e[kTop] = {0, 0, 0, 0.3, {{0, 0}, {0.1, 0.6}, {0.3, 0.9}, {0.5, 1}, {0.7, 0.9}, {0.9, 0.6}, {1, 0}}};
+    return refineOpening(kWindow, e);
+}
+
+Casing casingOf(CasingStyle style) {
+    Casing c;
+    c.style = style;
+    c.edges = {{{0.1, 0.03}, {0.1, 0.02}, {0.1, 0.04}, {0.1, 0.02}}};
+    c.klinker = {0.12, 0.01, 0.01};
+    return c;
+}
+
+std::set<PieceKind> kindsOf(const OpeningPieces &result) {
+    std::set<PieceKind> kinds;
+    for (const FacadePiece &p : result.pieces) kinds.insert(p.kind);
+    return kinds;
+}
+
+TEST(Casings, NonDominantSideIsHeightLessTopSizeAndBottomThickness) {
+    OpeningPieces result = buildOpeningPieces(archedWindow(), casingOf(CasingStyle::Einfach), {});
+    size_t sides = 0;
+    for (const FacadePiece &p : result.pieces) {
+        auto [lo, hi] =
+            std::minmax_element(p.polygon.begin(), p.polygon.end(), [](Vec2d a, Vec2d b) { return a.y < b.y; });
+        auto left = std::min_element(p.polygon.begin(), p.polygon.end(), [](Vec2d a, Vec2d b) { return a.x < b.x; });
+        if (p.kind == PieceKind::Casing && std::abs(left->x - 0.9) <= 1e-12) {
+            EXPECT_NEAR(hi->y - lo->y, 1 - 0.3 - 0.1, 1e-12);
+            EXPECT_NEAR(lo->y, 0.1, 1e-12);
+            ++sides;
+        }
+    }
+    EXPECT_EQ(sides, 1u);
+}
+
+TEST(Casings, NoPiecesOverlapAndTheyTileTheHoleInEveryStyle) {
+    for (CasingStyle style :
+         {CasingStyle::Einfach, CasingStyle::Gesims, CasingStyle::Doppelgesims, CasingStyle::Klinker}) {
+        OpeningPieces result = buildOpeningPieces(archedWindow(), casingOf(style), {});
+        const std::vector<FacadePiece> &pieces = result.pieces;
+        double total = 0;
+        for (size_t i = 0; i < pieces.size(); ++i) {
+            EXPECT_GT(areaOf(pieces[i].polygon), 0) << "piece " << i;
+            total += areaOf(pieces[i].polygon);
+            EXPECT_NEAR(outside(pieces[i].polygon, result.hole), 0, 1e-12);
+            for (size_t j = i + 1; j < pieces.size(); ++j) {
+                EXPECT_NEAR(overlap(pieces[i].polygon, pieces[j].polygon), 0, 1e-12)
+                    << "style " << int(style) << " pieces " << i << ", " << j;
+            }
+        }
+        EXPECT_NEAR(total, areaOf(result.hole), 1e-9) << "style " << int(style);
+    }
+}
+
+TEST(Casings, PaneLiesInsideTheOpening) {
+    RefinedOpening opening = archedWindow();
+    OpeningPieces result = buildOpeningPieces(opening, casingOf(CasingStyle::Einfach), {});
+    size_t panes = 0;
+    for (const FacadePiece &p : result.pieces) {
+        if (p.kind != PieceKind::Pane) continue;
+        EXPECT_NEAR(outside(p.polygon, opening.outline()), 0, 1e-12);
+        ++panes;
+    }
+    EXPECT_EQ(panes, 4u);  // two bars cross the glass
+}
+
+TEST(Casings, EachStyleYieldsItsPieceKinds) {
+    using K = PieceKind;
+    RefinedOpening opening = archedWindow();
+    EXPECT_EQ(kindsOf(buildOpeningPieces(opening, casingOf(CasingStyle::Einfach), {})),
+              (std::set<K>{K::Casing, K::Frame, K::Bar, K::Pane}));
+    EXPECT_EQ(kindsOf(buildOpeningPieces(opening, casingOf(CasingStyle::Gesims), {})),
+              (std::set<K>{K::Cornice, K::Frame, K::Bar, K::Pane}));
+    EXPECT_EQ(kindsOf(buildOpeningPieces(opening, casingOf(CasingStyle::Doppelgesims), {})),
+              (std::set<K>{K::Cornice, K::GableCornice, K::Infill, K::Frame, K::Bar, K::Pane}));
+    EXPECT_EQ(kindsOf(buildOpeningPieces(opening, casingOf(CasingStyle::Klinker), {})),
+              (std::set<K>{K::KlinkerBrick, K::KlinkerMortar, K::Frame, K::Bar, K::Pane}));
+}
+
+TEST(Casings, KlinkerBricksAreEqualAndStandOutOfTheMortar) {
+    std::array<EdgeRefinement, 4> straight;
+    RefinedOpening opening = refineOpening(kWindow, straight);
+    Casing klinker = casingOf(CasingStyle::Klinker);
+    OpeningPieces result = buildOpeningPieces(opening, klinker, {});
+    // The bottom strip is 1 m: round(0.99 / 0.13) = 8 bricks of (1 − 9 · 0.01) / 8 m.
+    size_t bottomBricks = 0;
+    for (const FacadePiece &p : result.pieces) {
+        if (p.kind != PieceKind::KlinkerBrick) continue;
+        auto top = std::max_element(p.polygon.begin(), p.polygon.end(), [](Vec2d a, Vec2d b) { return a.y < b.y; });
+        if (top->y > 0.1 + 1e-12) continue;
+        auto [lo, hi] =
+            std::minmax_element(p.polygon.begin(), p.polygon.end(), [](Vec2d a, Vec2d b) { return a.x < b.x; });
+        EXPECT_NEAR(hi->x - lo->x, 0.91 / 8, 1e-12);
+        EXPECT_NEAR(p.front, 0.03 + 0.01, 1e-12);
+        ++bottomBricks;
+    }
+    EXPECT_EQ(bottomBricks, 8u);
+}
+
+TEST(Casings, HoleIsTheOuterOutlineOfCasingAndOpening) {
+    RefinedOpening opening = archedWindow();
+    OpeningPieces result = buildOpeningPieces(opening, casingOf(CasingStyle::Einfach), {});
+    EXPECT_NEAR(outside(opening.outline(), result.hole), 0, 1e-12);
+    // The arch's casing stands 0.1 above the arch's ends, as high as the band reaches.
+    auto top = std::max_element(result.hole.begin(), result.hole.end(), [](Vec2d a, Vec2d b) { return a.y < b.y; });
+    EXPECT_NEAR(top->y, 1, 1e-12);
+    EXPECT_FALSE(whyNotUnder(result.hole, 1).has_value());
+    EXPECT_TRUE(whyNotUnder(result.hole, 0.95).has_value());
+}
+
+TEST(Casings, DoorIsOnePolygonWithoutBarsOrThresholdFrame) {
+    std::array<EdgeRefinement, 4> e;
+    RefinedOpening door = refineOpening(kWindow, e, Dominance::BottomAndTop, OpeningKind::Door);
+    Casing casing = casingOf(CasingStyle::Einfach);
+    casing.edges[kBottom] = {};
+    OpeningPieces result = buildOpeningPieces(door, casing, {});
+    size_t doors = 0, frames = 0;
+    for (const FacadePiece &p : result.pieces) {
+        EXPECT_NE(p.kind, PieceKind::Bar);
+        EXPECT_NE(p.kind, PieceKind::Pane);
+        doors += p.kind == PieceKind::Door;
+        frames += p.kind == PieceKind::Frame;
+        if (p.kind == PieceKind::Door) {
+            auto low = std::min_element(p.polygon.begin(), p.polygon.end(), [](Vec2d a, Vec2d b) { return a.y < b.y; });
+            EXPECT_EQ(low->y, 0);
+        }
+    }
+    EXPECT_EQ(doors, 1u);
+    EXPECT_EQ(frames, 3u);
+}
+
+TEST(Casings, OversizedCasingsAreRefused) {
+    Casing thick = casingOf(CasingStyle::Einfach);
+    thick.edges[kBottom].thickness = 0.8;
+    EXPECT_THROW(buildOpeningPieces(archedWindow(), thick, {}), std::invalid_argument);
+    Casing tooThickForBand = casingOf(CasingStyle::Doppelgesims);
+    tooThickForBand.edges[kTop].thickness = 0.2;
+    EXPECT_THROW(buildOpeningPieces(archedWindow(), tooThickForBand, {}), std::invalid_argument);
+    EXPECT_THROW(buildOpeningPieces(archedWindow(), casingOf(CasingStyle::Einfach), {0.6, 0, -0.1}),
+                 std::invalid_argument);
+}
+
+TEST(Casings, ExtrudedPiecesFaceOutOfTheWall) {
+    std::array<EdgeRefinement, 4> straight;
+    OpeningPieces result = buildOpeningPieces(refineOpening(kWindow, straight), casingOf(CasingStyle::Einfach), {});
+    // A south wall: along +x, up +z, so outward is −y.
+    WallFrame3d frame{{10, 5, 0}, {1, 0, 0}, {0, 0, 1}};
+    PieceMaterials materials;
+    materials.casing = 1;
+    materials.frame = 2;
+    materials.pane = 3;
+    Mesh mesh = extrudePieces(result.pieces, frame, materials);
+    ASSERT_EQ(mesh.indices.size(), 3 * mesh.triangleMaterials.size());
+    double paneArea = 0;
+    for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+        Vec3f a = mesh.positions[mesh.indices[3 * t]], b = mesh.positions[mesh.indices[3 * t + 1]],
+              c = mesh.positions[mesh.indices[3 * t + 2]];
+        Vec3f n = cross(b - a, c - a);
+        EXPECT_NE(mesh.triangleMaterials[t], kNoMaterial);
+        if (mesh.triangleMaterials[t] == 3) {
+            EXPECT_LT(n.y, 0);
+            EXPECT_NEAR(a.y, 5 + 0.1, 1e-6);  // the pane lies 0.1 m behind the wall plane
+            paneArea += length(n) / 2;
+        }
+    }
+    double expected = 0;
+    for (const FacadePiece &p : result.pieces) expected += p.kind == PieceKind::Pane ? areaOf(p.polygon) : 0;
+    EXPECT_NEAR(paneArea, expected, 1e-5);
+}
+
+}  // namespace
+}  // namespace veduta

@@ -1,0 +1,103 @@
+#include "facade/consoles.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace veduta {
+namespace {
+
+// Fig. 5.28 (L1216): one console, abstand 1.5, 0.35 × 0.45 profile units.
+constexpr const char *kFigure5_28 =
+    R"(Modifications { line, rel, 0, 0.2; arc, abs, 90, 45, 0.5, 0, 1, 2; line, rel, -90, 0.4; }
+Consoles { 1.5; "objects/simple_console.obj", 0.35, 0.45; }
+TextureDescs { "textures/frieze.bmp", 0.0, 0.625, 0.04875, 0.25;
+               "textures/frieze.bmp", 0.0, 1.0, 0.5, 0.625;
+               "textures/frieze.bmp", 0.953125, 0.625, 1.0, 0.25; })";
+
+struct Placed {
+    CorniceDescription cornice;
+    double scale = 0;
+    ProfileOutline outline;
+};
+
+Placed figure5_28(double height) {
+    Placed placed;
+    placed.cornice = parseCorniceDescription(kFigure5_28, "cornice.txt");
+    ProfileOutline traced = traceProfile(placed.cornice.profile, 5);
+    placed.scale = heightScale(placed.cornice.profile, traced, height);
+    placed.outline = scaledOutline(traced, placed.scale);
+    return placed;
+}
+
+TEST(Consoles, TenMetreRunWithAbstand1_5GetsSevenEvenlySpaced) {
+    Placed placed = figure5_28(0.5);
+    SweepPath path{{{0, 0}, {10, 0}}, 3.0};
+    std::vector<Transform> consoles = placeConsoles(path, placed.cornice.consoles[0], placed.outline, placed.scale);
+    ASSERT_EQ(consoles.size(), 7u);
+    for (size_t i = 0; i < consoles.size(); ++i) {
+        Vec3f foot = consoles[i].applyPoint({0, 0, 0});
+        EXPECT_NEAR(foot.x, 0.5 + 1.5 * double(i), 1e-5);  // centred: 0.5 m free at both ends
+        EXPECT_NEAR(foot.y, 0, 1e-6);
+        EXPECT_NEAR(foot.z, 3.0, 1e-6);
+    }
+}
+
+TEST(Consoles, UnitBoxFillsTheScaledRectangleAndTheProfilesReach) {
+    Placed placed = figure5_28(0.5);
+    double reach = 0;
+    for (Vec2d point : placed.outline.points) reach = std::max(reach, point.x);
+    SweepPath path{{{0, 0}, {10, 0}}, 3.0};  // outside on the right: -y
+    Transform console = placeConsoles(path, placed.cornice.consoles[0], placed.outline, placed.scale)[0];
+    Vec3f corner = console.applyPoint({0.5f, 1, 1});
+    EXPECT_NEAR(corner.x, 0.5 + 0.35 * placed.scale / 2, 1e-6);
+    EXPECT_NEAR(corner.y, -reach, 1e-6);
+    EXPECT_NEAR(corner.z, 3.0 + 0.45 * placed.scale, 1e-6);
+    EXPECT_GT(console.determinant(), 0);  // not mirrored
+}
+
+TEST(Consoles, RunWithItsOutsideOnTheLeftIsNotMirrored) {
+    Placed placed = figure5_28(0.5);
+    SweepPath path{{{0, 0}, {10, 0}}, 0, false, OutwardSide::Left};
+    std::vector<Transform> consoles = placeConsoles(path, placed.cornice.consoles[0], placed.outline, placed.scale);
+    ASSERT_EQ(consoles.size(), 7u);
+    for (const Transform &console : consoles) {
+        EXPECT_GT(console.determinant(), 0);
+        EXPECT_GT(console.applyPoint({0, 0, 1}).y, 0);  // out of the wall is +y here
+    }
+}
+
+TEST(Consoles, ConcaveCornerKeepsConsolesClearOfTheMitre) {
+    Placed placed = figure5_28(0.5);
+    double reach = 0;
+    for (Vec2d point : placed.outline.points) reach = std::max(reach, point.x);
+    double halfWidth = 0.35 * placed.scale / 2;
+    // An L, counter-clockwise: the concave corner is (4, 4).
+    SweepPath path{{{0, 0}, {8, 0}, {8, 4}, {4, 4}, {4, 8}, {0, 8}}, 0, true};
+    std::vector<Transform> consoles = placeConsoles(path, placed.cornice.consoles[0], placed.outline, placed.scale);
+    EXPECT_FALSE(consoles.empty());
+    for (const Transform &console : consoles) {
+        Vec3f foot = console.applyPoint({0, 0, 0});
+        double toCorner = std::hypot(foot.x - 4, foot.y - 4);
+        EXPECT_GE(toCorner, halfWidth - 1e-6);
+        if (std::abs(foot.x - 4) < 1e-6 || std::abs(foot.y - 4) < 1e-6) {
+            EXPECT_GE(toCorner, halfWidth + reach - 1e-5);
+        }
+    }
+}
+
+TEST(Consoles, CountIsLimited) {
+    Placed placed = figure5_28(0.5);
+    Console console = placed.cornice.consoles[0];
+    console.spacing = 1e-5;
+    try {
+        placeConsoles(SweepPath{{{0, 0}, {10, 0}}}, console, placed.outline, placed.scale);
+        FAIL() << "no error";
+    } catch (const InputError &error) {
+        EXPECT_EQ(std::string(error.what()),
+                  "cornice.txt:2:12: consoles 1e-05 m apart would be more than 100000 on a 10 m wall");
+    }
+}
+
+}  // namespace
+}  // namespace veduta

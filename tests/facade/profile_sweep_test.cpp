@@ -1,0 +1,180 @@
+#include "facade/profile_sweep.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_2_algorithms.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace veduta {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+// digest-001 §2.6: Fig. 5.20 verbatim (L1157) and Fig. 5.28 verbatim (L1216).
+constexpr const char *kFigure5_20 =
+    R"(Modifications { line, rel, 90, 0.3; line, rel, -90, 10.0; line, rel, 90, 0.6; line, rel, -90, 11.0;
+line, rel, 90, 0.6; line, rel, -90, 0.6; line, rel, 90, 0.6; line, rel, -90, 2.0; line, rel, 90, 2.0;
+arc, rel, 0, -90, 4.0; line, rel, 90, 5.0; line, rel, -90, 5.0; line, rel, 90, 0.6; line, rel, -90, 0.6;
+line, rel, 45, 7.0; line, rel, -45, 0.6; line, rel, 90, 0.6; line, rel, -90, 2.0; line, rel, -84, 22.0; })";
+// Its lines-only prefix (digest §8 row 10): a cross section that stays out of the wall.
+constexpr const char *kFigure5_20Lines =
+    R"(Modifications { line, rel, 90, 0.3; line, rel, -90, 10.0; line, rel, 90, 0.6; line, rel, -90, 11.0;
+line, rel, 90, 0.6; line, rel, -90, 0.6; line, rel, 90, 0.6; line, rel, -90, 2.0; line, rel, 90, 2.0; })";
+constexpr const char *kFigure5_28 =
+    R"(Modifications { line, rel, 0, 0.2; arc, abs, 90, 45, 0.5, 0, 1, 2; line, rel, -90, 0.4; }
+Consoles { 1.5; "objects/simple_console.obj", 0.35, 0.45; }
+TextureDescs { "textures/frieze.bmp", 0.0, 0.625, 0.04875, 0.25;
+               "textures/frieze.bmp", 0.0, 1.0, 0.5, 0.625;
+               "textures/frieze.bmp", 0.953125, 0.625, 1.0, 0.25; })";
+
+struct Cornice {
+    CorniceDescription description;
+    ProfileOutline outline;  // in metres
+};
+
+Cornice corniceOf(const char *text, double height) {
+    Cornice cornice;
+    cornice.description = parseCorniceDescription(text, "cornice.txt");
+    ProfileOutline traced = traceProfile(cornice.description.profile, 10);
+    cornice.outline = scaledOutline(traced, heightScale(cornice.description.profile, traced, height));
+    return cornice;
+}
+
+double distanceToLine(Vec2d point, Vec2d a, Vec2d b) {
+    Vec2d direction = (b - a) * (1 / length(b - a));
+    return std::abs(cross(direction, point - a));
+}
+
+bool meshHasVertex(const Mesh &mesh, Vec2d plan, double z) {
+    return std::any_of(mesh.positions.begin(), mesh.positions.end(), [&](Vec3f p) {
+        return std::abs(p.x - plan.x) < 1e-5 && std::abs(p.y - plan.y) < 1e-5 && std::abs(p.z - z) < 1e-5;
+    });
+}
+
+// Every profile point draws a closed, simple ring parallel to the footprint at its own distance,
+// and the mesh has a vertex at every corner of it.
+void expectParallelSimpleRings(const Cornice &cornice, const SweepPath &path, const SweptCornice &swept) {
+    size_t n = path.points.size();
+    for (Vec2d point : cornice.outline.points) {
+        std::vector<Vec2d> ring = offsetLine(path, point.x);
+        ASSERT_EQ(ring.size(), n);
+        std::vector<Kernel::Point_2> polygon;
+        for (Vec2d corner : ring) polygon.emplace_back(corner.x, corner.y);
+        EXPECT_TRUE(CGAL::is_simple_2(polygon.begin(), polygon.end(), Kernel()));
+        for (size_t i = 0; i < n; ++i) {
+            Vec2d a = path.points[i], b = path.points[(i + 1) % n];
+            EXPECT_NEAR(distanceToLine(ring[i], a, b), std::abs(point.x), 1e-12);
+            EXPECT_NEAR(distanceToLine(ring[(i + 1) % n], a, b), std::abs(point.x), 1e-12);
+            EXPECT_TRUE(meshHasVertex(swept.mesh, ring[i], path.baseHeight + point.y));
+        }
+    }
+}
+
+// Each triangle's winding agrees with its vertices' normals: faces look out of the material.
+void expectWindingFollowsNormals(const Mesh &mesh, float least) {
+    for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+        uint32_t a = mesh.indices[3 * t], b = mesh.indices[3 * t + 1], c = mesh.indices[3 * t + 2];
+        Vec3f face = cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
+        if (length(face) < 1e-9f) continue;
+        EXPECT_GT(dot(normalize(face), mesh.normals[a]), least) << "triangle " << t;
+    }
+}
+
+TEST(ProfileSweep, RectangleGivesClosedParallelRings) {
+    Cornice cornice = corniceOf(kFigure5_20, 0.8);
+    SweepPath path{{{0, 0}, {10, 0}, {10, 6}, {0, 6}}, 7.5, true};
+    SweptCornice swept = sweepCornice(cornice.description, cornice.outline, path, {});
+    expectParallelSimpleRings(cornice, path, swept);
+    expectWindingFollowsNormals(swept.mesh, 0.999f - 0.05f);  // arcs are smooth, 10° steps
+    EXPECT_EQ(swept.mesh.triangleMaterials.size(), swept.mesh.triangleCount());
+    EXPECT_EQ(swept.triangleTextures.size(), swept.mesh.triangleCount());
+    EXPECT_EQ(swept.mesh.normals.size(), swept.mesh.vertexCount());
+    EXPECT_EQ(swept.mesh.uvs.size(), swept.mesh.vertexCount());
+    // 18 lines and a 9-step arc on 4 edges, two triangles per quad.
+    EXPECT_EQ(swept.mesh.triangleCount(), 4u * (18 + 9) * 2);
+}
+
+TEST(ProfileSweep, LFootprintWithAConcaveCornerGivesClosedParallelRings) {
+    Cornice cornice = corniceOf(kFigure5_20, 0.8);
+    SweepPath path{{{0, 0}, {8, 0}, {8, 4}, {4, 4}, {4, 8}, {0, 8}}, 3, true};
+    SweptCornice swept = sweepCornice(cornice.description, cornice.outline, path, {});
+    expectParallelSimpleRings(cornice, path, swept);
+}
+
+TEST(ProfileSweep, MitreStretchesTheProfileByOneOverCosHalfTheTurn) {
+    SweepPath path{{{0, 0}, {10, 0}, {10, 6}, {0, 6}}, 0, true};
+    std::vector<Vec2d> ring = offsetLine(path, 0.5);
+    EXPECT_NEAR(ring[1].x, 10.5, 1e-12);  // corner (10, 0): out by 0.5 · √2 along the bisector
+    EXPECT_NEAR(ring[1].y, -0.5, 1e-12);
+    SweepPath left{{{0, 6}, {10, 6}, {10, 0}, {0, 0}}, 0, true, OutwardSide::Left};
+    std::vector<Vec2d> same = offsetLine(left, 0.5);
+    EXPECT_NEAR(same[2].x, 10.5, 1e-12);
+    EXPECT_NEAR(same[2].y, -0.5, 1e-12);
+}
+
+TEST(ProfileSweep, UvRunsInMetresAlongTheRunAndTheProfile) {
+    Cornice cornice = corniceOf("Modifications { line, rel, 0, 2; }", 1);
+    SweepPath path{{{0, 0}, {3, 0}, {3, 4}}, 0};
+    SweptCornice swept = sweepCornice(cornice.description, cornice.outline, path, {});
+    ASSERT_EQ(swept.mesh.triangleCount(), 4u);
+    float most = 0;
+    for (size_t i = 0; i < swept.mesh.vertexCount(); ++i) {
+        EXPECT_NEAR(swept.mesh.uvs[i].y, swept.mesh.positions[i].z, 1e-6);
+        most = std::max(most, swept.mesh.uvs[i].x);
+    }
+    EXPECT_NEAR(most, 7, 1e-6);
+}
+
+TEST(ProfileSweep, OpenRunEndsAreCappedByTheCrossSection) {
+    Cornice cornice = corniceOf(kFigure5_20Lines, 0.8);
+    SweepPath path{{{0, 0}, {5, 0}}, 0};
+    SweptCornice swept = sweepCornice(cornice.description, cornice.outline, path, {true});
+    // The cross section closed along the wall, by the shoelace formula (it is simple).
+    std::vector<Vec2d> polygon = cornice.outline.points;
+    polygon.push_back({0, polygon.back().y});
+    double area = 0;
+    for (size_t i = 0; i < polygon.size(); ++i) area += cross(polygon[i], polygon[(i + 1) % polygon.size()]);
+    area = std::abs(area) / 2;
+    double start = 0, end = 0;
+    for (size_t t = 0; t < swept.mesh.triangleCount(); ++t) {
+        const Mesh &mesh = swept.mesh;
+        Vec3f a = mesh.positions[mesh.indices[3 * t]], b = mesh.positions[mesh.indices[3 * t + 1]],
+              c = mesh.positions[mesh.indices[3 * t + 2]];
+        Vec3f face = cross(b - a, c - a);
+        if (std::abs(face.y) > 1e-9f || std::abs(face.z) > 1e-9f) continue;
+        (face.x < 0 ? start : end) += length(face) / 2;
+        EXPECT_NEAR(a.x, face.x < 0 ? 0 : 5, 1e-6);
+    }
+    EXPECT_NEAR(start, area, 1e-6);
+    EXPECT_NEAR(end, area, 1e-6);
+}
+
+TEST(ProfileSweep, TexturedBandGetsEndPiecesWithExactlyTheirRectangles) {
+    Cornice cornice = corniceOf(kFigure5_28, 0.5);
+    SweepPath path{{{0, 0}, {4, 0}, {4, 3}, {0, 3}}, 2, true};
+    SweptCornice swept = sweepCornice(cornice.description, cornice.outline, path, {});
+    const std::vector<TextureRegion> &pool = cornice.description.textures;
+    std::array<size_t, 3> counts{};
+    for (size_t t = 0; t < swept.mesh.triangleCount(); ++t) {
+        int texture = swept.triangleTextures[t];
+        if (texture < 0) continue;
+        ++counts[size_t(texture)];
+        for (int k = 0; k < 3; ++k) {
+            Vec2f uv = swept.mesh.uvs[swept.mesh.indices[3 * t + k]];
+            const TextureRegion &region = pool[size_t(texture)];
+            EXPECT_TRUE(uv.x == float(region.left) || uv.x == float(region.right));
+            EXPECT_GE(uv.y, float(region.top) - 1e-6f);
+            EXPECT_LE(uv.y, float(region.bottom) + 1e-6f);
+        }
+    }
+    // One start and one end piece per edge (the arc has 5 quads); mid tiles between.
+    EXPECT_EQ(counts[0], 4u * 5 * 2);
+    EXPECT_EQ(counts[2], 4u * 5 * 2);
+    EXPECT_GT(counts[1], counts[0]);
+    EXPECT_EQ(counts[1] % (5 * 2), 0u);
+}
+
+}  // namespace
+}  // namespace veduta
