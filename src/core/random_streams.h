@@ -38,7 +38,7 @@ enum class RandomStream : uint32_t {
     SlgParameters = 0x534c4756u,         // "SLGV": the rand() of Schrader's parameter cascade (slg/urban_geography.h)
     MasonryBricks = 0x4d42524bu,         // "MBRK": a brick's colour within its Brick's range (facade/brick_bond.h)
     MasonryAshlar = 0x4d41534cu,         // "MASL": an ashlar stone's size and colour (facade/ashlar.h)
-    MasonryCyclopean = 0x4d435943u,      // "MCYC": the seeds of a cyclopean wall's stones and their colours (facade/cyclopean.h)
+    MasonryCyclopean = 0x4d435943u,      // "MCYC": a cyclopean wall's seeds and stone colours (facade/cyclopean.h)
 
     // Identities: not random, but hashed like the draws and kept apart from them.
     CityDataBlock = 0x4344424bu,  // "CDBK": a CityData block, from the ids of its outline's points

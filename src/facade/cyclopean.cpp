@@ -1,0 +1,306 @@
+#include "facade/cyclopean.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Partition_traits_2.h>
+#include <CGAL/Polygon_2.h>
+#include <CGAL/Polygon_triangulation_decomposition_2.h>
+#include <CGAL/Polygon_with_holes_2.h>
+#include <CGAL/partition_2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <iterator>
+#include <list>
+
+#include <fmt/format.h>
+
+#include "core/hash.h"
+#include "core/random_streams.h"
+
+namespace veduta {
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Polygon = CGAL::Polygon_2<Kernel>;
+using PolygonWithHoles = CGAL::Polygon_with_holes_2<Kernel>;
+
+// Seeds per grid cell on average (L1094 says only "equally many"): enough that a cell's seeds lie
+// irregularly, few enough that the grid still spreads them evenly before Lloyd.
+constexpr double kSeedsPerCell = 4;
+// How often a seed is drawn in its cell before it is given up: cells are mostly wall, so a draw
+// misses with odds below one half.
+constexpr uint32_t kSeedDraws = 64;
+// The 20 % fewer stones than hexagonal packing holds (L1091).
+constexpr double kPackingShare = 0.8;
+// Counts are whole numbers of double; larger ones saturate (and are refused by the limits).
+constexpr double kLargestCount = 1e15;
+
+// What each hash draws, so that the draws for one stone or cell never share numbers.
+enum Draw : uint32_t { SeedX, SeedY, StoneColour, JointWidth };
+
+float draw(uint32_t seed, uint32_t wallId, Draw what, uint32_t index, uint32_t second = 0, uint32_t third = 0) {
+    return bitsToUnitFloat(
+        hashValues({seed, wallId, streamTag(RandomStream::MasonryCyclopean), what, index, second, third}));
+}
+
+Polygon polygon(const std::vector<Vec2d> &ring) {
+    Polygon result;
+    for (Vec2d p : ring) result.push_back({p.x, p.y});
+    return result;
+}
+
+template <typename Points>
+std::vector<Vec2d> ring(const Points &points) {
+    std::vector<Vec2d> result;
+    for (const auto &p : points) result.push_back({p.x(), p.y()});
+    return result;
+}
+
+Vec2d unit(Vec2d v) { return v * (1 / length(v)); }
+
+// A count from the thesis' formula: floored, with a nanometre's slack so that a wall of exactly
+// k courses is not rounded down to k − 1, never negative.
+int64_t wholeCount(double value) { return int64_t(std::clamp(std::floor(value + 1e-9), 0.0, kLargestCount)); }
+
+void checkDescription(const CyclopeanMasonry &d) {
+    if ((d.stones > 0) == (d.spacing > 0)) {
+        throw InputError(d.loc, "a cyclopean wall needs either a stone count (Steine) or a spacing (Abstand) above 0");
+    }
+    if (d.stones < 0 || d.spacing < 0 || !std::isfinite(d.spacing)) {
+        throw InputError(d.loc, "a cyclopean wall's stone count and spacing must not be negative");
+    }
+    if (d.stones > kMaxCyclopeanStones) {
+        throw InputError(
+            d.loc,
+            fmt::format("{} stones on a cyclopean wall are more than the {} allowed", d.stones, kMaxCyclopeanStones));
+    }
+    if (d.lloyd < 0 || d.lloyd > kMaxLloydSteps) {
+        throw InputError(d.loc, fmt::format("Lloyd steps must lie in 0..{}, not {}", kMaxLloydSteps, d.lloyd));
+    }
+    if (!(d.joint >= 0) || !std::isfinite(d.joint) || !(d.depth >= 0) || !std::isfinite(d.depth)) {
+        throw InputError(d.loc, "a cyclopean wall's joint and depth must be finite and not negative");
+    }
+    for (const Vec3f &colour : {d.startColour, d.endColour, d.mortarColour}) {
+        for (int c = 0; c < 3; ++c) {
+            if (!(colour[c] >= 0 && colour[c] <= 1)) throw InputError(d.loc, "colours must lie in [0, 1]");
+        }
+    }
+}
+
+// r from `Abstand`, or from `Steine` by the hexagonal cells they fill (see the header).
+double meanRadius(const WallRegion &region, const CyclopeanMasonry &d) {
+    if (d.spacing > 0) return d.spacing / 2;
+    return std::sqrt(kPackingShare * region.area() / (2 * std::sqrt(3.0) * d.stones));
+}
+
+int64_t targetCount(const WallRegion &region, const CyclopeanMasonry &d, double radius) {
+    if (d.stones > 0) return d.stones;
+    Vec2d size = region.upper() - region.lower();
+    double share = region.area() / (size.x * size.y);
+    int64_t count =
+        std::max<int64_t>(1, std::llround(double(cyclopeanStoneCount(size.x, size.y, radius).stones) * share));
+    if (count > kMaxCyclopeanStones) {
+        throw InputError(d.loc,
+                         fmt::format("a spacing of {} m puts {} stones on a {:.3g} × {:.3g} m wall, more than the "
+                                     "{} allowed",
+                                     d.spacing, count, size.x, size.y, kMaxCyclopeanStones));
+    }
+    return count;
+}
+
+double segmentDistance(Vec2d point, Vec2d a, Vec2d b) {
+    Vec2d span = b - a;
+    double t = std::clamp(dot(point - a, span) / dot(span, span), 0.0, 1.0);
+    return length(point - (a + span * t));
+}
+
+struct ReflexCorner {
+    Vec2d corner;
+    Vec2d across;             // unit, perpendicular to the bisector
+    double boundaryDistance;  // to the nearest boundary edge not at the corner
+};
+
+// The region's corners whose inside angle exceeds 180°. The region lies left of every ring (outline
+// counter-clockwise, holes clockwise), so these are the right turns.
+std::vector<ReflexCorner> reflexCorners(const WallRegion &region) {
+    std::vector<const std::vector<Vec2d> *> rings;
+    for (const RegionPiece &piece : region.pieces()) {
+        rings.push_back(&piece.outline);
+        for (const auto &hole : piece.holes) rings.push_back(&hole);
+    }
+    std::vector<ReflexCorner> corners;
+    for (const auto *r : rings) {
+        size_t n = r->size();
+        for (size_t i = 0; i < n; ++i) {
+            Vec2d previous = (*r)[(i + n - 1) % n], corner = (*r)[i], next = (*r)[(i + 1) % n];
+            if (cross(corner - previous, next - corner) >= 0) continue;
+            // With u, w the unit edge directions away from the corner, the bisector runs along
+            // u + w and the line of the seeds along w − u, which stays exact for near-straight corners.
+            Vec2d across = unit(unit(next - corner) - unit(previous - corner));
+            double distance = 1e300;
+            for (const auto *other : rings) {
+                for (size_t j = 0; j < other->size(); ++j) {
+                    Vec2d a = (*other)[j], b = (*other)[(j + 1) % other->size()];
+                    if (a == corner || b == corner) continue;
+                    distance = std::min(distance, segmentDistance(corner, a, b));
+                }
+            }
+            corners.push_back({corner, across, distance});
+        }
+    }
+    return corners;
+}
+
+// Seeds spread over the cells of a grid that lie mostly in the wall (L1094), about `count` in all.
+std::vector<Vec2d> gridSeeds(const WallRegion &region, int64_t count, uint32_t seed, uint32_t wallId) {
+    Vec2d lower = region.lower(), size = region.upper() - region.lower();
+    double side = std::sqrt(kSeedsPerCell * region.area() / double(count));
+    int64_t columns = std::max<int64_t>(1, std::llround(size.x / side));
+    int64_t rows = std::max<int64_t>(1, std::llround(size.y / side));
+    Vec2d cell{size.x / double(columns), size.y / double(rows)};
+
+    struct GridCell {
+        uint32_t index;
+        Vec2d lower;
+        double share;  // of it in the wall
+    };
+    std::vector<GridCell> cells;
+    for (int64_t row = 0; row < rows; ++row) {
+        for (int64_t column = 0; column < columns; ++column) {
+            Vec2d at = lower + Vec2d{cell.x * double(column), cell.y * double(row)};
+            std::vector<Vec2d> square{at, at + Vec2d{cell.x, 0}, at + cell, at + Vec2d{0, cell.y}};
+            double share = region.moments(square, at).area / (cell.x * cell.y);
+            if (share > 0) cells.push_back({uint32_t(row * columns + column), at, share});
+        }
+    }
+    auto mostlyWall = [](const GridCell &c) { return c.share >= 0.5; };
+    if (std::any_of(cells.begin(), cells.end(), mostlyWall)) std::erase_if(cells, std::not_fn(mostlyWall));
+
+    int64_t perCell = std::max<int64_t>(1, std::llround(double(count) / double(cells.size())));
+    std::vector<Vec2d> seeds;
+    for (const GridCell &c : cells) {
+        for (uint32_t k = 0; k < uint32_t(perCell); ++k) {
+            for (uint32_t attempt = 0; attempt < kSeedDraws; ++attempt) {
+                Vec2d p = c.lower +
+                    Vec2d{cell.x * draw(seed, wallId, SeedX, c.index, k, attempt),
+                          cell.y * draw(seed, wallId, SeedY, c.index, k, attempt)};
+                if (region.contains(p)) {
+                    seeds.push_back(p);
+                    break;
+                }
+            }
+        }
+    }
+    return seeds;
+}
+
+// The convex stone a cell part leaves when each of its edges moves inwards by its half joint.
+std::vector<Vec2d> shrunkStone(const std::vector<Vec2d> &part, double halfJoint, uint32_t seed, uint32_t wallId,
+                               uint32_t stone) {
+    std::vector<Vec2d> outline = part;
+    for (size_t i = 0; i < part.size() && !outline.empty(); ++i) {
+        Vec2d a = part[i], b = part[(i + 1) % part.size()];
+        Vec2d inward = unit(Vec2d{a.y - b.y, b.x - a.x});
+        double offset = halfJoint * (0.5 + draw(seed, wallId, JointWidth, stone, uint32_t(i)));
+        // Keep dot(x − a, inward) >= offset.
+        outline = clipToHalfPlane(outline, inward * -1, -(dot(a, inward) + offset));
+    }
+    return outline;
+}
+
+}  // namespace
+
+CyclopeanStoneCount cyclopeanStoneCount(double width, double height, double radius) {
+    CyclopeanStoneCount count;
+    count.firstCourse = wholeCount(width / (2 * radius));
+    count.secondCourse = wholeCount((width - radius) / (2 * radius));
+    count.courses = wholeCount((height - 2 * radius) / (std::sqrt(3.0) * radius) + 1);
+    double packed = double((count.courses + 1) / 2) * double(count.firstCourse) +
+        double(count.courses / 2) * double(count.secondCourse);
+    count.packed = int64_t(std::min(packed, kLargestCount));
+    count.stones = std::llround(kPackingShare * double(count.packed));
+    return count;
+}
+
+std::vector<CornerSeeds> cornerSeeds(const WallRegion &region, double pointDistance) {
+    std::vector<ReflexCorner> corners = reflexCorners(region);
+    std::vector<CornerSeeds> result;
+    for (const ReflexCorner &c : corners) {
+        // Shrink PD so that the PD circles of two corners touch at most (L1103), and so that the
+        // fixed seeds stay inside the wall.
+        double distance = std::min(pointDistance, c.boundaryDistance);
+        for (const ReflexCorner &other : corners) {
+            if (&other != &c) distance = std::min(distance, length(other.corner - c.corner) / 2);
+        }
+        result.push_back(
+            {c.corner, distance, c.corner + c.across * (distance / 2), c.corner - c.across * (distance / 2)});
+    }
+    return result;
+}
+
+CyclopeanLayout layOutCyclopean(const WallRegion &region, const CyclopeanMasonry &description, uint32_t seed,
+                                uint32_t wallId) {
+    checkDescription(description);
+    CyclopeanLayout layout;
+    if (region.area() <= 0) return layout;
+    layout.radius = meanRadius(region, description);
+    layout.targetCount = targetCount(region, description, layout.radius);
+    layout.corners = cornerSeeds(region, 2 * layout.radius);
+
+    std::vector<Vec2d> seeds;
+    for (const CornerSeeds &c : layout.corners) {
+        seeds.push_back(c.first);
+        seeds.push_back(c.second);
+    }
+    size_t fixedCount = seeds.size();
+    for (Vec2d p : gridSeeds(region, layout.targetCount, seed, wallId)) {
+        bool nearCorner = std::any_of(layout.corners.begin(), layout.corners.end(),
+                                      [&](const CornerSeeds &c) { return length(p - c.corner) < c.distance; });
+        if (!nearCorner) seeds.push_back(p);
+    }
+    layout.relaxed = relaxLloyd(region, std::move(seeds), fixedCount, {description.lloyd, layout.radius / 1000});
+    return layout;
+}
+
+std::vector<std::vector<Vec2d>> convexParts(const RegionPiece &piece) {
+    std::vector<std::vector<Vec2d>> parts;
+    if (piece.holes.empty()) {
+        Polygon outline = polygon(piece.outline);
+        if (outline.is_convex()) return {piece.outline};
+        std::list<CGAL::Partition_traits_2<Kernel>::Polygon_2> convex;
+        CGAL::optimal_convex_partition_2(outline.vertices_begin(), outline.vertices_end(), std::back_inserter(convex));
+        for (const auto &part : convex) parts.push_back(ring(part.container()));
+        return parts;
+    }
+    PolygonWithHoles withHoles(polygon(piece.outline));
+    for (const auto &hole : piece.holes) withHoles.add_hole(polygon(hole));
+    std::list<Polygon> triangles;
+    CGAL::Polygon_triangulation_decomposition_2<Kernel>()(withHoles, std::back_inserter(triangles));
+    for (const Polygon &triangle : triangles) parts.push_back(ring(triangle.vertices()));
+    return parts;
+}
+
+Masonry cyclopeanMasonry(const WallFace &wall, const CyclopeanMasonry &description, uint32_t seed, uint32_t wallId) {
+    WallRegion region(wall);
+    CyclopeanLayout layout = layOutCyclopean(region, description, seed, wallId);
+    Masonry masonry{{}, description.mortarColour, description.joint};
+    uint32_t stone = 0;
+    for (const ClippedCell &cell : layout.relaxed.cells) {
+        for (const RegionPiece &piece : cell) {
+            for (const std::vector<Vec2d> &part : convexParts(piece)) {
+                std::vector<Vec2d> outline = shrunkStone(part, description.joint / 2, seed, wallId, stone);
+                if (!outline.empty()) {
+                    float t = draw(seed, wallId, StoneColour, stone);
+                    Vec3f colour = description.startColour + (description.endColour - description.startColour) * t;
+                    masonry.stones.push_back({std::move(outline), colour, description.depth});
+                }
+                ++stone;
+            }
+        }
+    }
+    return masonry;
+}
+
+}  // namespace veduta
