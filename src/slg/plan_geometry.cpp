@@ -27,12 +27,6 @@ constexpr double kDegrees = 180 / std::numbers::pi;
 
 }  // namespace
 
-double signedArea(const Polygon2d &polygon) {
-    double twice = 0;
-    for (size_t i = 0; i < polygon.size(); ++i) twice += cross(polygon[i], polygon[(i + 1) % polygon.size()]);
-    return twice / 2;
-}
-
 Vec2d vertexMean(const Polygon2d &polygon) {
     Vec2d sum;
     for (Vec2d p : polygon) sum = sum + p;

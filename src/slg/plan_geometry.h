@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/polygon_area.h"
 #include "core/vecmath.h"
 
 namespace veduta {
@@ -18,8 +19,7 @@ inline Vec2d leftNormal(Vec2d v) { return {-v.y, v.x}; }
 
 using Polygon2d = std::vector<Vec2d>;
 
-// Eq 27: the signed shoelace area, positive when the points run counter-clockwise.
-double signedArea(const Polygon2d &polygon);
+// Eq 27, the signed shoelace area, is core's signedArea (core/polygon_area.h).
 // Eq 28: the mean of the points (not the area's centroid), the thesis's centre of a city and
 // the apex of a tent roof.
 Vec2d vertexMean(const Polygon2d &polygon);
