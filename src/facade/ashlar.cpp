@@ -1,9 +1,5 @@
 #include "facade/ashlar.h"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Partition_traits_2.h>
-#include <CGAL/partition_2.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -13,14 +9,12 @@
 #include "core/check.h"
 #include "core/hash.h"
 #include "core/random_streams.h"
+#include "facade/convex_pieces.h"
 #include "facade/description_text.h"
 #include "facade/wall_mask.h"
 
 namespace veduta {
 namespace {
-
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Traits = CGAL::Partition_traits_2<Kernel>;
 
 double lerp(double a, double b, double t) { return a + (b - a) * t; }
 
@@ -55,39 +49,6 @@ double nextLength(double drawn, double rest, double least, double most, double m
     if (rest <= most) return rest;
     if (rest - drawn - mortar >= least) return drawn;
     return std::max(least, rest - mortar - least);
-}
-
-// The polygon without repeated or collinear vertices (exact orientation tests), as the convex
-// partition requires a strictly simple polygon.
-std::vector<Kernel::Point_2> cleaned(const std::vector<Vec2d> &outline) {
-    std::vector<Kernel::Point_2> points;
-    for (Vec2d p : outline) points.emplace_back(p.x, p.y);
-    bool changed = true;
-    while (changed && points.size() >= 3) {
-        changed = false;
-        for (size_t i = 0; i < points.size() && points.size() >= 3; ++i) {
-            const auto &a = points[(i + points.size() - 1) % points.size()], &c = points[(i + 1) % points.size()];
-            if (CGAL::orientation(a, points[i], c) == CGAL::COLLINEAR) {
-                points.erase(points.begin() + long(i));
-                changed = true;
-            }
-        }
-    }
-    return points;
-}
-
-std::vector<std::vector<Vec2d>> convexPieces(const std::vector<Vec2d> &outline) {
-    std::vector<Kernel::Point_2> points = cleaned(outline);
-    std::vector<std::vector<Vec2d>> pieces;
-    if (points.size() < 3) return pieces;
-    std::vector<Traits::Polygon_2> parts;
-    CGAL::optimal_convex_partition_2(points.begin(), points.end(), std::back_inserter(parts), Traits());
-    for (const auto &part : parts) {
-        std::vector<Vec2d> piece;
-        for (const auto &p : part.vertices()) piece.push_back({p.x(), p.y()});
-        pieces.push_back(std::move(piece));
-    }
-    return pieces;
 }
 
 // The calliper width of a convex polygon: over its edges, the least of the greatest distance of a
@@ -133,9 +94,7 @@ AshlarMasonry parseAshlarMasonry(std::string_view text, const std::string &file)
     }
     ashlar.colour = {readColour(block.items[2], "the stones' start colour"),
                      readColour(block.items[3], "the stones' end colour")};
-    block.items[4].expectFieldCount(1, 1, "the mortar thickness");
-    ashlar.mortarThickness = block.items[4].number(0, "the mortar thickness");
-    if (ashlar.mortarThickness < 0) throw InputError(block.items[4].loc, "the mortar thickness is negative");
+    ashlar.mortarThickness = readMortarThickness(block.items[4]);
     ashlar.mortarColour = readColour(block.items[5], "the mortar colour");
     return ashlar;
 }
@@ -147,6 +106,8 @@ Masonry layAshlar(const AshlarMasonry &ashlar, const WallFace &wall, const Mason
     double mortar = ashlar.mortarThickness * scale;
     double minLength = least.length * scale, maxLength = most.length * scale;
     double minWidth = kAshlarMinPieceFraction * std::min(least.length, least.height) * scale;
+    checkScaledSizes(wall, std::min(least.length, least.height) * scale,
+                     std::max({most.length, most.height, most.depth, ashlar.mortarThickness}) * scale, ashlar.loc);
     WallMask mask(wall, mortar, std::min(least.length, least.height) * scale);
     // The most stones the walk below can try, counting a short rest at both ends of every run and
     // the runs an opening can make in a course.

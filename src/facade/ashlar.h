@@ -20,7 +20,8 @@
 // * "A certain minimum size" (L1072) is a narrowest width (calliper width) of half the smaller
 //   minimum dimension, min(min l, min h) / 2: narrower slivers read as mortar, as in Fig. 5.11(b).
 // * Cut stones are split into the fewest convex pieces (CGAL's optimal convex partition), the
-//   thesis's three pieces in Fig. 5.11.
+//   thesis's three pieces in Fig. 5.11; a cut piece that touches itself at a corner (two grown
+//   openings meeting there) into triangles (facade/convex_pieces.h).
 #pragma once
 
 #include <string>
@@ -45,12 +46,14 @@ inline constexpr double kAshlarMinPieceFraction = 0.5;
 
 // Reads `AshlarMasonry { min l,h,t; max l,h,t; r,g,b; r,g,b; mortar; r,g,b; }` (Def 5.8), the text's
 // only block. Throws InputError "file:line:col: …" for a syntax error, another block, a missing item,
-// a size that is not positive, a minimum above its maximum or a colour outside 0..255.
+// a size that is not positive, a size or mortar above kMasonryLengthLimit, a minimum above its
+// maximum or a colour outside 0..255.
 AshlarMasonry parseAshlarMasonry(std::string_view text, const std::string &file);
 
 // The stones of `ashlar` laid on `wall` (see above): whole stones axis-parallel rectangles within
 // [min, max]; cut stones convex and no narrower than the minimum piece width. Throws InputError at
-// the AshlarMasonry block, before laying, when the wall could take more than kBrickLimit stones.
+// the AshlarMasonry block, before laying, when the wall could take more than kBrickLimit stones or
+// the scaled sizes do not suit the wall (checkScaledSizes).
 Masonry layAshlar(const AshlarMasonry &ashlar, const WallFace &wall, const MasonryPlacement &placement);
 
 }  // namespace veduta

@@ -10,6 +10,7 @@
 #include "core/check.h"
 #include "core/hash.h"
 #include "core/random_streams.h"
+#include "facade/convex_pieces.h"
 #include "facade/wall_mask.h"
 
 namespace veduta {
@@ -66,6 +67,10 @@ BondCourse readCourse(const DescriptionItem &item, const BlockIndex &index, std:
     BondCourse course;
     course.loc = item.loc;
     course.offset = item.number(0, "the course's offset (versatz)");
+    if (std::abs(course.offset) > kMasonryLengthLimit)
+        throw InputError(item.fields[0].loc,
+                         fmt::format("the course's offset {} is beyond the ±{} units allowed", item.fields[0].text,
+                                     kMasonryLengthLimit));
     for (size_t i = 1; i < item.fields.size(); ++i) {
         const DescriptionField &field = item.fields[i];
         BondUnit unit;
@@ -73,6 +78,10 @@ BondCourse readCourse(const DescriptionItem &item, const BlockIndex &index, std:
         if (field.kind == DescriptionField::Kind::Number) {
             if (!(field.number > 0))
                 throw InputError(field.loc, fmt::format("a gap of {} is not positive", field.text));
+            if (field.number > kMasonryLengthLimit)
+                throw InputError(
+                    field.loc,
+                    fmt::format("a gap of {} is above the {} units allowed", field.text, kMasonryLengthLimit));
             unit.length = field.number;
         } else {
             const std::string &name = item.string(i, "a brick's name or a gap length");
@@ -159,12 +168,6 @@ Stone stoneOf(std::vector<Vec2d> outline, const BrickKind &brick, float t, doubl
     return {std::move(outline), brick.colour.at(t), brick.size.depth * metresPerUnit};
 }
 
-double polygonArea(const std::vector<Vec2d> &polygon) {
-    double twice = 0;
-    for (size_t i = 0; i < polygon.size(); ++i) twice += cross(polygon[i], polygon[(i + 1) % polygon.size()]);
-    return 0.5 * twice;
-}
-
 }  // namespace
 
 Vec3f ColourRange::at(float t) const {
@@ -192,7 +195,48 @@ StoneSize readStoneSize(const DescriptionItem &item, std::string_view what) {
     if (!(size.length > 0)) throw InputError(item.fields[0].loc, fmt::format("{}: the length is not positive", what));
     if (!(size.height > 0)) throw InputError(item.fields[1].loc, fmt::format("{}: the height is not positive", what));
     if (size.depth < 0) throw InputError(item.fields[2].loc, fmt::format("{}: the depth is negative", what));
+    const char *names[] = {"length", "height", "depth"};
+    double values[] = {size.length, size.height, size.depth};
+    for (size_t i = 0; i < 3; ++i) {
+        if (values[i] > kMasonryLengthLimit)
+            throw InputError(item.fields[i].loc,
+                             fmt::format("{}: the {} {} is above the {} units allowed", what, names[i],
+                                         item.fields[i].text, kMasonryLengthLimit));
+    }
     return size;
+}
+
+double readMortarThickness(const DescriptionItem &item) {
+    item.expectFieldCount(1, 1, "the mortar thickness");
+    double thickness = item.number(0, "the mortar thickness");
+    if (thickness < 0) throw InputError(item.loc, "the mortar thickness is negative");
+    if (thickness > kMasonryLengthLimit)
+        throw InputError(item.fields[0].loc,
+                         fmt::format("the mortar thickness {} is above the {} units allowed", item.fields[0].text,
+                                     kMasonryLengthLimit));
+    return thickness;
+}
+
+void checkScaledSizes(const WallFace &wall, double least, double largest, const FileLoc &loc) {
+    if (wall.outline.empty()) return;  // no wall: WallMask reports it, an internal error
+    Vec2d low = wall.outline.front(), high = low;
+    for (Vec2d p : wall.outline) {
+        low = {std::min(low.x, p.x), std::min(low.y, p.y)};
+        high = {std::max(high.x, p.x), std::max(high.y, p.y)};
+    }
+    Vec2d size = high - low;
+    double extent = std::max(size.x, size.y);
+    double distance = std::max({std::abs(low.x), std::abs(low.y), std::abs(high.x), std::abs(high.y)});
+    if (!std::isfinite(largest) || !std::isfinite(least))
+        throw InputError(loc, "the masonry's sizes are not finite in metres");
+    if (largest > kScaledSizeLimit * extent)
+        throw InputError(
+            loc,
+            fmt::format("a size of {} m is out of all proportion to a wall of {} × {} m", largest, size.x, size.y));
+    if (least < kScaledSizeResolution * (distance + extent))
+        throw InputError(loc,
+                         fmt::format("stones of {} m are too small to lay on a wall reaching {} m from the origin",
+                                     least, distance));
 }
 
 BrickBond parseBrickBond(std::string_view text, const std::string &file) {
@@ -207,9 +251,7 @@ BrickBond parseBrickBond(std::string_view text, const std::string &file) {
     masonry.items[0].expectFieldCount(1, 1, "the masonry's pattern");
     masonry.items[0].string(0, "the pattern's name");
     const DescriptionBlock &pattern = blockNamed(index, masonry.items[0].fields[0]);
-    masonry.items[1].expectFieldCount(1, 1, "the mortar thickness");
-    bond.mortarThickness = masonry.items[1].number(0, "the mortar thickness");
-    if (bond.mortarThickness < 0) throw InputError(masonry.items[1].loc, "the mortar thickness is negative");
+    bond.mortarThickness = readMortarThickness(masonry.items[1]);
     bond.mortarColour = readColour(masonry.items[2], "the mortar colour");
 
     if (pattern.items.empty())
@@ -237,6 +279,17 @@ Masonry layBrickBond(const BrickBond &bond, const WallFace &wall, const MasonryP
         lowestCourse = std::min(lowestCourse, course.height);
         for (const BondUnit &unit : course.units) longestHang = std::max(longestHang, unit.height - course.height);
     }
+    // Every size the walk adds or multiplies, scaled: the bricks, gaps, offsets and mortar.
+    double least = lowestCourse, largest = bond.mortarThickness;
+    for (const BrickKind &brick : bond.bricks) {
+        least = std::min(least, brick.size.length);
+        largest = std::max({largest, brick.size.length, brick.size.height, brick.size.depth});
+    }
+    for (const BondCourse &course : bond.courses) {
+        largest = std::max({largest, course.length, std::abs(course.offset)});
+        for (const BondUnit &unit : course.units) largest = std::max(largest, unit.height);
+    }
+    checkScaledSizes(wall, least * scale, largest * scale, bond.loc);
     WallMask mask(wall, mortar, lowestCourse * scale);
     // The most bricks the walk below can try: the courses up the wall and those above it whose tall
     // bricks reach down into it, each with its repetitions over the width and two more.
@@ -275,9 +328,9 @@ Masonry layBrickBond(const BrickBond &bond, const WallFace &wall, const MasonryP
                     masonry.stones.push_back(stoneOf(std::move(outline), brick, t, scale));
                     continue;
                 }
-                double sliver = 1e-9 * polygonArea(outline);
+                double sliver = 1e-9 * signedArea(outline);
                 for (auto &piece : mask.clip(outline)) {
-                    if (polygonArea(piece) > sliver)
+                    if (signedArea(piece) > sliver)
                         masonry.stones.push_back(stoneOf(std::move(piece), brick, t, scale));
                 }
             }

@@ -55,12 +55,20 @@ struct ColourRange {
 // The item as a colour `r, g, b`: three whole numbers 0..255 (InputError with the place otherwise).
 Vec3f readColour(const DescriptionItem &item, std::string_view what);
 
+// The largest length, height, depth, gap, offset or mortar thickness a description may give, in its
+// units: beyond any masonry in any unit one is written in, and small enough that a course's sums of
+// kBondUnitLimit lengths, scaled to metres, stay finite.
+inline constexpr double kMasonryLengthLimit = 1e4;
+
 struct StoneSize {
     double length = 0, height = 0, depth = 0;
 };
 // The item as a size `laenge, hoehe, tiefe` (Def 5.5 `groesse`): length and height positive, depth
-// (the protrusion over the mortar) not negative.
+// (the protrusion over the mortar) not negative, none above kMasonryLengthLimit.
 StoneSize readStoneSize(const DescriptionItem &item, std::string_view what);
+
+// The item as a mortar thickness: one number, not negative, not above kMasonryLengthLimit.
+double readMortarThickness(const DescriptionItem &item);
 
 // What places a description on one wall: its scale and the identity its random choices hash.
 struct MasonryPlacement {
@@ -68,6 +76,15 @@ struct MasonryPlacement {
     uint32_t seed = 0;
     uint32_t wallId = 0;  // the stable identity of the wall face
 };
+
+// Refuses, with an InputError at `loc`, sizes scaled to metres that the layout cannot work with on
+// `wall`: `largest` (the largest size, gap, offset or mortar) not finite or above
+// kScaledSizeLimit times the wall's extent, where its sums would overflow; `least` (the smallest
+// stone length or height) below kScaledSizeResolution times the wall's distance from the origin
+// plus its extent, where a course or a stone would no longer move the walk along.
+inline constexpr double kScaledSizeLimit = 1e6;
+inline constexpr double kScaledSizeResolution = 1e-9;
+void checkScaledSizes(const WallFace &wall, double least, double largest, const FileLoc &loc);
 
 struct BrickKind {
     std::string name;
@@ -108,15 +125,17 @@ inline constexpr size_t kBondCourseLimit = 1000;
 inline constexpr size_t kBrickLimit = size_t(1) << 20;
 
 // Reads a brick-bond description (Defs 5.5–5.7). Throws InputError "file:line:col: …" for a
-// syntax error, a missing or unused block, an unknown name, a size that is not positive, a colour
-// outside 0..255 or not whole, a course without a brick, or a tall brick with no gap under it.
+// syntax error, a missing or unused block, an unknown name, a size that is not positive, a size,
+// gap, offset or mortar beyond kMasonryLengthLimit, a colour outside 0..255 or not whole, a course without a brick, or
+// a tall brick with no gap under it.
 BrickBond parseBrickBond(std::string_view text, const std::string &file);
 
 // The bond laid on `wall` (L1050–1054): bricks wholly in the free region kept, those wholly out
 // dropped, the rest cut exactly to the wall minus its openings grown by the mortar; a cut brick
 // may be non-convex or fall into pieces, each a Stone; pieces of a billionth of their brick's area
 // (rounding slivers where a brick meets an opening's joint) are dropped. Throws InputError at the
-// BrickMasonry block, before laying, when the wall could take more than kBrickLimit bricks.
+// BrickMasonry block, before laying, when the wall could take more than kBrickLimit bricks or the
+// scaled sizes do not suit the wall (checkScaledSizes).
 Masonry layBrickBond(const BrickBond &bond, const WallFace &wall, const MasonryPlacement &placement);
 
 }  // namespace veduta

@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "core/check.h"
+#include "core/polygon_area.h"
 
 namespace veduta {
 
@@ -27,15 +28,10 @@ using Inexact = CGAL::Exact_predicates_inexact_constructions_kernel;
 constexpr double kSamePoint = 1e-12;  // metres: repeated points
 constexpr double kSliver = 1e-12;     // square metres: pieces without area are dropped
 constexpr double kTransomHeight = 2.0 / 3.0;
+// Bricks along one casing strip: a 3 m strip of 3 mm bricks. More is no casing one could see,
+// and each brick is two exact polygons joined into the hole.
+constexpr double kMostKlinkerBricksPerStrip = 1000;
 constexpr const char *kEdgeNames[] = {"bottom", "right", "top", "left"};
-
-Vec2d lerp(Vec2d a, Vec2d b, double t) { return a + (b - a) * t; }
-
-double signedArea(const std::vector<Vec2d> &polygon) {
-    double sum = 0;
-    for (size_t i = 0; i < polygon.size(); ++i) sum += cross(polygon[i], polygon[(i + 1) % polygon.size()]);
-    return sum / 2;
-}
 
 std::vector<Vec2d> withoutRepeats(const std::vector<Vec2d> &points) {
     std::vector<Vec2d> out;
@@ -62,6 +58,11 @@ std::vector<Vec2d> fromExact(const ExactPolygon &polygon) {
     std::vector<Vec2d> out;
     for (const Exact::Point_2 &p : polygon.vertices()) out.push_back({CGAL::to_double(p.x()), CGAL::to_double(p.y())});
     return counterClockwise(out);
+}
+
+bool isSimpleCounterClockwise(const std::vector<Vec2d> &polygon) {
+    ExactPolygon p = toExact(polygon);
+    return p.is_simple() && p.orientation() == CGAL::COUNTERCLOCKWISE;
 }
 
 // The region between a polyline and the same polyline moved by `offset`.
@@ -108,25 +109,46 @@ FacadePiece piece(std::vector<Vec2d> polygon, double back, double front, PieceKi
     return {counterClockwise(std::move(polygon)), std::min(back, front), front, kind};
 }
 
-// Klinker: joints at both ends and between equal bricks (see the header).
+void checkKlinker(const KlinkerBricks &bricks) {
+    if (!(bricks.brickWidth > 0 && std::isfinite(bricks.brickWidth))) {
+        throw std::invalid_argument(
+            fmt::format("klinker brickWidth {} must be positive and finite", bricks.brickWidth));
+    }
+    if (!(bricks.spacing >= 0 && std::isfinite(bricks.spacing))) {
+        throw std::invalid_argument(fmt::format("klinker spacing {} must be finite and not negative", bricks.spacing));
+    }
+    if (!std::isfinite(bricks.brickOverhang)) {
+        throw std::invalid_argument(fmt::format("klinker brickOverhang {} is not finite", bricks.brickOverhang));
+    }
+}
+
+// Klinker: joints at both ends and between equal bricks (see the header); with no spacing the
+// bricks touch and there are no joints, which would have no area.
 void appendKlinker(const Strip &strip, const KlinkerBricks &bricks, std::vector<FacadePiece> &pieces) {
     double total = polylineLength(strip.base), s = bricks.spacing;
-    double count = std::max(1.0, std::round((total - s) / (bricks.brickWidth + s)));
-    double brick = (total - (count + 1) * s) / count;
+    double fit = std::round((total - s) / (bricks.brickWidth + s));
+    if (fit > kMostKlinkerBricksPerStrip) {
+        throw std::invalid_argument(
+            fmt::format("klinker brickWidth {} and spacing {} ask {} bricks along a {} m casing strip, more than {}",
+                        bricks.brickWidth, s, fit, total, kMostKlinkerBricksPerStrip));
+    }
+    auto count = size_t(std::max(1.0, fit));
+    double brick = (total - double(count + 1) * s) / double(count);
+    auto append = [&](double from, double to, double front, PieceKind kind) {
+        pieces.push_back(piece(stripPolygon(subPolyline(strip.base, from, to), strip.offset), 0, front, kind));
+    };
     if (brick <= 0) {
-        pieces.push_back(piece(stripPolygon(strip.base, strip.offset), 0, strip.overhang, PieceKind::KlinkerMortar));
+        append(0, total, strip.overhang, PieceKind::KlinkerMortar);
         return;
     }
     double at = 0;
-    for (int i = 0; i <= int(count); ++i) {
-        double jointEnd = i == int(count) ? total : at + s;
-        pieces.push_back(piece(stripPolygon(subPolyline(strip.base, at, jointEnd), strip.offset), 0, strip.overhang,
-                               PieceKind::KlinkerMortar));
-        if (i == int(count)) break;
-        pieces.push_back(piece(stripPolygon(subPolyline(strip.base, jointEnd, jointEnd + brick), strip.offset), 0,
-                               strip.overhang + bricks.brickOverhang, PieceKind::KlinkerBrick));
-        at = jointEnd + brick;
+    for (size_t i = 0; i < count; ++i) {
+        if (s > 0) append(at, at + s, strip.overhang, PieceKind::KlinkerMortar);
+        double start = at + s, end = s == 0 && i + 1 == count ? total : start + brick;
+        append(start, end, strip.overhang + bricks.brickOverhang, PieceKind::KlinkerBrick);
+        at = end;
     }
+    if (s > 0) append(at, total, strip.overhang, PieceKind::KlinkerMortar);
 }
 
 PieceKind kindOf(CasingStyle style) { return style == CasingStyle::Einfach ? PieceKind::Casing : PieceKind::Cornice; }
@@ -177,7 +199,12 @@ std::vector<FacadePiece> casingPieces(const RefinedOpening &opening, const Casin
         if (!(t >= 0 && t <= 1)) {
             throw std::invalid_argument(fmt::format("{} edge: casing thickness {} is outside [0,1]", kEdgeNames[k], t));
         }
+        double o = casing.edges[size_t(k)].overhang;
+        if (!std::isfinite(o)) {
+            throw std::invalid_argument(fmt::format("{} edge: casing overhang {} is not finite", kEdgeNames[k], o));
+        }
     }
+    if (casing.style == CasingStyle::Klinker) checkKlinker(casing.klinker);
     for (int k = 0; k < 2; ++k) {
         size_t o = size_t(k + 2);
         if (reach(opening.edges[size_t(k)], casing.edges[size_t(k)]) + reach(opening.edges[o], casing.edges[o]) >= 1) {
@@ -205,7 +232,10 @@ std::vector<FacadePiece> casingPieces(const RefinedOpening &opening, const Casin
         }
     }
     for (const FacadePiece &p : pieces) {
-        if (!toExact(p.polygon).is_simple()) throw std::invalid_argument("a casing piece crosses itself");
+        // Exactly, as the polygon sets need it: a sliver's orientation can be lost in rounding.
+        if (p.polygon.size() < 3 || !isSimpleCounterClockwise(p.polygon)) {
+            throw std::invalid_argument("a casing piece crosses itself or has no area");
+        }
     }
     return pieces;
 }
@@ -240,6 +270,10 @@ std::vector<Vec2d> insetPolygon(const std::vector<Vec2d> &polygon, const std::ve
         // The point p with dot(p − polygon[i], n0) = inset[h] and dot(p − polygon[i], n1) = inset[i].
         double det = n0.x * n1.y - n0.y * n1.x;
         Vec2d p{(inset[h] * n1.y - n0.y * inset[i]) / det, (n0.x * inset[i] - inset[h] * n1.x) / det};
+        // Edges that turn back on each other (a sliver the casing leaves) have no mitre point.
+        if (!(std::isfinite(p.x) && std::isfinite(p.y))) {
+            throw std::invalid_argument("the frame cannot follow a corner of the clear opening that turns back");
+        }
         out.push_back(polygon[i] + p);
     }
     return out;
@@ -250,11 +284,6 @@ bool isThreshold(const std::vector<Vec2d> &polygon, size_t i) {
     Vec2d a = polygon[i], b = polygon[(i + 1) % polygon.size()];
     double bottom = std::min_element(polygon.begin(), polygon.end(), [](Vec2d p, Vec2d q) { return p.y < q.y; })->y;
     return b.x > a.x && std::abs(a.y - bottom) <= 1e-9 && std::abs(b.y - bottom) <= 1e-9;
-}
-
-bool isSimpleCounterClockwise(const std::vector<Vec2d> &polygon) {
-    ExactPolygon p = toExact(polygon);
-    return p.is_simple() && p.orientation() == CGAL::COUNTERCLOCKWISE;
 }
 
 void appendSetPieces(const ExactSet &set, double back, double front, PieceKind kind, std::vector<FacadePiece> &pieces) {
@@ -275,6 +304,10 @@ void appendWindow(const std::vector<Vec2d> &clearOutline, const RefinedOpening &
     if (!(frame.thickness >= 0 && frame.thickness <= 1)) {
         throw std::invalid_argument(fmt::format("frame thickness {} is outside [0,1]", frame.thickness));
     }
+    if (!std::isfinite(frame.overhang) || !std::isfinite(frame.paneDepth)) {
+        throw std::invalid_argument(
+            fmt::format("frame overhang {} and paneDepth {} must be finite", frame.overhang, frame.paneDepth));
+    }
     bool door = opening.kind == OpeningKind::Door;
     std::vector<Vec2d> clear = withoutStraightPoints(clearOutline);
     double width = frame.thickness * length(opening.coarse.br - opening.coarse.bl);
@@ -282,7 +315,7 @@ void appendWindow(const std::vector<Vec2d> &clearOutline, const RefinedOpening &
     for (size_t i = 0; i < clear.size(); ++i) {
         if (door && isThreshold(clear, i)) inset[i] = 0;
     }
-    std::vector<Vec2d> inner = insetPolygon(clear, inset);
+    std::vector<Vec2d> inner = width > 0 ? insetPolygon(clear, inset) : clear;
     if (!isSimpleCounterClockwise(inner)) throw std::invalid_argument("the frame is too thick for the opening");
     for (size_t i = 0; i < clear.size() && width > 0; ++i) {
         if (inset[i] == 0) continue;
@@ -355,15 +388,36 @@ void appendFrontFace(Mesh &mesh, const FacadePiece &p, const WallFrame3d &f, Vec
     }
 }
 
+bool isFinite(Vec2d p) { return std::isfinite(p.x) && std::isfinite(p.y); }
+
+// refineOpening gives finite points, but a profile may still make the outline cross itself,
+// which the polygon sets below cannot take; a hand-made RefinedOpening may hold anything.
+void checkOpening(const RefinedOpening &opening) {
+    for (int k = 0; k < 4; ++k) {
+        const RefinedEdge &e = opening.edges[size_t(k)];
+        bool finite = isFinite(e.l) && isFinite(e.r) && isFinite(e.outward) && isFinite(opening.inward[size_t(k)]) &&
+            std::all_of(e.profile.begin(), e.profile.end(), isFinite);
+        if (!finite) throw std::invalid_argument(fmt::format("{} edge: a point is not finite", kEdgeNames[k]));
+    }
+    std::vector<Vec2d> outline = opening.outline();
+    if (outline.size() < 3 || !isSimpleCounterClockwise(outline)) {
+        throw std::invalid_argument("the opening's outline crosses itself or has no area");
+    }
+}
+
 }  // namespace
 
 OpeningPieces buildOpeningPieces(const RefinedOpening &opening, const Casing &casing, const WindowFrame &frame) {
+    checkOpening(opening);
     OpeningPieces result;
     result.pieces = casingPieces(opening, casing);
-    ExactSet hole(toExact(counterClockwise(opening.outline())));
+    ExactSet hole(toExact(opening.outline()));
     for (const FacadePiece &p : result.pieces) hole.join(toExact(p.polygon));
     std::vector<ExactPolygonWithHoles> holeParts = polygonsOf(hole);
-    VEDUTA_CHECK(holeParts.size() == 1 && holeParts[0].number_of_holes() == 0, "casing pieces leave the opening");
+    // A profile that turns back can make a band's casing leave the opening or close a gap beside it.
+    if (holeParts.size() != 1 || holeParts[0].number_of_holes() > 0) {
+        throw std::invalid_argument("the casing pieces and the opening do not make one hole without gaps");
+    }
     result.hole = fromExact(holeParts[0].outer_boundary());
 
     ExactSet clear(hole);
@@ -388,6 +442,20 @@ OpeningPieces buildOpeningPieces(const RefinedOpening &opening, const Casing &ca
 }
 
 Mesh extrudePieces(const std::vector<FacadePiece> &pieces, const WallFrame3d &frame, const PieceMaterials &materials) {
+    for (Vec3f v : {frame.origin, frame.along, frame.up}) {
+        if (!(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z))) {
+            throw std::invalid_argument("wall frame: a vector is not finite");
+        }
+    }
+    // The triangulation takes only simple polygons; NaN would reach the mesh.
+    for (size_t i = 0; i < pieces.size(); ++i) {
+        const FacadePiece &p = pieces[i];
+        bool finite = std::isfinite(p.back) && std::isfinite(p.front) &&
+            std::all_of(p.polygon.begin(), p.polygon.end(), isFinite);
+        if (!finite || p.polygon.size() < 3 || !isSimpleCounterClockwise(p.polygon)) {
+            throw std::invalid_argument(fmt::format("piece {}: not a finite simple counter-clockwise polygon", i));
+        }
+    }
     Mesh mesh;
     Vec3f outward = cross(frame.along, frame.up);
     for (const FacadePiece &p : pieces) {

@@ -21,7 +21,8 @@
 //   on a straight edge it is a Gesims.
 // * Klinker: along each casing strip, equal bricks and mortar joints of width `spacing` at both
 //   ends and between; the brick count is round((L − s) / (w + s)) (at least 1), the bricks take
-//   what the joints leave. Bricks stand `brickOverhang` in front of the mortar.
+//   what the joints leave. Bricks stand `brickOverhang` in front of the mortar. Spacing 0 gives
+//   bricks that touch, with no joints.
 // * Frame: bf ∈ [0,1] of the coarse opening's width, inset along the clear opening with mitred
 //   corners; doors have none along their threshold. The two bars (L1398) are a mullion at the
 //   middle and a transom at two thirds of the height, as German Kreuzstock windows have. The
@@ -83,9 +84,12 @@ struct OpeningPieces {
     std::vector<Vec2d> hole;  // counter-clockwise: the outer outline of the casing and the opening
 };
 
-// Throws std::invalid_argument for thicknesses outside [0,1], a casing thicker than the opening
-// leaves room for, a `size` band on a non-dominant edge or thinner than its casing (twice for
-// Doppelgesims), or a frame too thick for the clear opening.
+// Throws std::invalid_argument for thicknesses outside [0,1], overhangs or depths that are not
+// finite, Klinker bricks that are not positive and finite or spaced negatively (or more than 1000
+// of them along one strip), a casing thicker than the opening leaves room for, a `size` band on a
+// non-dominant edge or thinner than its casing (twice for Doppelgesims), an opening outline or
+// casing piece that crosses itself (a profile can turn back), casing pieces that leave a gap, or a
+// frame too thick for the clear opening.
 OpeningPieces buildOpeningPieces(const RefinedOpening &opening, const Casing &casing, const WindowFrame &frame);
 
 // The wall's frame in the scene: a point (along, up) of the wall plane lies at
@@ -102,7 +106,8 @@ struct PieceMaterials {
 
 // Each piece as a front face at `front` and, where it has depth, side faces down to `back`
 // (the back face lies on the wall or behind it and is never seen). Flat shading; outward faces
-// wind counter-clockwise.
+// wind counter-clockwise. Throws std::invalid_argument for a piece that is not a finite simple
+// counter-clockwise polygon with finite depths, or a frame that is not finite.
 Mesh extrudePieces(const std::vector<FacadePiece> &pieces, const WallFrame3d &frame, const PieceMaterials &materials);
 
 }  // namespace veduta

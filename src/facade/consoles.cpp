@@ -10,8 +10,11 @@ namespace {
 
 // Where along an edge the centres go: a pattern centred between the margins.
 std::vector<double> centresOn(const RunEdge &edge, double spacing, double halfWidth, double depth) {
+    // At a concave corner the mitre plane cuts into the edge, by `depth` times the slope at the
+    // console's front; startSlope is positive there but endSlope negative (profile_sweep.h). At a
+    // convex corner the mitre lies beyond the edge and takes nothing.
     double from = halfWidth + std::max(0.0, depth * edge.startSlope);
-    double to = edge.length - halfWidth - std::max(0.0, depth * edge.endSlope);
+    double to = edge.length - halfWidth - std::max(0.0, -depth * edge.endSlope);
     std::vector<double> centres;
     if (to < from) return centres;
     size_t count = size_t(std::floor((to - from) / spacing)) + 1;

@@ -13,9 +13,10 @@
 //     `abstand` is in metres (digest §8 row 11 reads it so).
 //   * The start offset is not given [GAP]. Each straight edge of the run gets its own pattern,
 //     centred on the edge, with as many consoles as fit while none comes closer to an end of the
-//     edge than half its width; at a concave corner the margin also keeps it clear of the mitre
-//     plane, so that the consoles of the two walls do not run into each other. A console never
-//     straddles a corner.
+//     edge than half its width; at a concave corner, at either end of the edge, the margin grows
+//     by the console's depth times the mitre's slope, so that no console crosses the mitre plane
+//     and the consoles of the two walls do not run into each other. A convex corner's mitre lies
+//     beyond the edge and adds nothing. A console never straddles a corner.
 //   * The rectangle stands on the partition's bottom (the profile's lowest point), where a main
 //     cornice's consoles carry it (Fig. 5.22).
 //   * The depth out of the wall is the profile's reach (its largest x): the console carries the

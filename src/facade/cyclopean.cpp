@@ -1,30 +1,18 @@
 #include "facade/cyclopean.h"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Partition_traits_2.h>
-#include <CGAL/Polygon_2.h>
-#include <CGAL/Polygon_triangulation_decomposition_2.h>
-#include <CGAL/Polygon_with_holes_2.h>
-#include <CGAL/partition_2.h>
-
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <iterator>
-#include <list>
 
 #include <fmt/format.h>
 
 #include "core/hash.h"
 #include "core/random_streams.h"
+#include "facade/convex_pieces.h"
 
 namespace veduta {
 
 namespace {
-
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Polygon = CGAL::Polygon_2<Kernel>;
-using PolygonWithHoles = CGAL::Polygon_with_holes_2<Kernel>;
 
 // Seeds per grid cell on average (L1094 says only "equally many"): enough that a cell's seeds lie
 // irregularly, few enough that the grid still spreads them evenly before Lloyd.
@@ -32,6 +20,8 @@ constexpr double kSeedsPerCell = 4;
 // How often a seed is drawn in its cell before it is given up: cells are mostly wall, so a draw
 // misses with odds below one half.
 constexpr uint32_t kSeedDraws = 64;
+// The most grid cells per seed the wall asks for (see gridSeeds).
+constexpr double kMaxCellsPerSeed = 16;
 // The 20 % fewer stones than hexagonal packing holds (L1091).
 constexpr double kPackingShare = 0.8;
 // Counts are whole numbers of double; larger ones saturate (and are refused by the limits).
@@ -43,19 +33,6 @@ enum Draw : uint32_t { SeedX, SeedY, StoneColour, JointWidth };
 float draw(uint32_t seed, uint32_t wallId, Draw what, uint32_t index, uint32_t second = 0, uint32_t third = 0) {
     return bitsToUnitFloat(
         hashValues({seed, wallId, streamTag(RandomStream::MasonryCyclopean), what, index, second, third}));
-}
-
-Polygon polygon(const std::vector<Vec2d> &ring) {
-    Polygon result;
-    for (Vec2d p : ring) result.push_back({p.x, p.y});
-    return result;
-}
-
-template <typename Points>
-std::vector<Vec2d> ring(const Points &points) {
-    std::vector<Vec2d> result;
-    for (const auto &p : points) result.push_back({p.x(), p.y()});
-    return result;
 }
 
 Vec2d unit(Vec2d v) { return v * (1 / length(v)); }
@@ -157,8 +134,16 @@ std::vector<ReflexCorner> reflexCorners(const WallRegion &region) {
 std::vector<Vec2d> gridSeeds(const WallRegion &region, int64_t count, uint32_t seed, uint32_t wallId) {
     Vec2d lower = region.lower(), size = region.upper() - region.lower();
     double side = std::sqrt(kSeedsPerCell * region.area() / double(count));
-    int64_t columns = std::max<int64_t>(1, std::llround(size.x / side));
-    int64_t rows = std::max<int64_t>(1, std::llround(size.y / side));
+    // A thin frame round a large opening has little area in a large box: cells of its share would
+    // number far more than the seeds, each measured against every ring. Coarser cells keep the
+    // work in proportion to the seeds; the lone seed per cell still spreads them.
+    double cap = kMaxCellsPerSeed * double(count);
+    double across = std::max(1.0, std::round(size.x / side)), up = std::max(1.0, std::round(size.y / side));
+    while (across * up > cap) {
+        side *= std::max(1.25, std::sqrt(across * up / cap));
+        across = std::max(1.0, std::round(size.x / side)), up = std::max(1.0, std::round(size.y / side));
+    }
+    int64_t columns = int64_t(across), rows = int64_t(up);
     Vec2d cell{size.x / double(columns), size.y / double(rows)};
 
     struct GridCell {
@@ -264,24 +249,6 @@ CyclopeanLayout layOutCyclopean(const WallRegion &region, const CyclopeanMasonry
     return layout;
 }
 
-std::vector<std::vector<Vec2d>> convexParts(const RegionPiece &piece) {
-    std::vector<std::vector<Vec2d>> parts;
-    if (piece.holes.empty()) {
-        Polygon outline = polygon(piece.outline);
-        if (outline.is_convex()) return {piece.outline};
-        std::list<CGAL::Partition_traits_2<Kernel>::Polygon_2> convex;
-        CGAL::optimal_convex_partition_2(outline.vertices_begin(), outline.vertices_end(), std::back_inserter(convex));
-        for (const auto &part : convex) parts.push_back(ring(part.container()));
-        return parts;
-    }
-    PolygonWithHoles withHoles(polygon(piece.outline));
-    for (const auto &hole : piece.holes) withHoles.add_hole(polygon(hole));
-    std::list<Polygon> triangles;
-    CGAL::Polygon_triangulation_decomposition_2<Kernel>()(withHoles, std::back_inserter(triangles));
-    for (const Polygon &triangle : triangles) parts.push_back(ring(triangle.vertices()));
-    return parts;
-}
-
 Masonry cyclopeanMasonry(const WallFace &wall, const CyclopeanMasonry &description, uint32_t seed, uint32_t wallId) {
     WallRegion region(wall);
     CyclopeanLayout layout = layOutCyclopean(region, description, seed, wallId);
@@ -289,7 +256,7 @@ Masonry cyclopeanMasonry(const WallFace &wall, const CyclopeanMasonry &descripti
     uint32_t stone = 0;
     for (const ClippedCell &cell : layout.relaxed.cells) {
         for (const RegionPiece &piece : cell) {
-            for (const std::vector<Vec2d> &part : convexParts(piece)) {
+            for (const std::vector<Vec2d> &part : convexPieces(piece.outline, piece.holes)) {
                 std::vector<Vec2d> outline = shrunkStone(part, description.joint / 2, seed, wallId, stone);
                 if (!outline.empty()) {
                     float t = draw(seed, wallId, StoneColour, stone);

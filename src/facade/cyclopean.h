@@ -31,7 +31,7 @@
 //   the hue between the two colours.
 // * A clipped cell that is still concave or holds a hole (possible only where a free seed wanders
 //   close to a corner, or an opening is smaller than a stone) is split into convex pieces, as the
-//   ashlar stones are (Fig. 5.11).
+//   ashlar stones are (Fig. 5.11, facade/convex_pieces.h).
 #pragma once
 
 #include <cstdint>
@@ -98,10 +98,6 @@ struct CyclopeanLayout {
 // description that is not usable or asks for more than the limits.
 CyclopeanLayout layOutCyclopean(const WallRegion &region, const CyclopeanMasonry &description, uint32_t seed,
                                 uint32_t wallId);
-
-// A clipped cell's piece as convex outlines (counter-clockwise): the piece itself when it is
-// convex and has no hole, else CGAL's convex pieces of it.
-std::vector<std::vector<Vec2d>> convexParts(const RegionPiece &piece);
 
 // The masonry of one wall face: its stones, seeded from `seed` and the wall's stable `wallId`.
 Masonry cyclopeanMasonry(const WallFace &wall, const CyclopeanMasonry &description, uint32_t seed, uint32_t wallId);

@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "core/check.h"
+#include "facade/convex_pieces.h"
 
 namespace veduta {
 
@@ -60,23 +61,11 @@ std::vector<Vec2d> cleanedRing(std::vector<Vec2d> ring) {
     return ring;
 }
 
-ExactPolygon exactPolygon(const std::vector<Vec2d> &ring) {
-    ExactPolygon polygon;
-    for (Vec2d p : ring) polygon.push_back({p.x, p.y});
-    return polygon;
-}
+ExactPolygon exactPolygon(const std::vector<Vec2d> &ring) { return cgalPolygon<ExactPolygon>(ring); }
 
-InexactPolygon inexactPolygon(const std::vector<Vec2d> &ring) {
-    InexactPolygon polygon;
-    for (Vec2d p : ring) polygon.push_back({p.x, p.y});
-    return polygon;
-}
+InexactPolygon inexactPolygon(const std::vector<Vec2d> &ring) { return cgalPolygon<InexactPolygon>(ring); }
 
-std::vector<Vec2d> doubleRing(const ExactPolygon &polygon) {
-    std::vector<Vec2d> ring;
-    for (const auto &p : polygon.vertices()) ring.push_back({CGAL::to_double(p.x()), CGAL::to_double(p.y())});
-    return cleanedRing(std::move(ring));
-}
+std::vector<Vec2d> doubleRing(const ExactPolygon &polygon) { return cleanedRing(roundedRing(polygon)); }
 
 RegionPiece doublePiece(const ExactPiece &piece) {
     RegionPiece result{doubleRing(piece.outer_boundary()), {}};
@@ -94,12 +83,6 @@ ExactPolygon wallPolygon(const std::vector<Vec2d> &ring) {
     VEDUTA_CHECK(polygon.size() >= 3 && polygon.is_simple(), "a wall face or opening is not a simple polygon");
     if (polygon.is_clockwise_oriented()) polygon.reverse_orientation();
     return polygon;
-}
-
-double ringArea(const std::vector<Vec2d> &ring) {
-    double twice = 0;
-    for (size_t i = 0; i < ring.size(); ++i) twice += cross(ring[i], ring[(i + 1) % ring.size()]);
-    return twice / 2;
 }
 
 // ∫ over the ring's (signed) area of |x|², x measured from `origin`: the polar second moment.
@@ -154,9 +137,12 @@ struct WallRegion::Impl {
     bool contains(const Point &point) const {
         for (size_t i = 0; i < outlines.size(); ++i) {
             if (outlines[i].bounded_side(point) != CGAL::ON_BOUNDED_SIDE) continue;
-            return std::all_of(holes[i].begin(), holes[i].end(), [&](const InexactPolygon &hole) {
-                return hole.bounded_side(point) == CGAL::ON_UNBOUNDED_SIDE;
+            // In a hole of this piece the point may still lie on an island piece within the hole
+            // (openings that together ring a part of the wall), so the search goes on.
+            bool inHole = std::any_of(holes[i].begin(), holes[i].end(), [&](const InexactPolygon &hole) {
+                return hole.bounded_side(point) != CGAL::ON_UNBOUNDED_SIDE;
             });
+            if (!inHole) return true;
         }
         return false;
     }
@@ -280,8 +266,8 @@ std::vector<Vec2d> clipToHalfPlane(const std::vector<Vec2d> &polygon, Vec2d norm
 }
 
 double area(const RegionPiece &piece) {
-    double sum = ringArea(piece.outline);
-    for (const auto &hole : piece.holes) sum += ringArea(hole);
+    double sum = signedArea(piece.outline);
+    for (const auto &hole : piece.holes) sum += signedArea(hole);
     return sum;
 }
 

@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "core/check.h"
+#include "core/polygon_area.h"
 
 namespace veduta {
 
@@ -64,12 +65,6 @@ std::vector<std::vector<Vec2d>> convexPieces(const std::vector<Vec2d> &ring) {
         result.push_back(outline);
     }
     return result;
-}
-
-double area(const std::vector<Vec2d> &ring) {
-    double twice = 0;
-    for (size_t i = 0; i < ring.size(); ++i) twice += cross(ring[i], ring[(i + 1) % ring.size()]);
-    return twice / 2;
 }
 
 using EdgeKey = std::pair<std::pair<double, double>, std::pair<double, double>>;
@@ -126,7 +121,7 @@ FloorPlan partitionFootprint(const std::vector<Vec2d> &footprint, const FloorPla
     std::vector<std::vector<Vec2d>> pieces = convexPieces(cleanFootprint(footprint, loc));
     int root = 0;
     for (size_t m = 1; m < pieces.size(); ++m)
-        if (area(pieces[m]) > area(pieces[root])) root = static_cast<int>(m);
+        if (signedArea(pieces[m]) > signedArea(pieces[root])) root = static_cast<int>(m);
     std::vector<KkConnection> docks = docksFromRoot(pieces, root);
     std::vector<FloorPlanModule> modules;
     for (std::vector<Vec2d> &outline : pieces) {

@@ -12,8 +12,7 @@ namespace {
 
 constexpr double kSamePoint = 1e-12;  // metres: repeated outline points
 constexpr const char *kEdgeNames[] = {"bottom", "right", "top", "left"};
-
-Vec2d lerp(Vec2d a, Vec2d b, double t) { return a + (b - a) * t; }
+constexpr const char *kCornerNames[] = {"f_bl", "f_br", "f_tr", "f_tl"};
 
 Vec2d bilinear(const WallQuad &w, double v, double h) { return lerp(lerp(w.bl, w.br, v), lerp(w.tl, w.tr, v), h); }
 
@@ -37,14 +36,41 @@ void checkRefinement(const EdgeRefinement &e, const char *edge) {
     }
 }
 
-// Edge k's inward vector across the opening: f_{k+2} − f_{k+1} (L1322, left edge sign fixed).
-Vec2d inwardOf(const CoarseOpening &c, int k) { return c.corner(k + 2) - c.corner(k + 1); }
+// Edge k's inward vector across the opening: the next edge's direction f_{k+2} − f_{k+1}, except
+// for the left edge, which moves along the top edge like the right one (L1322 with its sign
+// fixed, digest §10): f_tr − f_tl.
+Vec2d inwardOf(const CoarseOpening &c, int k) {
+    if (k == kLeft) return c.tr - c.tl;
+    return c.corner(k + 2) - c.corner(k + 1);
+}
+
+bool isFinite(Vec2d p) { return std::isfinite(p.x) && std::isfinite(p.y); }
+
+// The refinement formulas move edges along the opening's sides, which only stay inside it when
+// the quad is convex; a degenerate or clockwise one would give a folded outline.
+void checkCoarse(const CoarseOpening &c) {
+    for (int k = 0; k < 4; ++k) {
+        if (!isFinite(c.corner(k))) {
+            throw std::invalid_argument(fmt::format("coarse opening: corner {} is not finite", kCornerNames[k]));
+        }
+    }
+    for (int k = 0; k < 4; ++k) {
+        Vec2d in = c.corner(k + 1) - c.corner(k), out = c.corner(k + 2) - c.corner(k + 1);
+        double turn = cross(in, out);  // infinite where the corners are too far apart to measure
+        if (!(turn > 0 && std::isfinite(turn))) {
+            throw std::invalid_argument("coarse opening: corners are not a convex counter-clockwise quad");
+        }
+    }
+}
 
 double offsetOf(const EdgeRefinement &e) { return e.distB + e.size; }
 
 }  // namespace
 
 CoarseOpening coarseOpening(const WallQuad &wall, double vStart, double vEnd, double hStart, double hEnd) {
+    if (!(isFinite(wall.bl) && isFinite(wall.br) && isFinite(wall.tr) && isFinite(wall.tl))) {
+        throw std::invalid_argument("wall quad: a corner is not finite");
+    }
     if (!(0 <= vStart && vStart < vEnd && vEnd <= 1 && 0 <= hStart && hStart < hEnd && hEnd <= 1)) {
         throw std::invalid_argument(
             fmt::format("opening needs 0 ≤ v_s < v_e ≤ 1 and 0 ≤ h_s < h_e ≤ 1, got v [{}, {}], h [{}, {}]", vStart,
@@ -56,6 +82,9 @@ CoarseOpening coarseOpening(const WallQuad &wall, double vStart, double vEnd, do
 
 CoarseOpening placeOpening(const WallQuad &wall, const AbsolutePlacement &p) {
     double wallWidth = length(wall.br - wall.bl), wallHeight = length(wall.tl - wall.bl);
+    for (double value : {p.width, p.height, p.distLeft, p.distRight, p.sillHeight}) {
+        if (!std::isfinite(value)) throw std::invalid_argument("opening placement: a value is not finite");
+    }
     if (!(p.width > 0 && p.height > 0 && p.distLeft >= 0 && p.distRight >= 0 && p.sillHeight >= 0) ||
         p.distLeft + p.distRight <= 0) {
         throw std::invalid_argument("opening width and height must be positive, distances and sill not negative");
@@ -91,6 +120,7 @@ RefinedOpening refineOpening(const CoarseOpening &coarse, const std::array<EdgeR
                              Dominance dominance, OpeningKind kind) {
     std::array<EdgeRefinement, 4> edges = given;
     if (kind == OpeningKind::Door) edges[kBottom] = {};
+    checkCoarse(coarse);
     for (int k = 0; k < 4; ++k) checkRefinement(edges[size_t(k)], kEdgeNames[k]);
     int firstDominant = dominance == Dominance::BottomAndTop ? kBottom : kRight;
     for (int k = 0; k < 4; ++k) {

@@ -8,7 +8,9 @@
 // where `in` is the edge's inward vector across the whole opening (f_tl − f_tr for the right edge,
 // f_bl − f_tl for the top, as in L1322). Choices where the thesis is open:
 // * The left edge's inward vector is f_tr − f_tl; L1322 prints f_tl − f_tr, which would push the
-//   edge out of the opening (digest §10). For the bottom it is f_tr − f_br.
+//   edge out of the opening (digest §10). So both side edges move along the top edge, as the
+//   right edge does in L1322; on a non-parallelogram opening this is not f_br − f_bl. For the
+//   bottom it is f_tr − f_br.
 // * dist_l trims the edge's l end, its start in counter-clockwise order, for all four edges alike
 //   (the thesis wants no difference between edges, L1291). Fig. 5.36 labels the top edge's
 //   distances by the side of the picture, which swaps them there.
@@ -35,6 +37,9 @@
 
 namespace veduta {
 
+// The point a + t (b − a), for the opening's corners and edges and the casings on them.
+inline Vec2d lerp(Vec2d a, Vec2d b, double t) { return a + (b - a) * t; }
+
 // A wall quad in its plane; the coarse opening is placed bilinearly in it, which for the usual
 // rectangular wall is Def 5.12's f_bl = w_bl + v_s (w_br − w_bl) + h_s (w_tl − w_bl).
 struct WallQuad {
@@ -48,7 +53,8 @@ struct CoarseOpening {
     Vec2d corner(int i) const { return std::array<Vec2d, 4>{bl, br, tr, tl}[size_t(i & 3)]; }
 };
 
-// Throws std::invalid_argument unless 0 ≤ vStart < vEnd ≤ 1 and 0 ≤ hStart < hEnd ≤ 1.
+// Throws std::invalid_argument unless 0 ≤ vStart < vEnd ≤ 1 and 0 ≤ hStart < hEnd ≤ 1 and the wall's
+// corners are finite.
 CoarseOpening coarseOpening(const WallQuad &wall, double vStart, double vEnd, double hStart, double hEnd);
 
 // Absolute placement in metres on a rectangular wall (see the header comment).
@@ -57,7 +63,8 @@ struct AbsolutePlacement {
     double distLeft = 1, distRight = 1;
     double sillHeight = 0;
 };
-// Throws std::invalid_argument when the opening does not fit the wall or a value is negative.
+// Throws std::invalid_argument when the opening does not fit the wall or a value is negative or
+// not finite.
 CoarseOpening placeOpening(const WallQuad &wall, const AbsolutePlacement &placement);
 
 enum class OpeningKind { Window, Door };
@@ -91,8 +98,9 @@ struct RefinedOpening {
     std::vector<Vec2d> outline() const;
 };
 
-// Throws std::invalid_argument for values outside [0,1], profile points outside [0,1]², a band
-// (size > 0) on a non-dominant edge, an edge trimmed to nothing (dist_l + dist_r ≥ 1) or opposite edges that meet
+// Throws std::invalid_argument for a coarse opening that is not a convex counter-clockwise quad
+// with finite corners, values outside [0,1], profile points outside [0,1]², a band (size > 0) on a
+// non-dominant edge, an edge trimmed to nothing (dist_l + dist_r ≥ 1) or opposite edges that meet
 // (their dist_b + size add up to 1 or more).
 RefinedOpening refineOpening(const CoarseOpening &coarse, const std::array<EdgeRefinement, 4> &edges,
                              Dominance dominance = Dominance::BottomAndTop, OpeningKind kind = OpeningKind::Window);

@@ -14,6 +14,10 @@ namespace {
 constexpr double kDegree = std::numbers::pi / 180;
 // Below this a start tangent counts as square to the heading (an arc's sense, see profile.h).
 constexpr double kSquareTolerance = 1e-9;
+// A step must move the turtle by more than this part of the profile's largest coordinate (in x or
+// y): scaledOutline's shift and scale round each coordinate by about 1e-16 of that, and a step
+// lost in the rounding would leave two equal points, a segment without a direction.
+constexpr double kLeastStep = 1e-12;
 
 // `v` turned by `degrees` toward its normal, i.e. clockwise in the (out, up) plane.
 Vec2d turned(Vec2d v, double degrees) {
@@ -34,6 +38,15 @@ int textureIndex(const DescriptionItem &item, size_t index) {
 double positive(const DescriptionItem &item, size_t index, std::string_view what) {
     double value = item.number(index, what);
     if (value <= 0) throw InputError(item.fields[index].loc, fmt::format("{} must be positive, found {}", what, value));
+    return value;
+}
+
+// A positive length in the profile's units, up to kProfileSizeLimit.
+double size(const DescriptionItem &item, size_t index, std::string_view what) {
+    double value = positive(item, index, what);
+    if (value > kProfileSizeLimit)
+        throw InputError(item.fields[index].loc,
+                         fmt::format("{} must be at most {}, found {}", what, kProfileSizeLimit, value));
     return value;
 }
 
@@ -59,13 +72,16 @@ ProfileCommand command(const DescriptionItem &item) {
         throw InputError(item.fields[1].loc, fmt::format("expected rel or abs, found '{}'", basis));
     result.absolute = basis == "abs";
     result.angle = item.number(2, "an angle");
+    if (std::abs(result.angle) > kProfileAngleLimit)
+        throw InputError(item.fields[2].loc,
+                         fmt::format("an angle must lie in [-{0}, {0}], found {1}", kProfileAngleLimit, result.angle));
     if (arc) {
         result.arcAngle = item.number(3, "the arc's angle");
         if (result.arcAngle == 0 || std::abs(result.arcAngle) > 360)
             throw InputError(item.fields[3].loc,
                              fmt::format("an arc's angle must be in [-360, 0) or (0, 360], found {}", result.arcAngle));
     }
-    result.size = positive(item, plain - 1, arc ? "the radius" : "the length");
+    result.size = size(item, plain - 1, arc ? "the radius" : "the length");
     if (item.fields.size() == plain + 3)
         for (size_t i = 0; i < 3; ++i) result.textures[i] = textureIndex(item, plain + i);
     return result;
@@ -93,6 +109,10 @@ TextureRegion textureRegion(const DescriptionItem &item) {
     if (top <= bottom) throw InputError(item.fields[2].loc, "a texture's top must lie above its bottom (v counts up)");
     region.top = 1 - top;
     region.bottom = 1 - bottom;
+    // 1 - 1e-300 is 1: a rectangle that was not empty counted up may be empty counted down, and
+    // a frieze piece would be infinitely wide to keep its aspect.
+    if (region.bottom <= region.top)
+        throw InputError(item.fields[2].loc, "a texture's top and bottom are too close to tell apart");
     return region;
 }
 
@@ -143,8 +163,8 @@ std::vector<Console> parseConsoles(const DescriptionBlock &block) {
         console.loc = spacing.loc;
         console.spacing = positive(spacing, 0, "the spacing");
         console.objectFile = shape.string(0, "the console's object file");
-        console.width = positive(shape, 1, "the width");
-        console.height = positive(shape, 2, "the height");
+        console.width = size(shape, 1, "the width");
+        console.height = size(shape, 2, "the height");
         consoles.push_back(console);
     }
     return consoles;
@@ -202,15 +222,41 @@ ProfileOutline traceProfile(const Profile &profile, double arcStepDegrees) {
         }
         outline.commandEnds.push_back(outline.points.size() - 1);
     }
+    double largest = 0;
+    for (Vec2d point : outline.points) largest = std::max({largest, std::abs(point.x), std::abs(point.y)});
+    size_t first = 0;
+    for (size_t c = 0; c < profile.commands.size(); ++c) {
+        for (size_t i = first + 1; i <= outline.commandEnds[c]; ++i) {
+            Vec2d step = outline.points[i] - outline.points[i - 1];
+            if (std::max(std::abs(step.x), std::abs(step.y)) <= kLeastStep * largest)
+                throw InputError(
+                    profile.commands[c].loc,
+                    fmt::format("this command is too short to draw in a profile reaching {} units from its start",
+                                largest));
+        }
+        first = outline.commandEnds[c];
+    }
     return outline;
 }
 
 double heightScale(const Profile &profile, const ProfileOutline &outline, double height) {
+    // parseProfile's limits keep a traced outline finite; this guards outlines from elsewhere.
+    for (Vec2d point : outline.points)
+        if (!std::isfinite(point.x) || !std::isfinite(point.y))
+            throw InputError(profile.loc, "the profile reaches past any finite coordinate");
     auto [lowest, highest] =
         std::minmax_element(outline.points.begin(), outline.points.end(), [](Vec2d a, Vec2d b) { return a.y < b.y; });
     double extent = highest->y - lowest->y;
+    auto [left, right] =
+        std::minmax_element(outline.points.begin(), outline.points.end(), [](Vec2d a, Vec2d b) { return a.x < b.x; });
+    double width = right->x - left->x;
+    if (!std::isfinite(extent) || !std::isfinite(width))
+        throw InputError(profile.loc, "the profile reaches past any finite coordinate");
     if (extent <= 1e-12 * std::max(1.0, std::abs(highest->y)))
         throw InputError(profile.loc, "the profile has no height to fill a partition with");
+    if (width > kProfileAspectLimit * extent)
+        throw InputError(profile.loc,
+                         fmt::format("the profile is more than {} times as wide as it is high", kProfileAspectLimit));
     return height / extent;
 }
 

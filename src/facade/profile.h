@@ -91,11 +91,23 @@ struct CorniceDescription {
 
 // The most commands one profile may have.
 inline constexpr size_t kProfileCommandLimit = 10000;
+// The largest length, radius, breite or hoehe, in the profile's units, and the largest angle α
+// either way, in degrees. Cornices measure a few units and turn by right angles; the limits keep
+// every traced point finite (10000 commands of at most this size) and every angle precise enough
+// to turn by (the cosine of 1e300° says nothing).
+inline constexpr double kProfileSizeLimit = 1e4;
+inline constexpr double kProfileAngleLimit = 3600;
+
+// The most a profile may be wider (x) than high: filling a partition's height, a wider one would
+// reach kilometres out of the wall, and the huge factor of a nearly flat one would carry its
+// points past any finite coordinate.
+inline constexpr double kProfileAspectLimit = 1e6;
 
 // The checked contents of one block (its name is not looked at). InputError with the place of
 // the offending field: an unknown command, a wrong field count, a length, radius or size that is
-// not positive, an arc over 360°, a texture index that is not a whole number, a texture
-// rectangle outside [0, 1] or empty, a Consoles block whose items do not pair up.
+// not positive or over kProfileSizeLimit, an angle over kProfileAngleLimit, an arc over 360°, a
+// texture index that is not a whole number, a texture rectangle outside [0, 1] or empty, a
+// Consoles block whose items do not pair up.
 Profile parseProfile(const DescriptionBlock &block);
 std::vector<Console> parseConsoles(const DescriptionBlock &block);
 std::vector<TextureRegion> parseTexturePool(const DescriptionBlock &block);
@@ -104,11 +116,14 @@ std::vector<TextureRegion> parseTexturePool(const DescriptionBlock &block);
 // TexturePool/TextureDescs block, nothing else; texture indices must name pool entries.
 CorniceDescription parseCorniceDescription(std::string_view text, const std::string &file);
 
-// Runs the turtle. Arcs become segments of at most `arcStepDegrees` (in (0, 90]).
+// Runs the turtle. Arcs become segments of at most `arcStepDegrees` (in (0, 90]). InputError at
+// the command when one of its steps is too short to tell its ends apart beside the size of the
+// whole profile (1e-12 of its largest coordinate): scaledOutline would make them one point.
 ProfileOutline traceProfile(const Profile &profile, double arcStepDegrees);
 
 // The factor that makes the outline's height (highest minus lowest y) `height`. InputError at the
-// profile when it has no height.
+// profile when it has no height, or when it is more than kProfileAspectLimit times as wide (x)
+// as high.
 double heightScale(const Profile &profile, const ProfileOutline &outline, double height);
 
 // The outline scaled by `scale` and shifted up so that its lowest point has y = 0.

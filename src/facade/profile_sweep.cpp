@@ -73,7 +73,10 @@ class CorniceBuilder {
 
     void addBand(const RunEdge &edge, const Band &band) {
         Column mitreStart{0, edge.startSlope}, mitreEnd{edge.length, edge.endSlope};
-        if (band.textures == std::array<int, 3>{-1, -1, -1}) {
+        // A band whose profile length is lost in the rounding of the length before it (a step of
+        // 1e-8 after 1e8 units of profile) has no height to lay a texture's aspect on: untextured.
+        double stripHeight = band.along.back() - band.along.front();
+        if (band.textures == std::array<int, 3>{-1, -1, -1} || !(stripHeight > 0)) {
             addPiece(edge, band, mitreStart, mitreEnd, -1);
             return;
         }
@@ -83,9 +86,8 @@ class CorniceBuilder {
             straightStart = std::max(straightStart, point.x * edge.startSlope);
             straightEnd = std::min(straightEnd, edge.length + point.x * edge.endSlope);
         }
-        std::vector<FriezePiece> pieces =
-            layFrieze(std::max(0.0, straightEnd - straightStart), band.along.back() - band.along.front(), band.textures,
-                      cornice_.textures, options_.imageAspect);
+        std::vector<FriezePiece> pieces = layFrieze(std::max(0.0, straightEnd - straightStart), stripHeight,
+                                                    band.textures, cornice_.textures, options_.imageAspect);
         Column from = mitreStart;
         for (size_t i = 0; i < pieces.size(); ++i) {
             Column to = i + 1 == pieces.size() ? mitreEnd : Column{straightStart + pieces[i].to, 0};

@@ -49,8 +49,9 @@ struct SweptCornice {
 
 // One edge of the run, walked with the outside on its right (a run whose outside is on its left
 // backwards). A profile point `o` metres out starts `o * startSlope` and ends
-// `length + o * endSlope` metres along the edge: the mitres. A slope is positive at a concave
-// corner (the offset line is shorter than the wall), negative at a convex one, 0 at an open end.
+// `length + o * endSlope` metres along the edge: the mitres. At a concave corner (the offset line
+// is shorter than the wall) startSlope is positive and endSlope negative; at a convex one
+// startSlope is negative and endSlope positive; both are 0 at an open end.
 struct RunEdge {
     Vec2d start, direction, normal;  // normal: out of the wall
     double length = 0;

@@ -17,6 +17,8 @@
 #include <cstdint>
 #include <map>
 
+#include "core/polygon_area.h"
+
 namespace veduta {
 
 namespace {
@@ -35,12 +37,6 @@ constexpr double kRelativeEpsilon = 1e-9;
 
 Vec2d lerp(Vec2d p, Vec2d q, double t) { return p * (1 - t) + q * t; }
 Vec2d toVec(const ExactPoint &p) { return {CGAL::to_double(p.x()), CGAL::to_double(p.y())}; }
-
-double area(const std::vector<Vec2d> &ring) {
-    double twice = 0;
-    for (size_t i = 0; i < ring.size(); ++i) twice += cross(ring[i], ring[(i + 1) % ring.size()]);
-    return twice / 2;
-}
 
 double extent(const std::vector<Vec2d> &ring) {
     double scale = 1;
@@ -200,9 +196,9 @@ std::vector<std::vector<int>> convexUnions(const std::vector<std::vector<Vec2d>>
             if (!(set >> c & 1)) continue;
             members.push_back(c);
             points.insert(points.end(), cells[c].begin(), cells[c].end());
-            sum += area(cells[c]);
+            sum += signedArea(cells[c]);
         }
-        if (area(convexHull(points)) - sum <= kRelativeEpsilon * scale * scale) unions.push_back(members);
+        if (signedArea(convexHull(points)) - sum <= kRelativeEpsilon * scale * scale) unions.push_back(members);
     }
     return unions;
 }
@@ -294,7 +290,7 @@ StoreyFeatures storeyFeatures(const FloorPlan &lower, const FloorPlan &upper) {
         const std::vector<Vec2d> &docked = upper.modules()[upper.kkConnections()[k].docked].outline;
         std::vector<ExactPolygonWithHoles> inside;
         CGAL::intersection(toExact(docked), lowerPolygon, std::back_inserter(inside));
-        bool external = area(docked) - exactArea(inside) > kRelativeEpsilon * area(docked);
+        bool external = signedArea(docked) - exactArea(inside) > kRelativeEpsilon * signedArea(docked);
         (external ? features.externalConnections : features.internalConnections).push_back(static_cast<int>(k));
     }
     return features;

@@ -13,12 +13,34 @@ namespace {
 constexpr double kSamePoint = 1e-9;      // metres: the joint of two features
 constexpr double kSameHeight = 1e-9;     // metres: partitions that form one band
 constexpr double kStraightTurn = 1e-12;  // |sin| of the turn below which a joint is straight
+// A ZWE is a pier or pilaster: narrower than 1 cm it is no element one could build, and tiny
+// widths would ask for billions of elements.
+constexpr double kNarrowestInterWall = 0.01;       // metres
+constexpr double kMostWallsPerBaseWall = 10000.0;  // a 100 m base wall of 1 cm walls and ZWE
+
+bool isFinite(Vec2d p) { return std::isfinite(p.x) && std::isfinite(p.y); }
+
+void checkSubdivision(const WallSubdivision &s) {
+    if (!(std::isfinite(s.cornerWidth) && std::isfinite(s.interWallWidth) && std::isfinite(s.wallToInterWallRatio))) {
+        throw std::invalid_argument("corner width, ZWE width and wall-to-ZWE ratio must be finite");
+    }
+    if (s.cornerWidth < 0 || s.interWallWidth < 0 || s.wallToInterWallRatio < 0) {
+        throw std::invalid_argument("corner width, ZWE width and wall-to-ZWE ratio must not be negative");
+    }
+    if (s.interWallWidth > 0 && s.interWallWidth < kNarrowestInterWall) {
+        throw std::invalid_argument(
+            fmt::format("ZWE width {} m is below the narrowest, {} m", s.interWallWidth, kNarrowestInterWall));
+    }
+}
 
 std::vector<BaseWall> baseWallsOf(const std::vector<std::vector<Vec2d>> &features, bool closed) {
     std::vector<BaseWall> walls;
     for (size_t f = 0; f < features.size(); ++f) {
         const std::vector<Vec2d> &points = features[f];
         if (points.size() < 2) throw std::invalid_argument(fmt::format("feature {} has fewer than two points", f));
+        if (!std::all_of(points.begin(), points.end(), isFinite)) {
+            throw std::invalid_argument(fmt::format("feature {} has a point that is not finite", f));
+        }
         if (f > 0 && length(points.front() - features[f - 1].back()) > kSamePoint) {
             throw std::invalid_argument(fmt::format("feature {} does not start where feature {} ends", f, f - 1));
         }
@@ -29,6 +51,10 @@ std::vector<BaseWall> baseWallsOf(const std::vector<std::vector<Vec2d>> &feature
     }
     for (size_t w = 0; w < walls.size(); ++w) {
         if (walls[w].length() <= kSamePoint) throw std::invalid_argument(fmt::format("base wall {} has no length", w));
+        // Finite points so far apart that the length overflows.
+        if (!std::isfinite(walls[w].length())) {
+            throw std::invalid_argument(fmt::format("base wall {} is too long to measure", w));
+        }
     }
     return walls;
 }
@@ -78,10 +104,20 @@ bool hasPartition(const std::vector<Partition> &list, const Partition &p) {
 }  // namespace
 
 std::vector<double> wallAndInterWallWidths(double length, const WallSubdivision &subdivision) {
+    checkSubdivision(subdivision);
+    if (!(length >= 0 && std::isfinite(length))) {
+        throw std::invalid_argument(fmt::format("free length {} m must be finite and not negative", length));
+    }
     double z = subdivision.interWallWidth;
     double w = subdivision.wallToInterWallRatio * z;
     if (z <= 0 || w <= 0) return {length};
-    auto walls = static_cast<size_t>(std::max(1.0, std::round((length + z) / (w + z))));
+    double count = std::round((length + z) / (w + z));
+    if (!(count <= kMostWallsPerBaseWall)) {
+        throw std::invalid_argument(fmt::format("ZWE width {} m and ratio {} ask {} walls on {} m, more than {}", z,
+                                                subdivision.wallToInterWallRatio, count, length,
+                                                kMostWallsPerBaseWall));
+    }
+    auto walls = static_cast<size_t>(std::max(1.0, count));
     // ZWE must leave the walls some width: fewer walls when they would not.
     while (walls > 1 && double(walls - 1) * z >= length) --walls;
     double wallWidth = (length - double(walls - 1) * z) / double(walls);
@@ -95,9 +131,7 @@ std::vector<double> wallAndInterWallWidths(double length, const WallSubdivision 
 
 StoreyFacade subdivideStorey(const std::vector<std::vector<Vec2d>> &features, bool closed,
                              const WallSubdivision &subdivision) {
-    if (subdivision.cornerWidth < 0 || subdivision.interWallWidth < 0 || subdivision.wallToInterWallRatio < 0) {
-        throw std::invalid_argument("corner width, ZWE width and wall-to-ZWE ratio must not be negative");
-    }
+    checkSubdivision(subdivision);
     if (features.empty()) throw std::invalid_argument("a storey outline needs at least one feature");
     StoreyFacade facade;
     facade.closed = closed;
@@ -130,6 +164,9 @@ StoreyFacade subdivideStorey(const std::vector<std::vector<Vec2d>> &features, bo
 }
 
 std::vector<Partition> partitionHeights(double height, const std::vector<double> &cuts) {
+    if (!(height > 0 && std::isfinite(height))) {
+        throw std::invalid_argument(fmt::format("partition height {} m must be positive and finite", height));
+    }
     if (cuts.size() < 2 || cuts.front() != 0 || cuts.back() != 1) {
         throw std::invalid_argument("partition cuts must run from 0 to 1");
     }

@@ -69,17 +69,20 @@ struct StoreyFacade {
     bool closed = false;
 };
 
-// Throws std::invalid_argument for fewer than two points in a feature, a zero-length edge, a
-// gap between features, or negative widths.
+// Throws std::invalid_argument for fewer than two points in a feature, a point that is not finite, a
+// zero-length edge, a gap between features, widths or ratio negative or not finite, a ZWE narrower
+// than 1 cm, or more than 10000 walls asked of one base wall.
 StoreyFacade subdivideStorey(const std::vector<std::vector<Vec2d>> &features, bool closed,
                              const WallSubdivision &subdivision);
 
 // The walls and ZWE of one base wall of free length `length` (Def 5.3), as widths in order:
-// wall, ZWE, wall, …, wall.
+// wall, ZWE, wall, …, wall. Throws std::invalid_argument as subdivideStorey does, and for a
+// length that is negative or not finite.
 std::vector<double> wallAndInterWallWidths(double length, const WallSubdivision &subdivision);
 
 // Def 5.4: P_i = [h·a_i, h·a_{i+1}] for cuts 0 = a_1 < … < a_{n+1} = 1. Throws
-// std::invalid_argument when the cuts do not rise strictly from 0 to 1.
+// std::invalid_argument when the cuts do not rise strictly from 0 to 1 or the height is not
+// positive and finite.
 struct Partition {
     double zFrom = 0, zTo = 0;
 };

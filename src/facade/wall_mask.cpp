@@ -15,12 +15,12 @@
 #include <fmt/format.h>
 
 #include "core/check.h"
+#include "facade/convex_pieces.h"
 
 namespace veduta {
 namespace {
 
 using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
-using Point = Kernel::Point_2;
 using Polygon = CGAL::Polygon_2<Kernel>;
 using PolygonWithHoles = CGAL::Polygon_with_holes_2<Kernel>;
 using PolygonSet = CGAL::Polygon_set_2<Kernel>;
@@ -41,21 +41,7 @@ void checkOutline(const std::vector<Vec2d> &outline, const char *what) {
                  fmt::format("a wall's {} is not counter-clockwise", what));
 }
 
-Polygon toExact(const std::vector<Vec2d> &outline) {
-    Polygon polygon;
-    for (Vec2d p : outline) polygon.push_back(Point(p.x, p.y));
-    return polygon;
-}
-
-std::vector<Vec2d> toDouble(const Polygon &polygon) {
-    std::vector<Vec2d> points;
-    for (const Point &p : polygon.vertices()) {
-        Vec2d q{CGAL::to_double(p.x()), CGAL::to_double(p.y())};
-        if (points.empty() || !(q == points.back())) points.push_back(q);
-    }
-    while (points.size() > 1 && points.front() == points.back()) points.pop_back();
-    return points;
-}
+Polygon toExact(const std::vector<Vec2d> &outline) { return cgalPolygon<Polygon>(outline); }
 
 Polygon box(double lowX, double lowY, double highX, double highY) {
     return toExact({{lowX, lowY}, {highX, lowY}, {highX, highY}, {lowX, highY}});
@@ -76,7 +62,7 @@ bool overlaps(const CGAL::Bbox_2 &a, const CGAL::Bbox_2 &b) {
 // middle of that hole, which opens the hole into both halves' outer boundaries.
 void appendWithoutHoles(const PolygonWithHoles &part, std::vector<std::vector<Vec2d>> &out) {
     if (part.number_of_holes() == 0) {
-        std::vector<Vec2d> points = toDouble(part.outer_boundary());
+        std::vector<Vec2d> points = roundedRing(part.outer_boundary());
         if (points.size() >= 3) out.push_back(std::move(points));
         return;
     }
@@ -152,7 +138,7 @@ void WallMask::rasterise() {
     std::vector<Edge> &edges = edges_;
     for (const Exact::Part &part : exact_->parts) {
         auto addRing = [&](const Polygon &ring) {
-            std::vector<Vec2d> points = toDouble(ring);
+            std::vector<Vec2d> points = roundedRing(ring);
             for (size_t i = 0; i < points.size(); ++i) edges.emplace_back(points[i], points[(i + 1) % points.size()]);
         };
         addRing(part.outer);
@@ -167,7 +153,8 @@ void WallMask::rasterise() {
     auto lastCell = [&](double offset, int count) {
         return int(std::clamp(std::ceil(offset / cellSize_) - 1, -1.0, double(count - 1)));
     };
-    for (auto [p, q] : edges) {
+    for (const Edge &edge : edges) {
+        Vec2d p = edge.first, q = edge.second;  // not a structured binding: clang cannot capture one
         double lowY = std::min(p.y, q.y), highY = std::max(p.y, q.y);
         int row0 = firstCell(lowY - low_.y, rows_), row1 = lastCell(highY - low_.y, rows_);
         for (int row = row0; row <= row1; ++row) {

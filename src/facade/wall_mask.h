@@ -67,8 +67,10 @@ class WallMask {
     MaskCover cover(Vec2d low, Vec2d high) const;
 
     // The parts of `polygon` (counter-clockwise, simple) within the free region, exactly cut and
-    // rounded to double: counter-clockwise, simple, without holes (a part that would hold a hole,
-    // around an opening smaller than it, is cut in two through the hole), possibly non-convex.
+    // rounded to double: counter-clockwise, without holes (a part that would hold a hole, around an
+    // opening smaller than it, is cut in two through the hole), possibly non-convex, and simple or,
+    // as CGAL's Boolean results may be, touching itself at a vertex (two grown openings meeting at a
+    // corner): facade/convex_pieces.h takes both.
     std::vector<std::vector<Vec2d>> clip(const std::vector<Vec2d> &polygon) const;
 
     // The x-ranges, within the bounding rectangle, where the whole strip low ≤ y ≤ high is free,

@@ -183,6 +183,24 @@ TEST(Ashlar, StonesAroundOpeningsAreConvexNotTooSmallAndKeepClearOfTheJoints) {
     EXPECT_GT(cut, 5u);
 }
 
+TEST(Ashlar, CutStonesStayConvexWhereTwoGrownOpeningsMeetAtACorner) {
+    // Grown by the mortar, the two windows touch at (2.55, 2.55): a stone cut there is one piece
+    // touching itself at that corner, which CGAL's optimal convex partition refused (a
+    // precondition failure) for every seed.
+    double mortar = 0.05;
+    WallFace wall{rectangle(0, 0, 6, 5),
+                  {rectangle(1, 1, 2.5, 2.5), rectangle(2.5 + 2 * mortar, 2.5 + 2 * mortar, 4, 4)}};
+    AshlarMasonry ashlar = parseAshlarMasonry(kVariedCourses, "");
+    for (uint32_t seed = 0; seed < 4; ++seed) {
+        Masonry masonry = layAshlar(ashlar, wall, {1, seed, 1});
+        ASSERT_GT(masonry.stones.size(), 20u);
+        for (const Stone &stone : masonry.stones) {
+            EXPECT_TRUE(isConvex(stone.outline));
+            EXPECT_GE(width(stone.outline), 0.5 * 0.4 - 1e-12);
+        }
+    }
+}
+
 TEST(Ashlar, TheSameSeedLaysTheSameWallAndAnotherSeedAnotherOne) {
     AshlarMasonry ashlar = parseAshlarMasonry(kVariedCourses, "");
     WallFace wall{rectangle(0, 0, 6, 4), {rectangle(2, 1, 3, 3)}};
@@ -214,6 +232,27 @@ TEST(Ashlar, BadDescriptionsAreReportedWithTheirPlace) {
               "a.txt:1:21: the minimum stone size: the height is not positive");
     EXPECT_EQ(errorOf("Brick { 1,1,1; }"), "a.txt:1:1: expected one block, named 'AshlarMasonry', found 'Brick'");
     EXPECT_EQ(errorOf(""), "a.txt:1:1: the description has no block named 'AshlarMasonry'");
+}
+
+TEST(Ashlar, SizesAndMortarBeyondTheLimitAreReportedAtTheirField) {
+    EXPECT_EQ(errorOf("AshlarMasonry { 0.5,0.5,0.05; 1.5,1e300,0.1; 1,1,1; 2,2,2; 0.05; 3,3,3; }"),
+              "a.txt:1:35: the maximum stone size: the height 1e300 is above the 10000 units allowed");
+    EXPECT_EQ(errorOf("AshlarMasonry { 0.5,0.5,0.05; 1.5,0.5,0.1; 1,1,1; 2,2,2; 1e5; 3,3,3; }"),
+              "a.txt:1:58: the mortar thickness 1e5 is above the 10000 units allowed");
+}
+
+TEST(Ashlar, ScaledSizesThatDoNotSuitTheWallAreRefusedAtTheBlock) {
+    AshlarMasonry ashlar = parseAshlarMasonry(kThesisExample, "a.txt");
+    ashlar.mortarThickness = kMasonryLengthLimit;  // the mortar in metres overflowed to inf: an internal error
+    EXPECT_EQ(inputErrorOf([&] {
+                  layAshlar(ashlar, {rectangle(0, 0, 4, 3), {}}, {1e305, 0, 0});
+              }),
+              "a.txt:1:1: the masonry's sizes are not finite in metres");
+    ashlar = parseAshlarMasonry(kThesisExample, "a.txt");
+    EXPECT_EQ(inputErrorOf([&] {
+                  layAshlar(ashlar, {rectangle(0, 0, 4, 3), {}}, {1e300, 0, 0});
+              }),
+              "a.txt:1:1: a size of 1.5e+300 m is out of all proportion to a wall of 4 × 3 m");
 }
 
 TEST(Ashlar, AWallThatWouldTakeTooManyStonesIsRefused) {

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/polygon_area.h"
 #include "input_error.h"
 
 namespace veduta {
@@ -33,15 +34,9 @@ std::vector<Vec2d> rectangle(double lowX, double lowY, double highX, double high
     return {{lowX, lowY}, {highX, lowY}, {highX, highY}, {lowX, highY}};
 }
 
-double area(const std::vector<Vec2d> &polygon) {
-    double twice = 0;
-    for (size_t i = 0; i < polygon.size(); ++i) twice += cross(polygon[i], polygon[(i + 1) % polygon.size()]);
-    return 0.5 * twice;
-}
-
 double brickArea(const Masonry &masonry) {
     double total = 0;
-    for (const Stone &stone : masonry.stones) total += area(stone.outline);
+    for (const Stone &stone : masonry.stones) total += signedArea(stone.outline);
     return total;
 }
 
@@ -147,7 +142,7 @@ TEST(BrickBond, BricksNeverOverlapAndStayInTheWall) {
         for (Vec2d p : stone.outline) {
             EXPECT_TRUE(p.x >= 0 && p.x <= 5 && p.y >= 0 && p.y <= 3);
         }
-        EXPECT_GT(area(stone.outline), 0);  // counter-clockwise
+        EXPECT_GT(signedArea(stone.outline), 0);  // counter-clockwise
         EXPECT_NEAR(stone.depth, 0.1 * scale, 1e-15);
         bricks.push_back(toExact(stone.outline));
     }
@@ -265,6 +260,44 @@ TEST(BrickBond, BadDescriptionsAreReportedWithTheirPlace) {
                       "BrickMasonry { \"Pattern\"; 0.05; 102,102,102; }"),
               "bond.txt:3:27: the brick 'Brick2' reaches down into the course on line 3, whose repetition (2.05) is "
               "not as long as its own (4.1)");
+}
+
+TEST(BrickBond, LengthsAndMortarBeyondTheLimitAreReportedAtTheirField) {
+    // Unbounded, 1e300 summed along a course made its length infinite and the layout ran on ±inf.
+    const std::string masonry = "BrickMasonry { \"P\"; 0.05; 9,9,9; }\n";
+    const std::string pattern = "P { 0, \"B\"; }\n";
+    EXPECT_EQ(errorOf("B { 1e300, 0.5, 0.1; 1,2,3; 4,5,6; }\n" + pattern + masonry),
+              "bond.txt:1:5: a brick's length, height and depth: the length 1e300 is above the 10000 units allowed");
+    EXPECT_EQ(errorOf("B { 2, 0.5, 20000; 1,2,3; 4,5,6; }\n" + pattern + masonry),
+              "bond.txt:1:13: a brick's length, height and depth: the depth 20000 is above the 10000 units allowed");
+    const std::string brick = "B { 2, 0.5, 0.1; 1,2,3; 4,5,6; }\n";
+    EXPECT_EQ(errorOf(brick + "P { 0, \"B\", 1e200; }\n" + masonry),
+              "bond.txt:2:13: a gap of 1e200 is above the 10000 units allowed");
+    EXPECT_EQ(errorOf(brick + "P { -1e20, \"B\"; }\n" + masonry),
+              "bond.txt:2:5: the course's offset -1e20 is beyond the ±10000 units allowed");
+    EXPECT_EQ(errorOf(brick + pattern + "BrickMasonry { \"P\"; 1e300; 9,9,9; }"),
+              "bond.txt:3:21: the mortar thickness 1e300 is above the 10000 units allowed");
+    EXPECT_EQ(errorOf(brick + pattern + "BrickMasonry { \"P\"; 10000; 9,9,9; }"), "no error");
+}
+
+TEST(BrickBond, ScaledSizesThatDoNotSuitTheWallAreRefusedAtTheBlock) {
+    BrickBond bond = parseBrickBond(kStackBond, "bond.txt");
+    // The mortar in metres overflowed to inf and reached WallMask's internal check.
+    bond.mortarThickness = kMasonryLengthLimit;
+    EXPECT_EQ(inputErrorOf([&] {
+                  layBrickBond(bond, {rectangle(0, 0, 4, 3), {}}, {1e305, 0, 0});
+              }),
+              "bond.txt:3:1: the masonry's sizes are not finite in metres");
+    bond = parseBrickBond(kStackBond, "bond.txt");
+    EXPECT_EQ(inputErrorOf([&] {
+                  layBrickBond(bond, {rectangle(0, 0, 4, 3), {}}, {1e300, 0, 0});
+              }),
+              "bond.txt:3:1: a size of 2.05e+300 m is out of all proportion to a wall of 4 × 3 m");
+    // Bricks of 0.5 µm a kilometre from the origin: adding one would barely move the walk.
+    EXPECT_EQ(inputErrorOf([&] {
+                  layBrickBond(bond, {rectangle(1e3, 0, 1e3 + 1e-5, 1e-5), {}}, {1e-6, 0, 0});
+              }),
+              "bond.txt:3:1: stones of 5e-07 m are too small to lay on a wall reaching 1000.00001 m from the origin");
 }
 
 TEST(BrickBond, AWallThatWouldTakeTooManyBricksIsRefused) {

@@ -46,6 +46,8 @@ double outside(const std::vector<Vec2d> &piece, const std::vector<Vec2d> &region
 
 double areaOf(const std::vector<Vec2d> &polygon) { return CGAL::to_double(toCgal(polygon).area()); }
 
+constexpr double kSliverArea = 1e-12;  // square metres: the pieces' own least area
+
 const CoarseOpening kWindow{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
 
 RefinedOpening archedWindow() {
@@ -217,6 +219,137 @@ TEST(Casings, ExtrudedPiecesFaceOutOfTheWall) {
     double expected = 0;
     for (const FacadePiece &p : result.pieces) expected += p.kind == PieceKind::Pane ? areaOf(p.polygon) : 0;
     EXPECT_NEAR(paneArea, expected, 1e-5);
+}
+
+TEST(Casings, KlinkerBricksMustBePositiveFiniteAndSpacedNotNegatively) {
+    RefinedOpening opening = refineOpening(kWindow, {});
+    const double nan = std::nan(""), inf = HUGE_VAL;
+    for (KlinkerBricks bad : std::vector<KlinkerBricks>{{0, 0.01, 0.01},
+                                                        {-0.1, 0.01, 0.2},
+                                                        {nan, 0.01, 0.01},
+                                                        {inf, 0.01, 0.01},
+                                                        {0.12, 0.01, -0.01},
+                                                        {0.12, 0.01, nan},
+                                                        {0.12, 0.01, inf},
+                                                        {0.12, nan, 0.01}}) {
+        Casing klinker = casingOf(CasingStyle::Klinker);
+        klinker.klinker = bad;
+        EXPECT_THROW(buildOpeningPieces(opening, klinker, {}), std::invalid_argument)
+            << bad.brickWidth << " " << bad.brickOverhang << " " << bad.spacing;
+        klinker.style = CasingStyle::Einfach;  // other styles do not use them
+        EXPECT_NO_THROW(buildOpeningPieces(opening, klinker, {}));
+    }
+}
+
+TEST(Casings, KlinkerRefusesMoreBricksAlongAStripThanItsLimit) {
+    Casing klinker = casingOf(CasingStyle::Klinker);
+    klinker.klinker = {0.0009, 0.01, 0};  // 1111 bricks along the 1 m bottom strip
+    EXPECT_THROW(buildOpeningPieces(refineOpening(kWindow, {}), klinker, {}), std::invalid_argument);
+    klinker.klinker = {1e-12, 0.01, 0};
+    EXPECT_THROW(buildOpeningPieces(refineOpening(kWindow, {}), klinker, {}), std::invalid_argument);
+}
+
+TEST(Casings, KlinkerWithoutSpacingHasTouchingBricksAndNoMortar) {
+    Casing klinker = casingOf(CasingStyle::Klinker);
+    klinker.klinker.spacing = 0;
+    OpeningPieces result = buildOpeningPieces(refineOpening(kWindow, {}), klinker, {});
+    size_t bottomBricks = 0;
+    double total = 0;
+    for (const FacadePiece &p : result.pieces) {
+        EXPECT_NE(p.kind, PieceKind::KlinkerMortar);
+        EXPECT_GT(areaOf(p.polygon), kSliverArea);
+        total += areaOf(p.polygon);
+        auto top = std::max_element(p.polygon.begin(), p.polygon.end(), [](Vec2d a, Vec2d b) { return a.y < b.y; });
+        if (p.kind != PieceKind::KlinkerBrick || top->y > 0.1 + 1e-12) continue;
+        auto [lo, hi] =
+            std::minmax_element(p.polygon.begin(), p.polygon.end(), [](Vec2d a, Vec2d b) { return a.x < b.x; });
+        EXPECT_NEAR(hi->x - lo->x, 1.0 / 8, 1e-12);  // round(1 / 0.12) = 8 bricks share the metre
+        ++bottomBricks;
+    }
+    EXPECT_EQ(bottomBricks, 8u);
+    EXPECT_NEAR(total, areaOf(result.hole), 1e-9);
+}
+
+TEST(Casings, OverhangsAndDepthsMustBeFinite) {
+    RefinedOpening opening = refineOpening(kWindow, {});
+    Casing casing = casingOf(CasingStyle::Einfach);
+    casing.edges[kRight].overhang = std::nan("");
+    EXPECT_THROW(buildOpeningPieces(opening, casing, {}), std::invalid_argument);
+    casing = casingOf(CasingStyle::Einfach);
+    EXPECT_THROW(buildOpeningPieces(opening, casing, {0.06, HUGE_VAL, -0.1}), std::invalid_argument);
+    EXPECT_THROW(buildOpeningPieces(opening, casing, {0.06, -0.05, std::nan("")}), std::invalid_argument);
+}
+
+TEST(Casings, AProfileThatTurnsBackIsRefusedNotAFailedCheck) {
+    // The arch's outline crosses itself.
+    std::array<EdgeRefinement, 4> e;
+    e[kTop] = {0, 0, 0, 0.3, {{0.8, 1}, {0.2, 1}}};
+    EXPECT_THROW(buildOpeningPieces(refineOpening(kWindow, e), casingOf(CasingStyle::Einfach), {}),
+                 std::invalid_argument);
+    // A band's casing that closes a gap against the opening (found by random search).
+    const CoarseOpening skewed{{0, 0},
+                               {1.2181001869715322, 0},
+                               {1.2181001869715322, 2.1236638096642957 + 0.35440864996217336},
+                               {0, 2.1236638096642957}};
+    e = {};
+    e[kRight] = {0.16199516023646721,
+                 0.22021569636439536,
+                 0,
+                 0.041319851061046659,
+                 {{0.05248556457767091, 0.98710164631874642},
+                  {0.42802530256450944, 0.66988800281374872},
+                  {0.75314438850720922, 0},
+                  {0.80454975605992796, 0.5671313560336656},
+                  {1, 0.1801164617850394}}};
+    e[kTop].distL = 0.22323141740535757;
+    e[kLeft] = {0.0042511760265509695,
+                0,
+                0,
+                0.34382070826885713,
+                {{0.33457947067304872, 0.24469222582214167},
+                 {0.59639786621472246, 0},
+                 {0.75103731829570897, 0.9393312856473468}}};
+    Casing casing;
+    casing.edges[kRight] = {0.018981442416256589, 0.014614954832683416};
+    EXPECT_THROW(buildOpeningPieces(refineOpening(skewed, e, Dominance::LeftAndRight, OpeningKind::Door), casing,
+                                    {0.08, -0.05, -0.1}),
+                 std::invalid_argument);
+}
+
+TEST(Casings, AKlinkerSliverTheFrameCannotFollowIsRefusedNotNaN) {
+    // Found by random search: the clear opening keeps a corner that turns back on itself.
+    const CoarseOpening skewed{{0, 0},
+                               {1.3562335727900678, 0},
+                               {1.3562335727900678, 2.9366595651445433 + 0.031137680519812746},
+                               {0, 2.9366595651445433}};
+    std::array<EdgeRefinement, 4> e;
+    e[kBottom] = {0.15414520278074381, 0, 0, 0.36495678276965798, {}};
+    e[kRight] = {0.31302424398820899, 0, 0.20793330731923251, 0, {}};
+    e[kTop] = {0.31898924894536917, 0.31452508032507182, 0, 0, {}};
+    e[kLeft] = {0.043901289170635197, 0.14477663276672156, 0, 0, {}};
+    Casing klinker;
+    klinker.style = CasingStyle::Klinker;
+    klinker.edges = {{{0.033129274085302446, 0.011941801728510294},
+                      {0.057246976582504661, 0.047954066579480058},
+                      {0.2061674254537274, 0.033248265203539663},
+                      {0.22297516964473149, 0.044893958674876999}}};
+    klinker.klinker = {0.17122361257284099, 0.01, 0.018036081627112257};
+    EXPECT_THROW(buildOpeningPieces(refineOpening(skewed, e, Dominance::BottomAndTop, OpeningKind::Door), klinker,
+                                    {0.067609037563462593, -0.05, -0.1}),
+                 std::invalid_argument);
+}
+
+TEST(Casings, ExtrudingRefusesPiecesThatAreNotFiniteSimplePolygons) {
+    WallFrame3d frame{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}};
+    FacadePiece bowTie{{{0, 0}, {1, 1}, {1, 0}, {0, 1}}, 0, 0.1, PieceKind::Casing};
+    EXPECT_THROW(extrudePieces({bowTie}, frame, {}), std::invalid_argument);
+    FacadePiece nan{{{0, 0}, {1, 0}, {std::nan(""), 1}}, 0, 0.1, PieceKind::Casing};
+    EXPECT_THROW(extrudePieces({nan}, frame, {}), std::invalid_argument);
+    FacadePiece deep{{{0, 0}, {1, 0}, {1, 1}}, 0, HUGE_VAL, PieceKind::Casing};
+    EXPECT_THROW(extrudePieces({deep}, frame, {}), std::invalid_argument);
+    FacadePiece fine{{{0, 0}, {1, 0}, {1, 1}}, 0, 0.1, PieceKind::Casing};
+    EXPECT_EQ(extrudePieces({fine}, frame, {}).triangleCount(), 7u);
+    EXPECT_THROW(extrudePieces({fine}, {{0, 0, 0}, {std::nanf(""), 0, 0}, {0, 0, 1}}, {}), std::invalid_argument);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace veduta {
@@ -82,6 +83,60 @@ TEST(Consoles, ConcaveCornerKeepsConsolesClearOfTheMitre) {
         EXPECT_GE(toCorner, halfWidth - 1e-6);
         if (std::abs(foot.x - 4) < 1e-6 || std::abs(foot.y - 4) < 1e-6) {
             EXPECT_GE(toCorner, halfWidth + reach - 1e-5);
+        }
+    }
+}
+
+double reachOf(const ProfileOutline &outline) {
+    double reach = 0;
+    for (Vec2d point : outline.points) reach = std::max(reach, point.x);
+    return reach;
+}
+
+// Edges just long enough for one more console than fits with a margin for the mitre: the old
+// margin, taken at the wrong end, let the last console of the wall that ends at the concave
+// corner run across the mitre plane into the next wall's.
+TEST(Consoles, NoConsoleCrossesTheMitrePlaneAtAConcaveCorner) {
+    Placed placed = figure5_28(0.5);
+    double halfWidth = 0.35 * placed.scale / 2, depth = reachOf(placed.outline);
+    ASSERT_GT(depth, 0.02);
+    double edge = 2 * halfWidth + 3 + 0.01;  // two spacings and 1 cm over, without the margin
+    double c = 8 - edge;                     // the concave corner is (c, 4)
+    SweepPath path{{{0, 0}, {8, 0}, {8, 4}, {c, 4}, {c, 4 + edge}, {0, 4 + edge}}, 0, true};
+    std::vector<Transform> consoles = placeConsoles(path, placed.cornice.consoles[0], placed.outline, placed.scale);
+    size_t before = 0, after = 0;  // on the wall ending at the corner, and on the one starting there
+    for (const Transform &console : consoles) {
+        Vec3f foot = console.applyPoint({0, 0, 0});
+        bool ending = std::abs(foot.y - 4) < 1e-5 && foot.x > c, starting = std::abs(foot.x - c) < 1e-5 && foot.y > 4;
+        if (!ending && !starting) continue;
+        ++(ending ? before : after);
+        // The mitre plane is the diagonal through the corner; the first wall's consoles stay on
+        // its side (x - c >= y - 4), the second wall's on the other.
+        for (float side : {-0.5f, 0.5f})
+            for (float out : {0.0f, 1.0f}) {
+                Vec3f corner = console.applyPoint({side, 0, out});
+                double beyond = (corner.y - 4) - (corner.x - c);
+                EXPECT_LE(ending ? beyond : -beyond, 1e-5) << "console at " << foot.x << ", " << foot.y;
+            }
+    }
+    EXPECT_EQ(before, 2u);
+    EXPECT_EQ(after, 2u);
+}
+
+// At a convex corner the mitre lies beyond the edge: the consoles keep only half their width
+// from the corner (they were once pulled back by their depth at an edge's end, losing one).
+TEST(Consoles, ConvexCornerTakesNoMarginForTheMitre) {
+    Placed placed = figure5_28(0.5);
+    double halfWidth = 0.35 * placed.scale / 2, depth = reachOf(placed.outline);
+    ASSERT_GT(depth, 0.02);
+    double side = 2 * halfWidth + 6 + 0.01;  // four spacings and 1 cm over
+    SweepPath path{{{0, 0}, {side, 0}, {side, side}, {0, side}}, 0, true};
+    std::vector<Transform> consoles = placeConsoles(path, placed.cornice.consoles[0], placed.outline, placed.scale);
+    EXPECT_EQ(consoles.size(), 4u * 5);
+    for (const Transform &console : consoles) {
+        for (float x : {-0.5f, 0.5f}) {
+            Vec3f corner = console.applyPoint({x, 0, 0});
+            EXPECT_GE(std::min({corner.x, corner.y, float(side) - corner.x, float(side) - corner.y}), -1e-5f);
         }
     }
 }

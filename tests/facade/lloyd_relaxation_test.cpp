@@ -34,6 +34,21 @@ TEST(WallRegion, TakesClockwiseOpeningsAsWell) {
     EXPECT_NEAR(WallRegion(wall).area(), 15, 1e-12);
 }
 
+TEST(WallRegion, ContainsTheIslandWithinAHoleOfAnotherPiece) {
+    // Four openings ringing the square [3, 7]² leave it an island in the hole [2, 8]² of the rest
+    // of the wall. The point test stopped at the first piece whose hole held the point.
+    WallFace wall{rectangle(0, 0, 10, 10),
+                  {rectangle(2, 2, 8, 3), rectangle(2, 7, 8, 8), rectangle(2, 2, 3, 8), rectangle(7, 2, 8, 8)}};
+    WallRegion region(wall);
+    ASSERT_EQ(region.pieces().size(), 2u);
+    EXPECT_NEAR(region.area(), 100 - 36 + 16, 1e-12);
+    EXPECT_TRUE(region.contains({5, 5}));
+    EXPECT_TRUE(region.contains({1, 1}));
+    EXPECT_FALSE(region.contains({2.5, 5}));
+    // A cell wholly on the island is kept whole, not dropped.
+    EXPECT_NEAR(area(region.clip(rectangle(4, 4, 6, 6))), 4, 1e-12);
+}
+
 TEST(WallRegion, ClipsAConvexPolygonToTheWall) {
     WallRegion region(wallWithDoorAndWindow());
     // Wholly inside: the polygon itself.

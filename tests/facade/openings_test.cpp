@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <stdexcept>
 
 namespace veduta {
@@ -121,6 +122,39 @@ TEST(Openings, AnOutlineFitsUnderALimitAtOrAboveItsTop) {
     std::optional<std::string> why = whyNotUnder(outline, 1.5);
     ASSERT_TRUE(why.has_value());
     EXPECT_NE(why->find("2.000"), std::string::npos);
+}
+
+TEST(Openings, LeftEdgeMovesAlongTheTopEdgeOnANonParallelogram) {
+    // A wall with a sloping top: the opening's top edge is steeper than its bottom edge.
+    WallQuad wall{{0, 0}, {4, 0}, {4, 3}, {0, 2}};
+    CoarseOpening c = coarseOpening(wall, 0.25, 0.75, 0.2, 0.8);
+    expectNear(c.bl, {1, 0.45});
+    expectNear(c.br, {3, 0.55});
+    expectNear(c.tr, {3, 2.2});
+    expectNear(c.tl, {1, 1.8});
+    std::array<EdgeRefinement, 4> e;
+    e[kLeft].distB = 0.1;
+    RefinedOpening o = refineOpening(c, e);
+    // in = f_tr − f_tl = (2, 0.4), not f_br − f_bl = (2, 0.1).
+    expectNear(o.inward[kLeft], {2, 0.4});
+    expectNear(o.edges[kLeft].l, {1.2, 1.84});
+    expectNear(o.edges[kLeft].r, {1.2, 0.49});
+}
+
+TEST(Openings, NonFiniteOrDegenerateQuadsAreRefused) {
+    const double nan = std::nan(""), inf = HUGE_VAL;
+    EXPECT_THROW(coarseOpening({{0, 0}, {nan, 0}, {4, 3}, {0, 3}}, 0.2, 0.4, 0.2, 0.8), std::invalid_argument);
+    WallQuad wall = WallQuad::rectangle({0, 0}, {10, 3});
+    EXPECT_THROW(placeOpening(wall, {inf, 1.5, 1, 1, 0.9}), std::invalid_argument);
+    EXPECT_THROW(placeOpening(wall, {2, 1.5, inf, 1, 0.9}), std::invalid_argument);
+    EXPECT_THROW(placeOpening(wall, {2, 1.5, 1, nan, 0.9}), std::invalid_argument);
+    std::array<EdgeRefinement, 4> e;
+    EXPECT_THROW(refineOpening({{0, 0}, {1, 0}, {1, nan}, {0, 1}}, e), std::invalid_argument);
+    EXPECT_THROW(refineOpening({{0, 0}, {0, 0}, {0, 0}, {0, 0}}, e), std::invalid_argument);  // no area
+    EXPECT_THROW(refineOpening({{0, 0}, {0, 1}, {1, 1}, {1, 0}}, e), std::invalid_argument);  // clockwise
+    EXPECT_THROW(refineOpening({{0, 0}, {1, 1}, {1, 0}, {0, 1}}, e), std::invalid_argument);  // crossed
+    EXPECT_THROW(refineOpening({{0, 0}, {1e300, 0}, {1e300, 1e300}, {0, 1e300}}, e), std::invalid_argument);
+    EXPECT_NO_THROW(refineOpening(kUnit, e));
 }
 
 }  // namespace

@@ -213,6 +213,77 @@ TEST(CorniceDescription, ErrorsNameTheirPlace) {
               "cornice.txt:1:63: a texture's right must lie right of its left");
 }
 
+// A profile that once reached +inf (the third line: 1e308 up, 1e308 on and 1 out) and one whose
+// height overflowed (an infinite extent made the scale 0, and inf · 0 a NaN): sizes and angles
+// are limited where they are read.
+TEST(CorniceDescription, SizesAndAnglesAreLimited) {
+    EXPECT_EQ(errorOf("Modifications { line, rel, 90, 1e308; line, rel, 0, 1e308; line, rel, -90, 1; }"),
+              "cornice.txt:1:32: the length must be at most 10000, found 1e+308");
+    EXPECT_EQ(errorOf("Modifications { arc, rel, 0, 90, 10000.5; }"),
+              "cornice.txt:1:34: the radius must be at most 10000, found 10000.5");
+    EXPECT_EQ(errorOf("Modifications { line, abs, 1e300, 1; }"),
+              "cornice.txt:1:28: an angle must lie in [-3600, 3600], found 1e+300");
+    EXPECT_EQ(errorOf("Modifications { line, rel, -3600.5, 1; }"),
+              "cornice.txt:1:28: an angle must lie in [-3600, 3600], found -3600.5");
+    EXPECT_EQ(errorOf("Modifications { line, rel, 0, 1; } Consoles { 1.5; \"a.obj\", 0.3, 1e5; }"),
+              "cornice.txt:1:66: the height must be at most 10000, found 100000");
+    EXPECT_EQ(errorOf("Modifications { line, rel, 3600, 10000; arc, rel, -3600, 360, 10000; }"), "no error");
+}
+
+// 1 - 1e-300 is 1: counted down from the top the rectangle was empty, and a frieze piece keeping
+// its aspect was infinitely wide.
+TEST(CorniceDescription, TextureRectangleMustStayNonEmptyCountedDown) {
+    EXPECT_EQ(errorOf("Modifications { line, rel, 0, 1; } TexturePool { \"a\", 0, 1e-300, 1, 0; }"),
+              "cornice.txt:1:58: a texture's top and bottom are too close to tell apart");
+}
+
+// Once 1 + 1e-300 == 1 drew a band of no length: NaN normals, and a frieze strip of height 0.
+TEST(Profile, StepLostBesideTheProfilesSizeIsAnError) {
+    Profile profile = parseCorniceDescription(
+                          "Modifications { line, rel, 0, 1;\n line, rel, 90, 1e-300, 0, 0, 0; }\n"
+                          "TexturePool { \"a\", 0, 1, 1, 0; }",
+                          "c.txt")
+                          .profile;
+    try {
+        traceProfile(profile, 5);
+        FAIL() << "no error";
+    } catch (const InputError &error) {
+        EXPECT_STREQ(error.what(),
+                     "c.txt:2:2: this command is too short to draw in a profile reaching 1 units from "
+                     "its start");
+    }
+    // A tiny arc far from the start: its steps vanish too.
+    Profile arc = parseCorniceDescription("Modifications { line, rel, 0, 10000; arc, rel, 0, 90, 1e-9; }", "c").profile;
+    EXPECT_THROW(traceProfile(arc, 5), InputError);
+    // Small beside the profile but not lost: drawn.
+    Profile small = parseCorniceDescription("Modifications { line, rel, 0, 1; line, rel, 90, 1e-9; }", "c").profile;
+    EXPECT_EQ(traceProfile(small, 5).points.size(), 3u);
+}
+
+TEST(Profile, ProfileMuchWiderThanHighCannotFillAPartition) {
+    Profile profile =
+        parseCorniceDescription("Modifications { line, rel, 90, 10000; line, rel, -90, 1e-3; }", "c.txt").profile;
+    try {
+        heightScale(profile, traceProfile(profile, 5), 1);
+        FAIL() << "no error";
+    } catch (const InputError &error) {
+        EXPECT_STREQ(error.what(), "c.txt:1:1: the profile is more than 1000000 times as wide as it is high");
+    }
+    Profile wide =
+        parseCorniceDescription("Modifications { line, rel, 90, 10000; line, rel, -90, 0.01; }", "c.txt").profile;
+    EXPECT_NEAR(heightScale(wide, traceProfile(wide, 5), 1), 100, 1e-6);
+}
+
+TEST(Profile, OutlineBeyondFiniteCoordinatesHasNoScale) {
+    Profile profile = parseCorniceDescription("Modifications { line, rel, 0, 1; }", "c.txt").profile;
+    ProfileOutline outline{{{0, 0}, {HUGE_VAL, 1}}, {1}};
+    EXPECT_THROW(heightScale(profile, outline, 1), InputError);
+    outline.points = {{0, -1e308}, {0, 1e308}};  // the extent overflows
+    EXPECT_THROW(heightScale(profile, outline, 1), InputError);
+    outline.points = {{0, 0}, {std::nan(""), 1}};
+    EXPECT_THROW(heightScale(profile, outline, 1), InputError);
+}
+
 TEST(CorniceDescription, CommandCountIsLimited) {
     std::string text = "Modifications {";
     for (size_t i = 0; i <= kProfileCommandLimit; ++i) text += " line, rel, 0, 1;";

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "core/polygon_area.h"
 #include "facade/plan_features.h"
 
 namespace veduta {
@@ -32,12 +33,6 @@ bool hasCell(const std::vector<std::vector<Vec2d>> &cells, const std::vector<Vec
         if (all) return true;
     }
     return false;
-}
-
-double signedArea(const std::vector<Vec2d> &ring) {
-    double twice = 0;
-    for (size_t i = 0; i < ring.size(); ++i) twice += cross(ring[i], ring[(i + 1) % ring.size()]);
-    return twice / 2;
 }
 
 void expectPolyline(const std::vector<Vec2d> &actual, const std::vector<Vec2d> &expected) {

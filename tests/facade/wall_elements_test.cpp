@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <stdexcept>
 
 namespace veduta {
@@ -124,6 +125,30 @@ TEST(WallElements, AnElementWithOtherCutsBreaksTheBandIntoARunAroundIt) {
     EXPECT_EQ(bands[2].count, n - 1);
     EXPECT_FALSE(bands[2].aroundTheOutline);
     EXPECT_NEAR(bands[2].zTo, 0.3, 1e-12);
+}
+
+TEST(WallElements, AbsurdZweCountsAndNonFiniteValuesAreRefused) {
+    const double nan = std::nan(""), inf = HUGE_VAL;
+    // 1e-12 m ZWE would ask about 1e13 elements of a 10 m wall.
+    EXPECT_THROW(wallAndInterWallWidths(10, {0, 1e-12, 4}), std::invalid_argument);
+    EXPECT_THROW(subdivideStorey({kL}, true, {0.5, 1e-12, 4}), std::invalid_argument);
+    EXPECT_THROW(wallAndInterWallWidths(10, {0, 0.009, 4}), std::invalid_argument);
+    EXPECT_EQ(wallAndInterWallWidths(10, {0, 0.01, 4}).size(), 2 * 200u - 1);  // round(10.01 / 0.05)
+    // The narrowest ZWE with a tiny ratio: the count limit refuses a long wall.
+    EXPECT_THROW(wallAndInterWallWidths(1000, {0, 0.01, 1e-9}), std::invalid_argument);
+    for (WallSubdivision bad : std::vector<WallSubdivision>{
+             {nan, 0.4, 4}, {0.5, nan, 4}, {0.5, 0.4, nan}, {inf, 0.4, 4}, {0.5, inf, 4}, {0.5, 0.4, inf}}) {
+        EXPECT_THROW(subdivideStorey({kL}, true, bad), std::invalid_argument);
+        EXPECT_THROW(wallAndInterWallWidths(10, bad), std::invalid_argument);
+    }
+    EXPECT_THROW(wallAndInterWallWidths(nan, kRhythm), std::invalid_argument);
+    EXPECT_THROW(wallAndInterWallWidths(inf, kRhythm), std::invalid_argument);
+    EXPECT_THROW(wallAndInterWallWidths(-1, kRhythm), std::invalid_argument);
+    EXPECT_THROW(subdivideStorey({{{0, 0}, {nan, 0}, {1, 1}}}, true, kRhythm), std::invalid_argument);
+    EXPECT_THROW(subdivideStorey({{{-1e308, 0}, {1e308, 0}, {0, 1}}}, true, kRhythm), std::invalid_argument);
+    EXPECT_THROW(partitionHeights(nan, {0, 1}), std::invalid_argument);
+    EXPECT_THROW(partitionHeights(inf, {0, 1}), std::invalid_argument);
+    EXPECT_THROW(partitionHeights(-3, {0, 1}), std::invalid_argument);
 }
 
 }  // namespace

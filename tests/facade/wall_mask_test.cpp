@@ -6,18 +6,13 @@
 #include <gtest/gtest.h>
 
 #include "core/hash.h"
+#include "core/polygon_area.h"
 
 namespace veduta {
 namespace {
 
 std::vector<Vec2d> rectangle(double lowX, double lowY, double highX, double highY) {
     return {{lowX, lowY}, {highX, lowY}, {highX, highY}, {lowX, highY}};
-}
-
-double area(const std::vector<Vec2d> &polygon) {
-    double twice = 0;
-    for (size_t i = 0; i < polygon.size(); ++i) twice += cross(polygon[i], polygon[(i + 1) % polygon.size()]);
-    return 0.5 * twice;
 }
 
 // A 4 m × 3 m wall with a 1 m window at (1, 1); grown by 0.1 m of mortar it blocks [0.9, 2.1]².
@@ -93,7 +88,7 @@ TEST(WallMask, ClipCutsExactlyAndOpensHolesIntoTheOutline) {
     WallMask mask(wallWithWindow(), 0.1, 0.25);
     auto pieces = mask.clip(rectangle(0.5, 0.5, 1.5, 1.5));
     ASSERT_EQ(pieces.size(), 1u);
-    EXPECT_NEAR(area(pieces[0]), 1 - 0.6 * 0.6, 1e-12);
+    EXPECT_NEAR(signedArea(pieces[0]), 1 - 0.6 * 0.6, 1e-12);
 
     // A stone larger than the grown window around it would keep a hole: it comes back in parts
     // without holes, counter-clockwise, together the stone minus the grown window.
@@ -101,8 +96,8 @@ TEST(WallMask, ClipCutsExactlyAndOpensHolesIntoTheOutline) {
     ASSERT_GE(parts.size(), 2u);
     double total = 0;
     for (const auto &part : parts) {
-        EXPECT_GT(area(part), 0);
-        total += area(part);
+        EXPECT_GT(signedArea(part), 0);
+        total += signedArea(part);
     }
     EXPECT_NEAR(total, 4 - 1.2 * 1.2, 1e-12);
     EXPECT_NEAR(mask.freeArea(), 12 - 1.2 * 1.2, 1e-12);
@@ -149,8 +144,8 @@ TEST(WallMask, RectanglesCutAlongTheAxesAgreeWithTheExactRegion) {
         auto pieces = mask.clip(stone);
         double total = 0;
         for (const auto &piece : pieces) {
-            EXPECT_GT(area(piece), 0);
-            total += area(piece);
+            EXPECT_GT(signedArea(piece), 0);
+            total += signedArea(piece);
         }
         CGAL::Polygon_set_2<Kernel> inside(region);
         inside.intersection(exact(stone));
