@@ -10,20 +10,17 @@
 
 #include "core/polygon_area.h"
 #include "input_error.h"
+#include "thesis_figures.h"
 
 namespace veduta {
 namespace {
+
+using thesis::kFigure5_7;
 
 using test::inputErrorOf;
 using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
 using ExactPolygon = CGAL::Polygon_2<Kernel>;
 using ExactPolygonWithHoles = CGAL::Polygon_with_holes_2<Kernel>;
-
-// digest-001 §2.5, Fig. 5.7 (L1043) verbatim.
-constexpr const char *kFigure5_7 = R"(Brick1 { 2.0, 0.5, 0.1; 206,78,51; 255,147,124; }
-Brick2 { 2.0, 1.0, 0.1; 206,78,51; 255,147,124; }
-Pattern { -1.0, "Brick1", "Brick2"; 0.0, "Brick1", 2.0; 1.0, "Brick1"; }
-BrickMasonry { "Pattern"; 0.05; 102,102,102; })";
 
 // One brick in a stack bond: every brick of a course exactly over one of the course below.
 constexpr const char *kStackBond = R"(B { 2.0, 0.5, 0.1; 100,100,100; 200,200,200; }

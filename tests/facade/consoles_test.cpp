@@ -5,16 +5,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "thesis_figures.h"
+
 namespace veduta {
 namespace {
 
-// Fig. 5.28 (L1216): one console, abstand 1.5, 0.35 × 0.45 profile units.
-constexpr const char *kFigure5_28 =
-    R"(Modifications { line, rel, 0, 0.2; arc, abs, 90, 45, 0.5, 0, 1, 2; line, rel, -90, 0.4; }
-Consoles { 1.5; "objects/simple_console.obj", 0.35, 0.45; }
-TextureDescs { "textures/frieze.bmp", 0.0, 0.625, 0.04875, 0.25;
-               "textures/frieze.bmp", 0.0, 1.0, 0.5, 0.625;
-               "textures/frieze.bmp", 0.953125, 0.625, 1.0, 0.25; })";
+using thesis::kFigure5_28;
 
 struct Placed {
     CorniceDescription cornice;

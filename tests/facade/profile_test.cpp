@@ -7,28 +7,14 @@
 
 #include <fmt/format.h>
 
+#include "thesis_figures.h"
+
 namespace veduta {
 namespace {
 
-// digest-001 §2.6, Fig. 5.20 verbatim (L1157).
-constexpr const char *kFigure5_20 =
-    R"(Modifications { line, rel, 90, 0.3; line, rel, -90, 10.0; line, rel, 90, 0.6; line, rel, -90, 11.0;
-line, rel, 90, 0.6; line, rel, -90, 0.6; line, rel, 90, 0.6; line, rel, -90, 2.0; line, rel, 90, 2.0;
-arc, rel, 0, -90, 4.0; line, rel, 90, 5.0; line, rel, -90, 5.0; line, rel, 90, 0.6; line, rel, -90, 0.6;
-line, rel, 45, 7.0; line, rel, -45, 0.6; line, rel, 90, 0.6; line, rel, -90, 2.0; line, rel, -84, 22.0; })";
-
-// Its lines-only prefix (digest §8 row 10).
-constexpr const char *kFigure5_20Lines =
-    R"(Modifications { line, rel, 90, 0.3; line, rel, -90, 10.0; line, rel, 90, 0.6; line, rel, -90, 11.0;
-line, rel, 90, 0.6; line, rel, -90, 0.6; line, rel, 90, 0.6; line, rel, -90, 2.0; line, rel, 90, 2.0; })";
-
-// digest-001 §2.6, Fig. 5.28 verbatim (L1216).
-constexpr const char *kFigure5_28 =
-    R"(Modifications { line, rel, 0, 0.2; arc, abs, 90, 45, 0.5, 0, 1, 2; line, rel, -90, 0.4; }
-Consoles { 1.5; "objects/simple_console.obj", 0.35, 0.45; }
-TextureDescs { "textures/frieze.bmp", 0.0, 0.625, 0.04875, 0.25;
-               "textures/frieze.bmp", 0.0, 1.0, 0.5, 0.625;
-               "textures/frieze.bmp", 0.953125, 0.625, 1.0, 0.25; })";
+using thesis::kFigure5_20;
+using thesis::kFigure5_20Lines;
+using thesis::kFigure5_28;
 
 ProfileOutline outlineOf(const char *text, double arcStep = 5) {
     return traceProfile(parseCorniceDescription(text, "cornice.txt").profile, arcStep);
