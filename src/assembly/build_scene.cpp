@@ -15,6 +15,7 @@
 #include "city/citygml_buildings.h"
 #include "city/generate_buildings.h"
 #include "city/generate_city.h"
+#include "city/modular_buildings.h"
 #include "city/slg_buildings.h"
 #include "core/memory_limit.h"
 #include "geo/generate_landscape.h"
@@ -117,6 +118,15 @@ class SceneAssembler {
                     gml, d_.georeference, camera, builder_,
                     [&](const std::filesystem::path &image) {
                         return texture({image, "", gml.fileLoc});
+                    },
+                    warnings_);
+            });
+        for (const ModularBuildingDesc &b : d_.modularBuildings)
+            within(b.loc, "<modular_building>", [&] {
+                generateModularBuilding(
+                    b, seedOf(b.seed), camera, builder_,
+                    [&](const std::filesystem::path &image) {
+                        return texture({image, "", b.loc});
                     },
                     warnings_);
             });

@@ -211,6 +211,18 @@ struct CityGmlDesc {
     uint32_t objectId = 0;
 };
 
+// A <modular_building> element: a building of floor-plan modules in Finkenzeller's structure and
+// style languages (docs/facades.md), placed by its transform.
+struct ModularBuildingDesc {
+    FileLoc loc;
+    std::filesystem::path structure, style;  // resolved against the scene's folder
+    FileLoc structureLoc, styleLoc;
+    Transform transform;
+    std::optional<uint32_t> seed;
+    uint32_t objectId = 0;
+    uint32_t buildingId = 0;  // its random choices (the masonry) and its id pass
+};
+
 // An <slg> element: a block or a district planned with Schrader's Spatial Landmark Graph from
 // the urban-geography tables alone (docs/slg.md): its outline in the scene's metres, cut into
 // lots (a district first into blocks between streets), each lot's building planned down to its
@@ -292,6 +304,7 @@ struct SceneDescription {
     std::vector<BuildingGroupDesc> buildingGroups;
     std::vector<CityDesc> cities;
     std::vector<CityGmlDesc> cityGml;
+    std::vector<ModularBuildingDesc> modularBuildings;
     std::vector<SlgDesc> slg;
     std::optional<LandscapeDesc> landscape;
 };

@@ -76,6 +76,8 @@ class SceneFileReader {
             readGenerate(e);
         } else if (n == "citygml") {
             readCityGml(e);
+        } else if (n == "modular_building") {
+            readModularBuilding(e);
         } else if (n == "slg") {
             readSlg(e);
         } else if (n == "landscape") {
@@ -505,6 +507,23 @@ class SceneFileReader {
         scene_.cityGml.push_back(std::move(gml));
     }
 
+    void readModularBuilding(const XmlElement &e) {
+        ModularBuildingDesc b;
+        b.loc = e.loc();
+        b.structure = pathAttribute(e, "structure");
+        b.structureLoc = e.attributeLoc("structure");
+        b.style = pathAttribute(e, "style");
+        b.styleLoc = e.attributeLoc("style");
+        b.transform = readTransform(e);
+        b.seed = seedOverride(e);
+        b.buildingId = e.unsignedInteger("building", 0);
+        if (e.has("building") && b.buildingId == 0)
+            e.failAt("building", "building ids start at 1; 0 means no building");
+        readObjectId(e, b.loc);
+        e.checkLeaf();
+        scene_.modularBuildings.push_back(std::move(b));
+    }
+
     void readSlg(const XmlElement &e) {
         SlgDesc slg;
         slg.loc = e.loc();
@@ -766,6 +785,7 @@ class SceneFileReader {
         }
         for (CityDesc &c : scene_.cities) byPlace[{c.loc.line, c.loc.column}] = &c.objectId;
         for (CityGmlDesc &c : scene_.cityGml) byPlace[{c.loc.line, c.loc.column}] = &c.objectId;
+        for (ModularBuildingDesc &b : scene_.modularBuildings) byPlace[{b.loc.line, b.loc.column}] = &b.objectId;
         for (SlgDesc &s : scene_.slg) byPlace[{s.loc.line, s.loc.column}] = &s.objectId;
         if (scene_.landscape)
             byPlace[{scene_.landscape->loc.line, scene_.landscape->loc.column}] = &scene_.landscape->objectId;
@@ -789,6 +809,7 @@ class SceneFileReader {
             for (BuildingDesc &b : group.buildings) all.emplace_back(&b.buildingId, &b.loc);
             for (FacadeDesc &f : group.facades) all.emplace_back(&f.buildingId, &f.loc);
         }
+        for (ModularBuildingDesc &b : scene_.modularBuildings) all.emplace_back(&b.buildingId, &b.loc);
         std::sort(all.begin(), all.end(), [](const auto &a, const auto &b) {
             return std::pair(a.second->line, a.second->column) < std::pair(b.second->line, b.second->column);
         });

@@ -473,4 +473,21 @@ Mesh extrudePieces(const std::vector<FacadePiece> &pieces, const WallFrame3d &fr
     return mesh;
 }
 
+Mesh revealMesh(const std::vector<Vec2d> &hole, const WallFrame3d &frame, double depth, MaterialId material) {
+    FacadePiece back{hole, -depth, -depth, PieceKind::Infill};
+    PieceMaterials materials;
+    materials.wall = material;
+    Mesh mesh = extrudePieces({back}, frame, materials);
+    Vec3f outward = cross(frame.along, frame.up);
+    // Each side seen from inside the opening: the reverse of extrudePieces's outward winding.
+    for (size_t i = 0; i < hole.size(); ++i) {
+        Vec2d a = hole[i], b = hole[(i + 1) % hole.size()];
+        Vec3f a0 = pointOf(frame, outward, a, 0), b0 = pointOf(frame, outward, b, 0);
+        Vec3f a1 = pointOf(frame, outward, a, -depth), b1 = pointOf(frame, outward, b, -depth);
+        appendTriangle(mesh, a0, b0, b1, material);
+        appendTriangle(mesh, a0, b1, a1, material);
+    }
+    return mesh;
+}
+
 }  // namespace veduta

@@ -110,4 +110,13 @@ struct PieceMaterials {
 // counter-clockwise polygon with finite depths, or a frame that is not finite.
 Mesh extrudePieces(const std::vector<FacadePiece> &pieces, const WallFrame3d &frame, const PieceMaterials &materials);
 
+// How deep the reveal runs behind the wall: a room's worth of dark, so that a pane shows a dim
+// inside and not the sky through the far side of the house (the walls are sheets).
+inline constexpr double kRevealDepth = 0.6;
+
+// The opening's reveal: the hole's sides run `depth` metres back into the wall, facing into the
+// opening, and a back face closes them; all in `material`. Throws std::invalid_argument as
+// extrudePieces does for a hole that is not a finite simple counter-clockwise polygon.
+Mesh revealMesh(const std::vector<Vec2d> &hole, const WallFrame3d &frame, double depth, MaterialId material);
+
 }  // namespace veduta

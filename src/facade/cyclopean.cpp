@@ -8,7 +8,9 @@
 
 #include "core/hash.h"
 #include "core/random_streams.h"
+#include "facade/brick_bond.h"
 #include "facade/convex_pieces.h"
+#include "facade/description_text.h"
 
 namespace veduta {
 
@@ -268,6 +270,79 @@ Masonry cyclopeanMasonry(const WallFace &wall, const CyclopeanMasonry &descripti
         }
     }
     return masonry;
+}
+
+namespace {
+
+// The item as a length in metres: one number in [0, kMasonryLengthLimit].
+double readLength(const DescriptionItem &item, std::string_view what) {
+    item.expectFieldCount(1, 1, what);
+    double value = item.number(0, what);
+    if (!(value >= 0 && value <= kMasonryLengthLimit))
+        throw InputError(item.fields[0].loc,
+                         fmt::format("{} {} is outside [0, {}] m", what, item.fields[0].text, kMasonryLengthLimit));
+    return value;
+}
+
+// The item as a whole number in [least, most].
+int readCount(const DescriptionItem &item, size_t index, std::string_view what, int64_t least, int64_t most) {
+    double value = item.number(index, what);
+    if (!(value >= double(least) && value <= double(most)) || std::floor(value) != value)
+        throw InputError(
+            item.fields[index].loc,
+            fmt::format("{} {} is not a whole number from {} to {}", what, item.fields[index].text, least, most));
+    return int(value);
+}
+
+Vec3f readLinearColour(const DescriptionItem &item, std::string_view what) {
+    Vec3f colour = readColour(item, what);
+    return ColourRange{colour, colour}.at(0);
+}
+
+// `spacing, metres` or `stones, count` into the description.
+void readStoneCount(const DescriptionItem &item, CyclopeanMasonry &d) {
+    item.expectFieldCount(2, 2, "the stones (spacing, metres; or stones, count)");
+    const std::string &kind = item.word(0, "'spacing' or 'stones'");
+    if (kind == "stones") {
+        d.stones = readCount(item, 1, "the stone count", 1, kMaxCyclopeanStones);
+    } else if (kind == "spacing") {
+        d.spacing = item.number(1, "the spacing");
+        if (!(d.spacing > 0 && d.spacing <= kMasonryLengthLimit))
+            throw InputError(
+                item.fields[1].loc,
+                fmt::format("the spacing {} is outside (0, {}] m", item.fields[1].text, kMasonryLengthLimit));
+    } else {
+        throw InputError(item.fields[0].loc, fmt::format("expected 'spacing' or 'stones', found '{}'", kind));
+    }
+}
+
+}  // namespace
+
+CyclopeanMasonry parseCyclopeanMasonry(std::string_view text, const std::string &file) {
+    std::vector<DescriptionBlock> blocks = readDescriptionBlocks(text, file);
+    if (blocks.empty()) throw InputError({file, 1, 1}, "the description has no block named 'CyclopeanMasonry'");
+    for (const DescriptionBlock &block : blocks) {
+        if (block.name != "CyclopeanMasonry" || &block != &blocks.front())
+            throw InputError(block.loc,
+                             fmt::format("expected one block, named 'CyclopeanMasonry', found '{}'", block.name));
+    }
+    const DescriptionBlock &block = blocks.front();
+    if (block.items.size() != 7)
+        throw InputError(block.loc,
+                         fmt::format("CyclopeanMasonry takes 7 items (spacing or stones; Lloyd steps; start "
+                                     "colour; end colour; joint; mortar colour; depth), found {}",
+                                     block.items.size()));
+    CyclopeanMasonry d;
+    d.loc = block.loc;
+    readStoneCount(block.items[0], d);
+    block.items[1].expectFieldCount(1, 1, "the Lloyd steps");
+    d.lloyd = readCount(block.items[1], 0, "the Lloyd steps", 0, kMaxLloydSteps);
+    d.startColour = readLinearColour(block.items[2], "the stones' start colour");
+    d.endColour = readLinearColour(block.items[3], "the stones' end colour");
+    d.joint = readLength(block.items[4], "the joint");
+    d.mortarColour = readLinearColour(block.items[5], "the mortar colour");
+    d.depth = readLength(block.items[6], "the depth");
+    return d;
 }
 
 }  // namespace veduta

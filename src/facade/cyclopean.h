@@ -32,9 +32,21 @@
 // * A clipped cell that is still concave or holds a hole (possible only where a free seed wanders
 //   close to a corner, or an opening is smaller than a stone) is split into convex pieces, as the
 //   ashlar stones are (Fig. 5.11, facade/convex_pieces.h).
+//
+// The description text, one block in the syntax of the other masonry languages (description_text.h),
+// its items in the order of AshlarMasonry's (Def 5.8) after Def A.16's attributes:
+//
+//   CyclopeanMasonry { spacing, 0.8; 30; 120,110,100; 160,150,135; 0.03; 150,150,150; 0.02; }
+//
+// `spacing, metres` (Abstand) or `stones, count` (Steine); Lloyd steps; the stones' start and end
+// colours; the joint (metres); the mortar colour; the stones' depth out of the mortar (metres).
+// Unlike bricks and ashlar the sizes are metres, not units: a cyclopean wall has no stone size to
+// scale. Colours are 8-bit display (sRGB) values 0..255, decoded to linear as brick colours are.
 #pragma once
 
 #include <cstdint>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/error.h"
@@ -70,6 +82,12 @@ struct CyclopeanStoneCount {
     int64_t packed = 0;        // n = ⌈n_v / 2⌉·n1 + ⌊n_v / 2⌋·n2
     int64_t stones = 0;        // n less 20 %, rounded
 };
+// Reads the text above, the text's only block. Throws InputError "file:line:col: …" for a syntax
+// error, another block, a missing item, a spacing that is not positive, a count or Lloyd steps
+// that are not whole or beyond kMaxCyclopeanStones / kMaxLloydSteps, a length beyond
+// kMasonryLengthLimit or a colour outside 0..255.
+CyclopeanMasonry parseCyclopeanMasonry(std::string_view text, const std::string &file);
+
 // Needs width / radius and height / radius below 10^15 (whole numbers in double).
 CyclopeanStoneCount cyclopeanStoneCount(double width, double height, double radius);
 

@@ -131,8 +131,15 @@ std::vector<double> wallAndInterWallWidths(double length, const WallSubdivision 
 
 StoreyFacade subdivideStorey(const std::vector<std::vector<Vec2d>> &features, bool closed,
                              const WallSubdivision &subdivision) {
-    checkSubdivision(subdivision);
+    return subdivideStorey(features, closed, std::vector<WallSubdivision>(features.size(), subdivision));
+}
+
+StoreyFacade subdivideStorey(const std::vector<std::vector<Vec2d>> &features, bool closed,
+                             const std::vector<WallSubdivision> &subdivisions) {
+    for (const WallSubdivision &subdivision : subdivisions) checkSubdivision(subdivision);
     if (features.empty()) throw std::invalid_argument("a storey outline needs at least one feature");
+    if (subdivisions.size() != features.size())
+        throw std::invalid_argument("a storey outline needs one subdivision per feature");
     StoreyFacade facade;
     facade.closed = closed;
     facade.baseWalls = baseWallsOf(features, closed);
@@ -146,6 +153,7 @@ StoreyFacade subdivideStorey(const std::vector<std::vector<Vec2d>> &features, bo
     }
     for (size_t w = 0; w < wallCount; ++w) {
         const BaseWall &wall = facade.baseWalls[w];
+        const WallSubdivision &subdivision = subdivisions[wall.feature];
         double face = cornerFaceWidth(wall, subdivision);
         double from = 0, to = wall.length();
         if (cornerAtStart[w] && face > 0) {

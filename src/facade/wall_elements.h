@@ -74,6 +74,10 @@ struct StoreyFacade {
 // than 1 cm, or more than 10000 walls asked of one base wall.
 StoreyFacade subdivideStorey(const std::vector<std::vector<Vec2d>> &features, bool closed,
                              const WallSubdivision &subdivision);
+// The same with a subdivision per feature (each module's style has its own): a corner face takes
+// the width of the wall it lies on.
+StoreyFacade subdivideStorey(const std::vector<std::vector<Vec2d>> &features, bool closed,
+                             const std::vector<WallSubdivision> &subdivisions);
 
 // The walls and ZWE of one base wall of free length `length` (Def 5.3), as widths in order:
 // wall, ZWE, wall, …, wall. Throws std::invalid_argument as subdivideStorey does, and for a

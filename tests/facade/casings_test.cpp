@@ -352,5 +352,32 @@ TEST(Casings, ExtrudingRefusesPiecesThatAreNotFiniteSimplePolygons) {
     EXPECT_THROW(extrudePieces({fine}, {{0, 0, 0}, {std::nanf(""), 0, 0}, {0, 0, 1}}, {}), std::invalid_argument);
 }
 
+TEST(Casings, TheRevealFacesIntoTheOpeningAndItsBackFacesOut) {
+    std::vector<Vec2d> hole{{1, 1}, {2, 1}, {2, 3}, {1, 3}};
+    // A wall along y, so that its outside is -x: nothing here may assume the wall faces y.
+    WallFrame3d frame{{5, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    Vec3f outward = cross(frame.along, frame.up);
+    Vec3f centre = frame.origin + frame.along * 1.5f + frame.up * 2.0f;
+    Mesh mesh = revealMesh(hole, frame, 0.6, 3);
+    ASSERT_EQ(mesh.triangleCount(), 2 + 2 * hole.size());
+    size_t back = 0;
+    for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+        Vec3f a = mesh.positions[mesh.indices[3 * t]], b = mesh.positions[mesh.indices[3 * t + 1]],
+              c = mesh.positions[mesh.indices[3 * t + 2]];
+        Vec3f n = normalize(cross(b - a, c - a));
+        EXPECT_EQ(mesh.triangleMaterials[t], 3u);
+        if (std::abs(dot(n, outward) - 1) < 1e-6f) {
+            for (Vec3f p : {a, b, c}) EXPECT_NEAR(dot(p - frame.origin, outward), -0.6f, 1e-6f);
+            ++back;
+            continue;
+        }
+        Vec3f middle = (a + b + c) * (1.0f / 3);
+        Vec3f toCentre = centre - middle;
+        toCentre = toCentre - outward * dot(toCentre, outward);
+        EXPECT_GT(dot(n, toCentre), 0) << "side triangle " << t << " faces away from the opening";
+    }
+    EXPECT_EQ(back, 2u);
+}
+
 }  // namespace
 }  // namespace veduta

@@ -302,5 +302,61 @@ TEST(CyclopeanMasonry, RefusesUnusableDescriptionsAtTheirPlace) {
     EXPECT_EQ(errorOf(colour), "wall.txt:4:2: colours must lie in [0, 1]");
 }
 
+std::string parseErrorOf(const std::string &text) {
+    try {
+        parseCyclopeanMasonry(text, "c.txt");
+    } catch (const InputError &error) {
+        return error.what();
+    }
+    return "no error";
+}
+
+TEST(CyclopeanMasonryText, ReadsSpacingOrStonesColoursJointAndDepth) {
+    CyclopeanMasonry d = parseCyclopeanMasonry(
+        "# a field-stone wall\nCyclopeanMasonry { spacing, 0.8; 30; 0,0,0; 255,255,255; 0.03; 188,188,188; 0.02; }",
+        "c.txt");
+    EXPECT_EQ(d.spacing, 0.8);
+    EXPECT_EQ(d.stones, 0);
+    EXPECT_EQ(d.lloyd, 30);
+    EXPECT_EQ(d.startColour, (Vec3f{0, 0, 0}));
+    EXPECT_EQ(d.endColour, (Vec3f{1, 1, 1}));
+    // 8-bit sRGB 188 is linear ((188/255 + 0.055) / 1.055)^2.4 = 0.5029.
+    EXPECT_NEAR(d.mortarColour.x, 0.5029, 1e-4);
+    EXPECT_EQ(d.joint, 0.03);
+    EXPECT_EQ(d.depth, 0.02);
+    EXPECT_EQ(d.loc.toString(), "c.txt:2:1");
+    CyclopeanMasonry counted =
+        parseCyclopeanMasonry("CyclopeanMasonry { stones, 120; 0; 1,2,3; 4,5,6; 0; 7,8,9; 0; }", "c.txt");
+    EXPECT_EQ(counted.stones, 120);
+    EXPECT_EQ(counted.spacing, 0);
+    EXPECT_EQ(counted.lloyd, 0);
+    // What it reads, the layout takes.
+    EXPECT_GT(cyclopeanMasonry(wallWithDoorAndWindow(), d, 1, 2).stones.size(), 10u);
+}
+
+TEST(CyclopeanMasonryText, RefusesBadTextsAtTheirPlace) {
+    const std::string tail = "; 30; 0,0,0; 9,9,9; 0.03; 9,9,9; 0.02; }";
+    EXPECT_EQ(parseErrorOf("CyclopeanMasonry { stones, 20001" + tail),
+              "c.txt:1:28: the stone count 20001 is not a whole number from 1 to 20000");
+    EXPECT_EQ(parseErrorOf("CyclopeanMasonry { stones, 2.5" + tail),
+              "c.txt:1:28: the stone count 2.5 is not a whole number from 1 to 20000");
+    EXPECT_EQ(parseErrorOf("CyclopeanMasonry { spacing, 0" + tail),
+              "c.txt:1:29: the spacing 0 is outside (0, 10000] m");
+    EXPECT_EQ(parseErrorOf("CyclopeanMasonry { Steine, 10" + tail),
+              "c.txt:1:20: expected 'spacing' or 'stones', found 'Steine'");
+    EXPECT_EQ(parseErrorOf("CyclopeanMasonry { stones, 10; 1001; 0,0,0; 9,9,9; 0.03; 9,9,9; 0.02; }"),
+              "c.txt:1:32: the Lloyd steps 1001 is not a whole number from 0 to 1000");
+    EXPECT_EQ(parseErrorOf("CyclopeanMasonry { stones, 10; 1; 0,0,0; 9,9,9; -0.03; 9,9,9; 0.02; }"),
+              "c.txt:1:49: the joint -0.03 is outside [0, 10000] m");
+    EXPECT_EQ(parseErrorOf("CyclopeanMasonry { stones, 10; 1; 0,0,256; 9,9,9; 0.03; 9,9,9; 0.02; }"),
+              "c.txt:1:39: the stones' start colour: 256 is not a whole number from 0 to 255");
+    EXPECT_EQ(parseErrorOf("CyclopeanMasonry { stones, 10; 1; 0,0,0; 9,9,9; 0.03; 9,9,9; }"),
+              "c.txt:1:1: CyclopeanMasonry takes 7 items (spacing or stones; Lloyd steps; start colour; end colour; "
+              "joint; mortar colour; depth), found 6");
+    EXPECT_EQ(parseErrorOf("Zyklopen { }"),
+              "c.txt:1:1: expected one block, named 'CyclopeanMasonry', found 'Zyklopen'");
+    EXPECT_EQ(parseErrorOf(""), "c.txt:1:1: the description has no block named 'CyclopeanMasonry'");
+}
+
 }  // namespace
 }  // namespace veduta

@@ -1,0 +1,143 @@
+#include "facade/building_structure.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <numeric>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "core/hash.h"
+
+namespace veduta {
+
+double ModuleStructure::height() const { return std::accumulate(storeyHeights.begin(), storeyHeights.end(), 0.0); }
+
+int BuildingStructure::moduleIndex(const std::string &name, const FileLoc &loc) const {
+    for (size_t m = 0; m < modules.size(); ++m)
+        if (modules[m].name == name) return int(m);
+    throw InputError(loc, fmt::format("no module is called '{}'", name));
+}
+
+size_t BuildingStructure::storeyCount() const {
+    size_t most = 0;
+    for (const ModuleStructure &m : modules) most = std::max(most, m.storeyHeights.size());
+    return most;
+}
+
+namespace {
+
+void checkModule(const ModuleStructure &m) {
+    const FileLoc &loc = m.module.loc;
+    if (m.storeyHeights.empty()) throw InputError(loc, fmt::format("module '{}' has no storeys", m.name));
+    if (m.storeyHeights.size() > kStructureStoreyLimit)
+        throw InputError(loc,
+                         fmt::format("module '{}' has {} storeys; at most {} are allowed", m.name,
+                                     m.storeyHeights.size(), kStructureStoreyLimit));
+    for (double h : m.storeyHeights)
+        if (!(h >= 0.5 && h <= kStoreyHeightLimit))
+            throw InputError(loc,
+                             fmt::format("module '{}': a storey of {} m; storeys are 0.5 to {} m high", m.name, h,
+                                         kStoreyHeightLimit));
+    int edges = int(m.module.outline.size());
+    std::vector<const EdgeSubdivision *> byEdge;
+    for (const EdgeSubdivision &s : m.subdivisions) {
+        if (s.edge < 0 || s.edge >= edges)
+            throw InputError(s.loc, fmt::format("module '{}' has no edge {} (it has {})", m.name, s.edge, edges));
+        if (!(s.from >= 0 && s.from < s.to && s.to <= 1))
+            throw InputError(
+                s.loc, fmt::format("the part [{}, {}] of an edge must satisfy 0 <= from < to <= 1", s.from, s.to));
+        for (const EdgeSubdivision *t : byEdge)
+            if (t->edge == s.edge && t->from < s.to && s.from < t->to)
+                throw InputError(s.loc,
+                                 fmt::format("the part [{}, {}] of edge {} overlaps [{}, {}] at {}", s.from, s.to,
+                                             s.edge, t->from, t->to, t->loc.toString()));
+        byEdge.push_back(&s);
+    }
+}
+
+}  // namespace
+
+void validateStructure(const BuildingStructure &structure) {
+    if (structure.modules.empty()) throw InputError({}, "the structure has no modules");
+    if (structure.modules.size() > kStructureModuleLimit)
+        throw InputError(structure.modules[kStructureModuleLimit].module.loc,
+                         fmt::format("more than {} modules", kStructureModuleLimit));
+    std::set<std::string> names;
+    for (const ModuleStructure &m : structure.modules) {
+        if (!names.insert(m.name).second)
+            throw InputError(m.module.loc, fmt::format("a second module called '{}'", m.name));
+        checkModule(m);
+    }
+    for (const ModuleDock &d : structure.docks) {
+        int docked = structure.moduleIndex(d.docked, d.loc);
+        int dominant = structure.moduleIndex(d.dominant, d.loc);
+        if (docked == dominant) throw InputError(d.loc, fmt::format("module '{}' is docked onto itself", d.docked));
+    }
+}
+
+namespace {
+
+// Feeds numbers and strings into one 64-bit state, in order.
+class StructureHasher {
+  public:
+    void add(uint64_t v) { h_ = mix64(h_ ^ mix64(v + 0x9e3779b97f4a7c15ull)); }
+    void add(int v) { add(uint64_t(int64_t(v))); }
+    // -0 and 0 are one number.
+    void add(double v) { add(std::bit_cast<uint64_t>(v == 0 ? 0.0 : v)); }
+    void add(const std::string &s) {
+        add(s.size());
+        add(uint64_t(hashString(s)));
+    }
+    void add(Vec2d p) {
+        add(p.x);
+        add(p.y);
+    }
+    uint64_t value() const { return h_; }
+
+  private:
+    uint64_t h_ = 0x243f6a8885a308d3ull;
+};
+
+void addRoof(StructureHasher &h, const RoofStructure &r) {
+    h.add(int(r.kind));
+    const GeneralRoofParameters &g = r.general;
+    for (double v : {double(g.edgeI), double(g.edgeJ), g.c, g.d, g.a, g.b, g.height, r.parapet.height, r.parapet.width})
+        h.add(v);
+}
+
+}  // namespace
+
+uint64_t structureHash(const BuildingStructure &structure) {
+    StructureHasher h;
+    h.add(structure.modules.size());
+    for (const ModuleStructure &m : structure.modules) {
+        h.add(m.name);
+        h.add(m.module.type);
+        h.add(m.module.outline.size());
+        for (Vec2d p : m.module.outline) h.add(p);
+        h.add(m.storeyHeights.size());
+        for (double s : m.storeyHeights) h.add(s);
+        addRoof(h, m.roof);
+        h.add(m.subdivisions.size());
+        for (const EdgeSubdivision &s : m.subdivisions) {
+            h.add(s.edge);
+            h.add(s.from);
+            h.add(s.to);
+            h.add(s.slot);
+        }
+    }
+    h.add(structure.docks.size());
+    for (const ModuleDock &d : structure.docks) {
+        h.add(d.docked);
+        h.add(d.dockedEdge);
+        h.add(d.dominant);
+        h.add(d.edge);
+        h.add(d.a);
+        h.add(d.b);
+    }
+    return h.value();
+}
+
+}  // namespace veduta

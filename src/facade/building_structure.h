@@ -1,0 +1,86 @@
+// The structure of a Finkenzeller building (digest-001 §3, "Structure concepts"; App. A,
+// L1737–1771): floor-plan modules docked by KK connections, each with its storeys (Grundsteine),
+// its roof (Dach) and the subdivisions of its edges (PolygonKantenUnterteilung) into window slots.
+// The structure says where things are; what they look like is the style's (building_style.h),
+// bound to it by names and slot numbers only, so that one structure renders in several styles and
+// its hash stays the same across them (§8 row 18).
+//
+// Choices where the thesis is open:
+// * Storeys belong to modules, counted from the ground: storey s of a building is every module
+//   with more than s storeys. The thesis's inter_Verbindung (a module docked onto the storey
+//   below) is this with each module's own storey heights.
+// * A window slot is an integer. The thesis's example `{([0,0.5],2),([0.5,1.0],4)}` names window
+//   styles by number in the structure; the style says what each number looks like. Slot 0 is
+//   every edge that no subdivision names.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "facade/floor_plan.h"
+#include "facade/general_roof.h"
+
+namespace veduta {
+
+// Dach: the general roof of a module (Table 4.3), or a flat roof with a parapet.
+struct RoofStructure {
+    enum class Kind { General, Flat };
+    Kind kind = Kind::General;
+    GeneralRoofParameters general;
+    ParapetParameters parapet;
+    FileLoc loc;
+};
+
+// PolygonKantenUnterteilung: the part [from, to] of a module's edge (in the edge's parameter)
+// shows window slot `slot`.
+struct EdgeSubdivision {
+    int edge = 0;
+    double from = 0, to = 1;
+    int slot = 0;
+    FileLoc loc;
+};
+
+struct ModuleStructure {
+    std::string name;  // what styles and docks call it
+    FloorPlanModule module;
+    std::vector<double> storeyHeights;  // Grundsteine, from the ground up, metres
+    RoofStructure roof;
+    std::vector<EdgeSubdivision> subdivisions;
+
+    double height() const;  // the eaves: every storey's height summed
+};
+
+// KK docking by module names: module `docked`'s edge `dockedEdge` lies on [a, b] of edge `edge`
+// of module `dominant` (Def 4.3; floor_plan.h says how the docked edge is turned).
+struct ModuleDock {
+    std::string docked;
+    int dockedEdge = 0;
+    std::string dominant;
+    int edge = 0;
+    double a = 0, b = 1;
+    FileLoc loc;
+};
+
+inline constexpr size_t kStructureModuleLimit = 1000;
+inline constexpr size_t kStructureStoreyLimit = 200;
+inline constexpr double kStoreyHeightLimit = 100;  // metres; the least is 0.5 m
+
+struct BuildingStructure {
+    std::vector<ModuleStructure> modules;
+    std::vector<ModuleDock> docks;
+
+    // The module called `name`; an InputError at `loc` when there is none.
+    int moduleIndex(const std::string &name, const FileLoc &loc) const;
+    size_t storeyCount() const;  // the most storeys of any module
+};
+
+// Throws InputError at the offending place for names used twice, docks naming unknown modules,
+// storey counts and heights out of bounds, subdivisions outside [0, 1] or overlapping on one edge.
+void validateStructure(const BuildingStructure &structure);
+
+// A hash of everything the structure says, and nothing else: not the places, not any style.
+uint64_t structureHash(const BuildingStructure &structure);
+
+}  // namespace veduta
