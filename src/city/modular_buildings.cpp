@@ -33,6 +33,19 @@ BuildingStyle readStyle(const std::filesystem::path &file) {
     });
 }
 
+BuildingStructure readStructure(const ModularBuildingDesc &desc) {
+    BuildingStructure structure = parseBuildingStructure(readInputFile(desc.structure), desc.structure.string());
+    if (desc.footprint.empty()) return structure;
+    if (structure.modules.size() != 1)
+        throw InputError(desc.footprintLoc,
+                         fmt::format("with a footprint, the structure's one module is the "
+                                     "prototype of its pieces; {} has {} modules",
+                                     desc.structure.string(), structure.modules.size()));
+    std::vector<Vec2d> footprint;
+    for (Vec2f p : desc.footprint) footprint.push_back({p.x, p.y});
+    return structureOnFootprint(structure.modules[0], footprint, desc.footprintLoc);
+}
+
 // The texel that shows the building's nearest point at about one texel a pixel.
 double masonryTexel(const Mesh &mesh, const Transform &toWorld, const Camera &camera) {
     Vec3f low(INFINITY), high(-INFINITY);
@@ -51,10 +64,15 @@ double masonryTexel(const Mesh &mesh, const Transform &toWorld, const Camera &ca
     return std::clamp(1 / std::max(pixelsPerMetre, 1e-6), kFinestMasonryTexel, kCoarsestAtlasTexel);
 }
 
+// FNV-1a over the pixels' bits, a word of two samples at a time: the name of a baked file.
 uint64_t imageHash(const Image &image) {
     uint64_t h = mix64(uint64_t(image.width) << 32 | uint64_t(image.height)) ^ uint64_t(image.channels);
-    for (float v : image.pixels) h = mix64(h ^ std::bit_cast<uint32_t>(v));
-    return h;
+    const std::vector<float> &p = image.pixels;
+    for (size_t i = 0; i + 1 < p.size(); i += 2)
+        h = (h ^ (uint64_t(std::bit_cast<uint32_t>(p[i])) << 32 | std::bit_cast<uint32_t>(p[i + 1]))) *
+            0x100000001b3ull;
+    if (p.size() % 2) h = (h ^ std::bit_cast<uint32_t>(p.back())) * 0x100000001b3ull;
+    return mix64(h);
 }
 
 // Writes the image under the cache once: named by its content, so that a later run with the same
@@ -110,6 +128,14 @@ void bakeMasonry(FacadeBuilding &building, double texel, RenderSceneBuilder &bui
     }
 }
 
+void addOpenings(FacadeBuilding &building, const ModularBuildingDesc &desc, RenderSceneBuilder &builder) {
+    for (OpeningSet &set : building.openingSets) {
+        PrototypeId prototype = builder.addPrototype(std::move(set.model));
+        for (const Transform &t : set.transforms)
+            builder.addInstance({desc.transform * t, prototype, kNoMaterial, desc.objectId, desc.buildingId, 0});
+    }
+}
+
 void addConsoles(const FacadeBuilding &building, const ModularBuildingDesc &desc, RenderSceneBuilder &builder) {
     std::map<std::string, PrototypeId> prototypes;
     for (const ConsoleSet &set : building.consoles) {
@@ -161,7 +187,7 @@ BuildingRecord recordOf(const BuildingStructure &structure, const Mesh &mesh, co
 void generateModularBuilding(const ModularBuildingDesc &desc, uint32_t seed, const Camera &camera,
                              RenderSceneBuilder &builder, const AddTexture &addTexture,
                              std::vector<std::string> &warnings) {
-    BuildingStructure structure = parseBuildingStructure(readInputFile(desc.structure), desc.structure.string());
+    BuildingStructure structure = readStructure(desc);
     BuildingStyle style = readStyle(desc.style);
     checkMaterials(style, builder);
     MaterialByName material = [&](const std::string &name, const FileLoc &) {
@@ -170,6 +196,7 @@ void generateModularBuilding(const ModularBuildingDesc &desc, uint32_t seed, con
     FacadeBuilding building = buildFacadeBuilding(structure, style, material, seed, desc.buildingId);
     for (const std::string &note : building.notes) warnings.push_back(desc.loc.toString() + ": " + note);
     bakeMasonry(building, masonryTexel(building.mesh, desc.transform, camera), builder, addTexture, desc.buildingId);
+    addOpenings(building, desc, builder);
     addConsoles(building, desc, builder);
     builder.recordBuilding(recordOf(structure, building.mesh, desc.transform, desc.buildingId));
     builder.addMesh(building.mesh, desc.transform, desc.objectId, desc.buildingId);

@@ -17,8 +17,10 @@
 namespace veduta {
 
 // The most texels one building's masonry atlas may have; finer asks are coarsened
-// (facade/masonry_atlas.h), so that a building costs at most 32 bytes a texel while it is baked.
-inline constexpr size_t kModularBuildingTexels = size_t(1) << 22;
+// (facade/masonry_atlas.h), so that a building costs at most 32 bytes a texel while it is baked
+// (64 MB). Past a million texels the texture registry reads an atlas tile by tile as the renderer
+// asks, rather than whole: a building close to the camera then costs only what it shows.
+inline constexpr size_t kModularBuildingTexels = size_t(1) << 21;
 // The finest texel asked for, metres: finer than a brick's chamfer shows nothing more.
 inline constexpr double kFinestMasonryTexel = 0.002;
 

@@ -217,6 +217,10 @@ struct ModularBuildingDesc {
     FileLoc loc;
     std::filesystem::path structure, style;  // resolved against the scene's folder
     FileLoc structureLoc, styleLoc;
+    // footprint="x y …": the structure's one module is a prototype, the footprint is split into
+    // modules that take its storeys (facade/building_structure.h, structureOnFootprint).
+    std::vector<Vec2f> footprint;
+    FileLoc footprintLoc;
     Transform transform;
     std::optional<uint32_t> seed;
     uint32_t objectId = 0;

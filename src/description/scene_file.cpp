@@ -514,6 +514,14 @@ class SceneFileReader {
         b.structureLoc = e.attributeLoc("structure");
         b.style = pathAttribute(e, "style");
         b.styleLoc = e.attributeLoc("style");
+        if (e.has("footprint")) {
+            std::vector<float> xy = e.numbers("footprint");
+            b.footprintLoc = e.attributeLoc("footprint");
+            if (xy.size() % 2 != 0 || xy.size() < 6)
+                e.failAt("footprint",
+                         fmt::format("a footprint is at least three x y pairs; {} numbers given", xy.size()));
+            for (size_t i = 0; i < xy.size(); i += 2) b.footprint.push_back({xy[i], xy[i + 1]});
+        }
         b.transform = readTransform(e);
         b.seed = seedOverride(e);
         b.buildingId = e.unsignedInteger("building", 0);

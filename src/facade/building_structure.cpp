@@ -9,6 +9,8 @@
 #include <fmt/format.h>
 
 #include "core/hash.h"
+#include "core/polygon_area.h"
+#include "facade/module_partition.h"
 
 namespace veduta {
 
@@ -138,6 +140,65 @@ uint64_t structureHash(const BuildingStructure &structure) {
         h.add(d.b);
     }
     return h.value();
+}
+
+namespace {
+
+// Where the footprint's corner `corner` went in the module's outline; -1 when it did not (a
+// collinear corner removed).
+int cornerIndex(const std::vector<Vec2d> &outline, Vec2d corner) {
+    for (size_t i = 0; i < outline.size(); ++i)
+        if (outline[i] == corner) return int(i);
+    return -1;
+}
+
+// The prototype's roof and subdivisions, their edges renumbered from the footprint's to the module's.
+void keepPrototypeEdges(const ModuleStructure &prototype, const std::vector<Vec2d> &footprint, const FileLoc &loc,
+                        ModuleStructure &module) {
+    const std::vector<Vec2d> &outline = module.module.outline;
+    // A clockwise footprint's edge e runs backwards in the module: from corner e + 1.
+    bool clockwise = signedArea(footprint) < 0;
+    auto edge = [&](size_t footprintEdge) {
+        size_t n = footprint.size(), start = clockwise ? (footprintEdge + 1) % n : footprintEdge;
+        int i = footprintEdge < n ? cornerIndex(outline, footprint[start]) : -1;
+        if (i < 0)
+            throw InputError(loc,
+                             fmt::format("edge {} of the prototype's roof or windows is not an edge of the "
+                                         "footprint ({} corners, none collinear)",
+                                         footprintEdge, outline.size()));
+        return i;
+    };
+    module.roof = prototype.roof;
+    if (prototype.roof.kind == RoofStructure::Kind::General) {
+        module.roof.general.edgeI = size_t(edge(prototype.roof.general.edgeI));
+        module.roof.general.edgeJ = size_t(edge(prototype.roof.general.edgeJ));
+    }
+    module.subdivisions = prototype.subdivisions;
+    for (EdgeSubdivision &s : module.subdivisions) s.edge = edge(size_t(s.edge));
+}
+
+}  // namespace
+
+BuildingStructure structureOnFootprint(const ModuleStructure &prototype, const std::vector<Vec2d> &footprint,
+                                       const FileLoc &loc) {
+    FloorPlan plan = partitionFootprint(footprint, prototype.module, loc);
+    BuildingStructure structure;
+    for (size_t m = 0; m < plan.modules().size(); ++m) {
+        ModuleStructure module;
+        module.name = plan.modules().size() == 1 ? prototype.name : fmt::format("{} {}", prototype.name, m + 1);
+        module.module = plan.modules()[m];
+        module.storeyHeights = prototype.storeyHeights;
+        module.roof.kind = RoofStructure::Kind::Flat;
+        module.roof.parapet = prototype.roof.parapet;
+        module.roof.loc = prototype.roof.loc;
+        structure.modules.push_back(std::move(module));
+    }
+    if (structure.modules.size() == 1) keepPrototypeEdges(prototype, footprint, loc, structure.modules[0]);
+    for (const KkConnection &c : plan.kkConnections())
+        structure.docks.push_back({structure.modules[size_t(c.docked)].name, c.dockedEdge,
+                                   structure.modules[size_t(c.dominant)].name, c.edge, c.a, c.b, loc});
+    validateStructure(structure);
+    return structure;
 }
 
 }  // namespace veduta

@@ -80,6 +80,15 @@ struct BuildingStructure {
 // storey counts and heights out of bounds, subdivisions outside [0, 1] or overlapping on one edge.
 void validateStructure(const BuildingStructure &structure);
 
+// The structure of a building on `footprint` (digest-001 §9: city data's outlines into modules):
+// the footprint split into convex modules docked on their shared edges (module_partition.h), each
+// with the storeys of `prototype`. A footprint that is one module keeps the prototype's roof and
+// edge subdivisions, their edges numbered as the footprint's (edge 0 from its first corner, as the
+// footprint is given: the street side in a scene); one split into several gets flat roofs with the
+// prototype's parapet, since a roof edge of the prototype names no edge of a piece.
+BuildingStructure structureOnFootprint(const ModuleStructure &prototype, const std::vector<Vec2d> &footprint,
+                                       const FileLoc &loc);
+
 // A hash of everything the structure says, and nothing else: not the places, not any style.
 uint64_t structureHash(const BuildingStructure &structure);
 

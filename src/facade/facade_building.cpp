@@ -1,6 +1,7 @@
 #include "facade/facade_building.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -314,19 +315,48 @@ class BuildingAssembly {
             ++dropped_[fmt::format("storey {}: under the roof of module '{}'", storey, *roof)];
             return std::nullopt;
         }
-        RefinedOpening refined = refineOpening(coarse, window->refinement, window->dominance, window->kind);
-        OpeningPieces pieces = buildOpeningPieces(refined, window->casing, window->frame);
+        const OpeningModel &model = openingModel(*window, style);
         Vec2d along = face.frame.along;
-        WallFrame3d frame{at(face.frame.origin, 0), Vec3f(float(along.x), float(along.y), 0), Vec3f(0, 0, 1)};
+        Vec2d corner = face.frame.origin + along * coarse.bl.x;
+        result_.openingSets[model.set].transforms.push_back(
+            {{float(along.x), float(-along.y), 0, float(corner.x), float(along.y), float(along.x), 0, float(corner.y),
+              0, 0, 1, float(coarse.bl.y)}});
+        ++result_.openings;
+        std::vector<Vec2d> hole = model.hole;
+        for (Vec2d &p : hole) p = p + coarse.bl;
+        return hole;
+    }
+
+    struct OpeningModel {
+        size_t set = 0;           // in result_.openingSets
+        std::vector<Vec2d> hole;  // from the coarse opening's lower left corner
+    };
+
+    // The opening of `window` in `style`'s materials, built once: every window of a style has
+    // its size, so its pieces differ only by where they stand.
+    const OpeningModel &openingModel(const WindowStyle &window, const ResolvedStyle &style) {
         PieceMaterials materials{material(style, StylePart::Casing),  material(style, StylePart::Cornice),
                                  material(style, StylePart::Wall),    material(style, StylePart::Casing),
                                  material(style, StylePart::Cornice), material(style, StylePart::Frame),
                                  material(style, StylePart::Pane),    material(style, StylePart::Door)};
-        result_.mesh.append(extrudePieces(pieces.pieces, frame, materials), Transform());
-        result_.mesh.append(revealMesh(pieces.hole, frame, kRevealDepth, material(style, StylePart::Interior)),
-                            Transform());
-        ++result_.openings;
-        return std::move(pieces.hole);
+        MaterialId interior = material(style, StylePart::Interior);
+        OpeningKey key{&window,
+                       {materials.casing, materials.cornice, materials.wall, materials.frame, materials.pane,
+                        materials.door, interior}};
+        auto [it, fresh] = openingModels_.try_emplace(key);
+        if (!fresh) return it->second;
+        Vec2d size(window.placement.width, window.placement.height);
+        CoarseOpening coarse{{0, 0}, {size.x, 0}, size, {0, size.y}};
+        RefinedOpening refined = refineOpening(coarse, window.refinement, window.dominance, window.kind);
+        OpeningPieces pieces = buildOpeningPieces(refined, window.casing, window.frame);
+        // The opening's frame: along x, up z, so out of the wall is -y.
+        WallFrame3d frame{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}};
+        OpeningSet set;
+        set.model = extrudePieces(pieces.pieces, frame, materials);
+        set.model.append(revealMesh(pieces.hole, frame, kRevealDepth, interior), Transform());
+        it->second = {result_.openingSets.size(), std::move(pieces.hole)};
+        result_.openingSets.push_back(std::move(set));
+        return it->second;
     }
 
     int slotAt(const PieceFace &face, double x) const {
@@ -500,6 +530,8 @@ class BuildingAssembly {
     std::map<FaceKey, FaceBuild> faces_;
     std::vector<FaceKey> faceOrder_;
     std::map<std::string, size_t> dropped_;
+    using OpeningKey = std::pair<const WindowStyle *, std::array<MaterialId, 7>>;
+    std::map<OpeningKey, OpeningModel> openingModels_;
     size_t elementCount_ = 0;
 };
 

@@ -48,6 +48,15 @@ struct MasonryWall {
     std::vector<uint32_t> triangles;
 };
 
+// An opening's casing, frame, pane and reveal, the same wherever its window style and materials
+// are: one model in the opening's frame (x along the wall from the coarse opening's lower left
+// corner, z up, -y out of the wall), one instance per transform (the thesis's window assemblies
+// as instances, digest §9).
+struct OpeningSet {
+    Mesh model;
+    std::vector<Transform> transforms;
+};
+
 // A console model set along a cornice: one instance per transform (consoles.h's unit box).
 struct ConsoleSet {
     std::string objectFile;  // as the cornice description names it
@@ -57,8 +66,9 @@ struct ConsoleSet {
 };
 
 struct FacadeBuilding {
-    Mesh mesh;  // walls, openings, cornices, roofs; world metres; flat normals
+    Mesh mesh;  // walls, cornices, roofs; world metres; flat normals
     std::vector<MasonryWall> masonry;
+    std::vector<OpeningSet> openingSets;
     std::vector<ConsoleSet> consoles;
     std::vector<std::string> notes;  // what was left out, how often and why
     size_t openings = 0;             // placed

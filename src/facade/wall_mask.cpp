@@ -110,7 +110,15 @@ WallMask::WallMask(const WallFace &wall, double mortar, double cellSize) : exact
     rows_ = std::max(1, int(std::ceil(size.y / cellSize_)));
 
     exact_->region = PolygonSet(toExact(wall.outline));
-    for (const auto &opening : wall.openings) exact_->region.difference(grown(opening, mortar));
+    // One aggregated union of the openings, then one difference: a difference per opening would
+    // sweep the growing region once for each.
+    if (!wall.openings.empty()) {
+        std::vector<PolygonWithHoles> openings;
+        for (const auto &opening : wall.openings) openings.push_back(grown(opening, mortar));
+        PolygonSet cut;
+        cut.join(openings.begin(), openings.end());
+        exact_->region.difference(cut);
+    }
     std::vector<PolygonWithHoles> parts;
     exact_->region.polygons_with_holes(std::back_inserter(parts));
     for (const PolygonWithHoles &part : parts) {

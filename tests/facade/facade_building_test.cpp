@@ -217,5 +217,50 @@ TEST(FacadeBuilding, ABindingToAMissingModuleIsRefused) {
     EXPECT_THROW(build(houseWithWing(), styles, m), InputError);
 }
 
+TEST(StructureOnFootprint, ARectangleKeepsThePrototypesRoofOnTheFootprintsEdges) {
+    ModuleStructure prototype = module("Haus", {{0, 0}, {1, 0}, {1, 1}}, {4, 3.5}, gable(1, 3, 4));
+    prototype.subdivisions.push_back({0, 0.4, 0.6, 2, {}});
+    // Counter-clockwise and clockwise, starting at different corners.
+    for (const std::vector<Vec2d> &footprint : {std::vector<Vec2d>{{0, 0}, {14, 0}, {14, 12}, {0, 12}},
+                                                std::vector<Vec2d>{{14, 0}, {0, 0}, {0, 12}, {14, 12}}}) {
+        BuildingStructure s = structureOnFootprint(prototype, footprint, {});
+        ASSERT_EQ(s.modules.size(), 1u);
+        const ModuleStructure &m = s.modules[0];
+        EXPECT_EQ(m.storeyHeights, prototype.storeyHeights);
+        const std::vector<Vec2d> &o = m.module.outline;
+        auto edgeOf = [&](size_t e) { return std::pair(o[e], o[(e + 1) % o.size()]); };
+        // Footprint edge 1 and 3 are the sides x = 14 and x = 0 in both orders: the ridge runs along x.
+        for (size_t e : {m.roof.general.edgeI, m.roof.general.edgeJ}) {
+            auto [a, b] = edgeOf(e);
+            EXPECT_EQ(a.x, b.x);
+        }
+        auto [a, b] = edgeOf(size_t(m.subdivisions[0].edge));
+        EXPECT_EQ(a.y, 0);
+        EXPECT_EQ(b.y, 0);
+    }
+}
+
+TEST(StructureOnFootprint, AnLIsSplitIntoDockedModulesWithFlatRoofsThatBuild) {
+    ModuleStructure prototype = module("Haus", {{0, 0}, {1, 0}, {1, 1}}, {3, 3}, gable(1, 3, 4));
+    BuildingStructure s = structureOnFootprint(prototype, {{0, 0}, {20, 0}, {20, 8}, {8, 8}, {8, 20}, {0, 20}}, {});
+    ASSERT_EQ(s.modules.size(), 2u);
+    ASSERT_EQ(s.docks.size(), 1u);
+    for (const ModuleStructure &m : s.modules) EXPECT_EQ(m.roof.kind, RoofStructure::Kind::Flat);
+    Materials materials;
+    FacadeBuilding b = build(s, oneStyle(style("a", MasonryStyle::Kind::Plain, 1)), materials);
+    EXPECT_GT(b.openings, 0u);
+}
+
+TEST(StructureOnFootprint, ASlotNoStyleFillsLeavesThePartyWallsBlank) {
+    ModuleStructure prototype = module("Haus", {{0, 0}, {1, 0}, {1, 1}}, {3, 3}, gable(1, 3, 4));
+    prototype.subdivisions = {{1, 0, 1, 9, {}}, {3, 0, 1, 9, {}}};
+    Materials materials;
+    BuildingStyle plain = oneStyle(style("a", MasonryStyle::Kind::Plain, 1));
+    FacadeBuilding row =
+        build(structureOnFootprint(prototype, {{-10, 8}, {6, 8}, {6, 22}, {-10, 22}}, {}), plain, materials);
+    // 16 m front and back: round((14.4 + 0.6) / 3) = 5 walls a storey; the 14 m sides none.
+    EXPECT_EQ(row.openings, size_t(2 * 2 * 5));
+}
+
 }  // namespace
 }  // namespace veduta
