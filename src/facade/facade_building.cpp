@@ -30,16 +30,12 @@ constexpr double kRoofProbe = 0.05;
 
 Vec3f at(Vec2d xy, double z) { return {float(xy.x), float(xy.y), float(z)}; }
 
-// A wall face: one straight plan edge seen from outside, with its masonry style.
+// A wall face: one module edge seen from outside, with its masonry style.
 struct FaceKey {
-    PlanElement element;  // the global module (or PP connection) and edge
+    int module = 0, edge = 0;
     bool reversed = false;
     const MasonryStyle *masonry = nullptr;
-    auto operator<=>(const FaceKey &other) const {
-        return std::tie(element.isPp, element.index, element.edge, reversed, masonry) <=>
-            std::tie(other.element.isPp, other.element.index, other.element.edge, other.reversed, other.masonry);
-    }
-    bool operator==(const FaceKey &) const = default;
+    auto operator<=>(const FaceKey &) const = default;
 };
 
 struct FaceFrame {
@@ -153,9 +149,8 @@ class BuildingAssembly {
     }
 
     const ResolvedStyle &resolved(int module, int storey) {
-        std::string name = module >= 0 ? structure_.modules[size_t(module)].name : std::string();
         auto [it, fresh] = resolved_.try_emplace({module, storey});
-        if (fresh) it->second = resolveStyle(style_, name, storey);
+        if (fresh) it->second = resolveStyle(style_, structure_.modules[size_t(module)].name, storey);
         return it->second;
     }
 
@@ -168,33 +163,25 @@ class BuildingAssembly {
 
     // --- one storey ----------------------------------------------------------------------
 
-    // Where a walk piece lies in global terms: its element and the face frame it is seen in.
+    // Where a walk piece lies: its module's edge and the face frame it is seen in. The structure
+    // has no PP connections (Def 4.2), so every piece runs along a module's edge.
     struct PieceFace {
-        PlanElement element;
+        int module = 0, edge = 0;  // the structure's module
         bool reversed = false;
         FaceFrame frame;
-        int module = -1;  // the module whose wall it is; -1 on a bare PP edge
     };
 
-    PieceFace pieceFace(const StoreyPlan &plan, const WalkPiece &piece, int featureModule) const {
+    PieceFace pieceFace(const StoreyPlan &plan, const WalkPiece &piece) const {
         PieceFace f;
-        f.element = piece.element;
-        Vec2d start, end;
-        if (piece.element.isPp) {
-            start = plan.plan.ppStart(piece.element.index);
-            end = plan.plan.ppEnd(piece.element.index);
-        } else {
-            f.element.index = plan.modules[size_t(piece.element.index)];
-            const std::vector<Vec2d> &o = placed_[size_t(f.element.index)];
-            start = o[size_t(piece.element.edge)];
-            end = o[(size_t(piece.element.edge) + 1) % o.size()];
-        }
+        f.module = plan.modules[size_t(piece.element.index)];
+        f.edge = piece.element.edge;
+        const std::vector<Vec2d> &o = placed_[size_t(f.module)];
+        Vec2d start = o[size_t(f.edge)], end = o[(size_t(f.edge) + 1) % o.size()];
         f.reversed = piece.t1 < piece.t0;
         if (f.reversed) std::swap(start, end);
         f.frame.origin = start;
         f.frame.length = length(end - start);
         f.frame.along = (end - start) * (1 / f.frame.length);
-        f.module = featureModule >= 0 ? plan.modules[size_t(featureModule)] : -1;
         return f;
     }
 
@@ -207,12 +194,11 @@ class BuildingAssembly {
             std::vector<Vec2d> line;
             for (const WalkPiece &piece : f.edges) {
                 line.push_back(piece.from);
-                faces.push_back(pieceFace(plan, piece, f.module));
+                faces.push_back(pieceFace(plan, piece));
             }
             line.push_back(f.edges.back().to);
             polylines.push_back(std::move(line));
-            int module = f.module >= 0 ? plan.modules[size_t(f.module)] : -1;
-            subdivisions.push_back(resolved(module, storey).walls);
+            subdivisions.push_back(resolved(plan.modules[size_t(f.module)], storey).walls);
         }
         StoreyFacade facade = subdivideStorey(polylines, true, subdivisions);
         if (facade.baseWalls.size() != faces.size())
@@ -227,7 +213,7 @@ class BuildingAssembly {
         for (size_t e = 0; e < facade.elements.size(); ++e) {
             const FacadeElement &element = facade.elements[e];
             const PieceFace &face = faces[element.baseWall];
-            int module = face.module >= 0 ? face.module : plan.modules.front();
+            int module = face.module;
             double bottom = storeyBottom(module, storey);
             double height = structure_.modules[size_t(module)].storeyHeights[size_t(storey)];
             const ResolvedStyle &style = resolved(face.module, storey);
@@ -244,7 +230,7 @@ class BuildingAssembly {
     }
 
     FaceBuild &faceFor(const PieceFace &face, const ResolvedStyle &style) {
-        FaceKey key{face.element, face.reversed, style.masonry};
+        FaceKey key{face.module, face.edge, face.reversed, style.masonry};
         auto [it, fresh] = faces_.try_emplace(key);
         if (fresh) {
             it->second.frame = face.frame;
@@ -345,7 +331,7 @@ class BuildingAssembly {
                         materials.door, interior}};
         auto [it, fresh] = openingModels_.try_emplace(key);
         if (!fresh) return it->second;
-        Vec2d size(window.placement.width, window.placement.height);
+        Vec2d size{window.placement.width, window.placement.height};
         CoarseOpening coarse{{0, 0}, {size.x, 0}, size, {0, size.y}};
         RefinedOpening refined = refineOpening(coarse, window.refinement, window.dominance, window.kind);
         OpeningPieces pieces = buildOpeningPieces(refined, window.casing, window.frame);
@@ -360,17 +346,16 @@ class BuildingAssembly {
     }
 
     int slotAt(const PieceFace &face, double x) const {
-        if (face.element.isPp || face.module < 0) return 0;
         double t = x / face.frame.length;
         if (face.reversed) t = 1 - t;
         for (const EdgeSubdivision &s : structure_.modules[size_t(face.module)].subdivisions)
-            if (s.edge == face.element.edge && s.from <= t && t < s.to) return s.slot;
+            if (s.edge == face.edge && s.from <= t && t < s.to) return s.slot;
         return 0;
     }
 
     // Row 19: the module whose roof stands over the opening's sill just outside the wall.
     std::optional<std::string> coveringRoof(const PieceFace &face, const CoarseOpening &opening) const {
-        Vec2d outward(face.frame.along.y, -face.frame.along.x);
+        Vec2d outward{face.frame.along.y, -face.frame.along.x};
         for (size_t m = 0; m < roofs_.size(); ++m) {
             if (int(m) == face.module) continue;
             for (double x : {opening.bl.x, (opening.bl.x + opening.br.x) / 2, opening.br.x}) {
@@ -500,8 +485,8 @@ class BuildingAssembly {
             wall.face.outline = {
                 {build.xMin, build.zMin}, {build.xMax, build.zMin}, {build.xMax, build.zMax}, {build.xMin, build.zMax}};
             wall.face.openings = build.holes;
-            uint32_t wallId = hashValues({buildingId_, uint32_t(key.element.isPp), uint32_t(key.element.index),
-                                          uint32_t(key.element.edge), uint32_t(key.reversed)});
+            uint32_t wallId =
+                hashValues({buildingId_, uint32_t(key.module), uint32_t(key.edge), uint32_t(key.reversed)});
             const MasonryStyle &style = *key.masonry;
             MasonryPlacement placement{style.metresPerUnit, seed_, wallId};
             switch (style.kind) {
