@@ -4,7 +4,6 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,6 +12,7 @@
 #include "description/scene_description.h"
 #include "geodesy/georeference.h"
 #include "scene/render_scene.h"
+#include "scene/textures.h"
 
 namespace veduta {
 
@@ -28,10 +28,6 @@ uint32_t cityGmlBuildingId(const std::string &gmlId);
 // InputError when neither names one, when srsName names a CRS veduta does not know, or when
 // the two disagree.
 int cityGmlEpsg(const CityGmlDesc &desc, const CityGmlModel &model);
-
-// Makes an image file ready for texture lookups (scene/textures.h) and gives its id; throws
-// InputError naming the file when it cannot be read.
-using AddTexture = std::function<TextureId(const std::filesystem::path &image)>;
 
 // Reads the element's file and adds each building (within the element's bbox, when it has
 // one: a warning says how many it keeps) as a world mesh with the element's object

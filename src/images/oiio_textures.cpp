@@ -11,10 +11,12 @@
 
 namespace veduta {
 
-OiioTextures::OiioTextures(std::filesystem::path cacheDirectory, std::shared_ptr<const ColorConfig> config) :
+OiioTextures::OiioTextures(std::filesystem::path cacheDirectory, std::shared_ptr<const ColorConfig> config,
+                           int64_t residentBytes) :
     cacheDirectory_(std::move(cacheDirectory)),
     config_(std::move(config)),
-    system_(OIIO::TextureSystem::create(/*shared=*/false)) {}
+    system_(OIIO::TextureSystem::create(/*shared=*/false)),
+    residentLimit_(residentBytes) {}
 
 OiioTextures::~OiioTextures() { OIIO::TextureSystem::destroy(system_, /*teardown_imagecache=*/true); }
 
@@ -24,10 +26,40 @@ TextureId OiioTextures::add(const std::filesystem::path &file, const std::string
     std::lock_guard lock(addMutex_);
     auto key = std::make_pair(std::filesystem::absolute(file).lexically_normal().string(), space);
     if (auto found = ids_.find(key); found != ids_.end()) return found->second;
-    entries_.push_back(open(cachedTexture(cacheDirectory_, file, space, *config_), file));
-    TextureId id = TextureId(entries_.size() - 1);
+    TextureId id = append(open(cachedTexture(cacheDirectory_, file, space, *config_), file));
     ids_.emplace(key, id);
     return id;
+}
+
+TextureId OiioTextures::add(Image image) {
+    if (image.empty() || image.channels < 1 || image.channels > 4)
+        throw std::invalid_argument(
+            fmt::format("a texture of {} × {} texels in {} channels", image.width, image.height, image.channels));
+    std::string fingerprint = imageFingerprint(image);
+    std::lock_guard lock(addMutex_);
+    if (auto found = imageIds_.find(fingerprint); found != imageIds_.end()) return found->second;
+    int64_t bytes = ResidentTexture::bytesFor(image.width, image.height, image.channels);
+    Entry entry;
+    if (residentBytes_ + bytes <= residentLimit_) {
+        entry.texture = cachedImageTexturePath(cacheDirectory_, fingerprint).filename().string();  // as if streamed
+        entry.channels = image.channels;
+        entry.resident = ResidentTexture::fromImage(std::move(image));
+        residentBytes_ += bytes;
+    } else {
+        std::filesystem::path texture = cachedImageTexture(cacheDirectory_, image, fingerprint);
+        entry = open(texture, texture);
+    }
+    TextureId id = append(std::move(entry));
+    imageIds_.emplace(fingerprint, id);
+    return id;
+}
+
+// Adds the entry with its mean: a footprint far wider than the texture reads the coarsest level.
+TextureId OiioTextures::append(Entry entry) {
+    constexpr float kWholeTexture = 1e6f;
+    filtered(entry, {0.5f, 0.5f}, kWholeTexture, entry.mean.data(), std::min(entry.channels, int(entry.mean.size())));
+    entries_.push_back(std::move(entry));
+    return TextureId(entries_.size() - 1);
 }
 
 OiioTextures::Entry OiioTextures::open(const std::filesystem::path &texture, const std::filesystem::path &file) {
@@ -42,14 +74,11 @@ OiioTextures::Entry OiioTextures::open(const std::filesystem::path &texture, con
     }
     try {
         entry.resident = ResidentTexture::read(texture, kResidentTexels);
-        if (entry.resident && residentBytes_ + entry.resident->bytes() > kResidentBytes) entry.resident.reset();
+        if (entry.resident && residentBytes_ + entry.resident->bytes() > residentLimit_) entry.resident.reset();
         if (entry.resident) residentBytes_ += entry.resident->bytes();
     } catch (const std::runtime_error &e) {
         throw InputError(FileLoc{file.string()}, fmt::format("cannot read its texture: {}", e.what()));
     }
-    // A footprint far wider than the texture: the coarsest level.
-    constexpr float kWholeTexture = 1e6f;
-    filtered(entry, {0.5f, 0.5f}, kWholeTexture, entry.mean.data(), std::min(entry.channels, int(entry.mean.size())));
     return entry;
 }
 

@@ -7,6 +7,7 @@
 
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
+#include <tbb/parallel_for.h>
 
 namespace veduta {
 
@@ -20,6 +21,27 @@ float wrapped(float x) {
 }
 
 int wrap(int i, int size) { return i < 0 ? i + size : (i >= size ? i - size : i); }
+
+int halved(int size) { return std::max(1, size / 2); }
+
+// The weights by which the texels of a row of `from` make each of the `to` texels covering it
+// (to ≤ from): the box filter's, each source texel's share of the target texel's span.
+struct Tap {
+    int source;
+    float weight;
+};
+std::vector<std::vector<Tap>> boxTaps(int from, int to) {
+    std::vector<std::vector<Tap>> taps(static_cast<size_t>(to));
+    double ratio = double(from) / double(to);
+    for (int i = 0; i < to; ++i) {
+        double low = i * ratio, high = (i + 1) * ratio;
+        for (int s = int(std::floor(low)); s < std::min(from, int(std::ceil(high))); ++s) {
+            double covered = std::min(high, double(s + 1)) - std::max(low, double(s));
+            if (covered > 0) taps[size_t(i)].push_back({s, float(covered / ratio)});
+        }
+    }
+    return taps;
+}
 
 }  // namespace
 
@@ -43,6 +65,50 @@ std::optional<ResidentTexture> ResidentTexture::read(const std::filesystem::path
     }
     if (result.levels_.empty()) throw std::runtime_error(fmt::format("{}: no image in it", texture.string()));
     return result;
+}
+
+ResidentTexture ResidentTexture::fromImage(Image image) {
+    if (image.empty() || image.channels < 1 || image.channels > 4)
+        throw std::invalid_argument(
+            fmt::format("a texture of {} × {} texels in {} channels", image.width, image.height, image.channels));
+    ResidentTexture result;
+    const size_t channels = size_t(image.channels);
+    result.channels_ = image.channels;
+    result.levels_.push_back({image.width, image.height, std::move(image.pixels)});
+    while (result.levels_.back().width > 1 || result.levels_.back().height > 1) {
+        const Level &above = result.levels_.back();
+        Level level{halved(above.width), halved(above.height), {}};
+        // Separable: rows first, into a level as wide as the new one and as high as the old.
+        std::vector<std::vector<Tap>> across = boxTaps(above.width, level.width);
+        std::vector<std::vector<Tap>> down = boxTaps(above.height, level.height);
+        // Rows in parallel: each writes only its own, so the sums are those of one thread.
+        std::vector<float> narrow(size_t(level.width) * size_t(above.height) * channels, 0.0f);
+        tbb::parallel_for(size_t(0), size_t(above.height), [&](size_t y) {
+            for (size_t x = 0; x < size_t(level.width); ++x)
+                for (const Tap &tap : across[x])
+                    for (size_t c = 0; c < channels; ++c)
+                        narrow[(y * size_t(level.width) + x) * channels + c] +=
+                            tap.weight * above.texels[(y * size_t(above.width) + size_t(tap.source)) * channels + c];
+        });
+        level.texels.assign(size_t(level.width) * size_t(level.height) * channels, 0.0f);
+        const size_t row = size_t(level.width) * channels;
+        tbb::parallel_for(size_t(0), size_t(level.height), [&](size_t y) {
+            for (const Tap &tap : down[y])
+                for (size_t i = 0; i < row; ++i)
+                    level.texels[y * row + i] += tap.weight * narrow[size_t(tap.source) * row + i];
+        });
+        result.levels_.push_back(std::move(level));
+    }
+    return result;
+}
+
+int64_t ResidentTexture::bytesFor(int width, int height, int channels) {
+    int64_t bytes = 0;
+    for (;;) {
+        bytes += int64_t(width) * height * channels * int64_t(sizeof(float));
+        if (width == 1 && height == 1) return bytes;
+        width = halved(width), height = halved(height);
+    }
 }
 
 int64_t ResidentTexture::bytes() const {

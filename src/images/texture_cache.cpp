@@ -18,12 +18,10 @@ namespace {
 constexpr int kTextureFormatVersion = 1;
 constexpr int kTileSize = 64;
 
-void convertToTexture(const std::filesystem::path &file, const std::string &colorSpace, const ColorConfig &config,
-                      const std::filesystem::path &texture) {
-    // Linearised before mip-mapping, so that the mip levels average light, not encoded values.
-    Image image = readImageFile(file, colorSpace, config);
+// Writes `image` (linear) as a tiled, mip-mapped texture; `source` names it in errors.
+void writeTexture(const Image &image, const std::string &source, const std::filesystem::path &texture) {
     OIIO::ImageBuf input(OIIO::ImageSpec(image.width, image.height, image.channels, OIIO::TypeFloat),
-                         image.pixels.data());
+                         const_cast<float *>(image.pixels.data()));  // only read
     // Float: OpenImageIO's TIFF writer, which .tx files go through, has no half.
     OIIO::ImageSpec settings(0, 0, 0, OIIO::TypeFloat);
     settings.tile_width = settings.tile_height = kTileSize;
@@ -34,7 +32,7 @@ void convertToTexture(const std::filesystem::path &file, const std::string &colo
     writeFileAtomically(texture, [&](const std::filesystem::path &temporary) {
         if (!OIIO::ImageBufAlgo::make_texture(OIIO::ImageBufAlgo::MakeTxTexture, input, temporary.string(), settings)) {
             throw std::runtime_error(
-                fmt::format("{}: cannot make the texture {}: {}", file.string(), texture.string(), OIIO::geterror()));
+                fmt::format("{}: cannot make the texture {}: {}", source, texture.string(), OIIO::geterror()));
         }
     });
 }
@@ -57,7 +55,29 @@ std::filesystem::path cachedTexturePath(const std::filesystem::path &cacheDirect
 std::filesystem::path cachedTexture(const std::filesystem::path &cacheDirectory, const std::filesystem::path &file,
                                     const std::string &colorSpace, const ColorConfig &config) {
     std::filesystem::path texture = cachedTexturePath(cacheDirectory, file, colorSpace);
-    if (!std::filesystem::exists(texture)) convertToTexture(file, colorSpace, config, texture);
+    // Linearised before mip-mapping, so that the mip levels average light, not encoded values.
+    if (!std::filesystem::exists(texture))
+        writeTexture(readImageFile(file, colorSpace, config), file.string(), texture);
+    return texture;
+}
+
+std::string imageFingerprint(const Image &image) {
+    std::string size =
+        fmt::format("{}\n{}\n{}\n{}\n", kTextureFormatVersion, image.width, image.height, image.channels);
+    uint64_t pixels = OIIO::farmhash::Fingerprint64(reinterpret_cast<const char *>(image.pixels.data()),
+                                                    image.pixels.size() * sizeof(float));
+    return fmt::format("{:016x}-{:016x}", OIIO::farmhash::Fingerprint64(size), pixels);
+}
+
+std::filesystem::path cachedImageTexturePath(const std::filesystem::path &cacheDirectory,
+                                             const std::string &fingerprint) {
+    return cacheDirectory / fmt::format("image-{}.tx", fingerprint);
+}
+
+std::filesystem::path cachedImageTexture(const std::filesystem::path &cacheDirectory, const Image &image,
+                                         const std::string &fingerprint) {
+    std::filesystem::path texture = cachedImageTexturePath(cacheDirectory, fingerprint);
+    if (!std::filesystem::exists(texture)) writeTexture(image, "an image made in memory", texture);
     return texture;
 }
 

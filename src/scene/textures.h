@@ -1,13 +1,15 @@
-// Filtered, mip-mapped texture lookups. Generators register image files here while building
-// a RenderScene; the renderer and the preview only look up. The implementation is OpenImageIO's
-// TextureSystem, behind this interface in the image plugin (src/images/), so that programs
-// that never touch a texture do not load OpenImageIO.
+// Filtered, mip-mapped texture lookups. Generators register image files, or images they made
+// (baked masonry), here while building a RenderScene; the renderer and the preview only look up. The implementation is
+// OpenImageIO's TextureSystem, behind this interface in the image plugin (src/images/), so that programs that never
+// touch a texture do not load OpenImageIO.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 
+#include "core/image.h"
 #include "core/vecmath.h"
 
 namespace veduta {
@@ -24,6 +26,9 @@ class Textures {
     // file's own), kept in a cache so later runs reuse it. The same file and colour space
     // give the same id. Throws InputError naming the file if it cannot be read.
     virtual TextureId add(const std::filesystem::path &file, const std::string &colorSpace) = 0;
+    // Makes an image made in memory ready for lookups: linear values, one to four channels, rows
+    // from the top as in Image. No file is written while it fits the registry's memory.
+    virtual TextureId add(Image image) = 0;
     virtual int channels(TextureId id) const = 0;
     // Changes when the texel values would: the file, its size and time, the colour space.
     virtual std::string fingerprint(TextureId id) const = 0;
@@ -34,5 +39,11 @@ class Textures {
     // Writes min(channels, count) values to `out`. Thread-safe.
     virtual void lookup(TextureId id, Vec2f uv, float footprint, float *out, int count) const = 0;
 };
+
+// What a generator registers its images through, so that it needs no registry of its own: an
+// image file (read in its own colour space; throws InputError naming the file when it cannot be
+// read), or an image it made.
+using AddTexture = std::function<TextureId(const std::filesystem::path &image)>;
+using AddImage = std::function<TextureId(Image image)>;
 
 }  // namespace veduta
