@@ -7,8 +7,8 @@
 #   * buildings per second: 15 over the wall time of `veduta info` (read, generate, bake, BVH);
 #   * peak memory of `veduta render --spp 1` at 1920 × 1080 (geometry, textures, film);
 # and the ratios detail / grammar. The issue asks for both ratios within 2. One warm-up run
-# each first writes the baked maps and converts the textures into the cache, as a user's
-# second render finds them.
+# each first converts the scenes' texture files into the cache, as a user's second render finds
+# them; the masonry is baked anew in every run (it reaches the renderer in memory).
 #
 #   bench/facade_street.sh [VEDUTA_BINARY]   (default build/release/src/veduta)
 set -euo pipefail

@@ -121,15 +121,15 @@ class SceneAssembler {
                     },
                     warnings_);
             });
-        for (const ModularBuildingDesc &b : d_.modularBuildings)
-            within(b.loc, "<modular_building>", [&] {
-                generateModularBuilding(
-                    b, seedOf(b.seed), camera, builder_,
-                    [&](const std::filesystem::path &image) {
-                        return texture({image, "", b.loc});
-                    },
-                    warnings_);
-            });
+        if (!d_.modularBuildings.empty()) {
+            ModularBuildings modular(camera, builder_, [&](Image image) { return texture(std::move(image)); });
+            std::vector<uint32_t> seeds;
+            for (const ModularBuildingDesc &b : d_.modularBuildings) seeds.push_back(seedOf(b.seed));
+            modular.add(
+                d_.modularBuildings, seeds,
+                [&](const FileLoc &loc, const std::function<void()> &add) { within(loc, "<modular_building>", add); },
+                warnings_);
+        }
         if (!d_.slg.empty()) {
             std::vector<uint32_t> seeds;
             for (const SlgDesc &slg : d_.slg) seeds.push_back(seedOf(slg.seed));
@@ -180,12 +180,18 @@ class SceneAssembler {
 
     TextureId texture(const ImageRef &ref) {
         if (!ref.given()) return kNoTexture;
-        if (!textures_) textures_ = imageLibrary().makeTextures(defaultTextureCacheDirectory());
         try {
-            return textures_->add(ref.file, ref.colorSpace);
+            return textures().add(ref.file, ref.colorSpace);
         } catch (const InputError &error) {  // it names the file; add where the scene names it
             throw InputError(ref.loc, error.what());
         }
+    }
+
+    TextureId texture(Image image) { return textures().add(std::move(image)); }
+
+    Textures &textures() {
+        if (!textures_) textures_ = imageLibrary().makeTextures(defaultTextureCacheDirectory());
+        return *textures_;
     }
 
     // The mesh of one geometry element in its own frame, with its material applied.

@@ -1,34 +1,81 @@
 // Finkenzeller's buildings in a scene (<modular_building>, docs/facades.md): the structure and
 // style files read, the building assembled (facade/facade_building.h), its masonry baked into one
-// texture atlas at the texel size the camera asks for, written beside the texture cache through
-// the image library and given back to the walls as maps, and its consoles set as instances of
-// their model.
+// texture atlas at the texel sizes the camera asks of its walls, handed to the texture registry as
+// images and given back to the walls as maps, and its consoles set as instances of their model.
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
-#include "city/citygml_buildings.h"
 #include "description/scene_description.h"
+#include "facade/building_structure.h"
+#include "facade/facade_building.h"
 #include "scene/camera.h"
 #include "scene/render_scene.h"
+#include "scene/textures.h"
 
 namespace veduta {
 
 // The most texels one building's masonry atlas may have; finer asks are coarsened
 // (facade/masonry_atlas.h), so that a building costs at most 32 bytes a texel while it is baked
-// (64 MB). Past a million texels the texture registry reads an atlas tile by tile as the renderer
-// asks, rather than whole: a building close to the camera then costs only what it shows.
+// (64 MB). The texture registry holds the atlases whole, with their mip levels, while they fit its
+// memory budget (images/oiio_textures.h), and streams the rest from its cache.
 inline constexpr size_t kModularBuildingTexels = size_t(1) << 21;
 // The finest texel asked for, metres: finer than a brick's chamfer shows nothing more.
 inline constexpr double kFinestMasonryTexel = 0.002;
 
-// Adds the building: its mesh as a world mesh with the element's object and building ids, a
-// building record, its consoles as instances. The building's notes (openings left out and why)
-// are appended to `warnings` at the element's place. Throws InputError at the files' places.
-void generateModularBuilding(const ModularBuildingDesc &desc, uint32_t seed, const Camera &camera,
-                             RenderSceneBuilder &builder, const AddTexture &addTexture,
-                             std::vector<std::string> &warnings);
+// The modular buildings of one scene. What they share is made once: each structure and style file
+// read (a style's materials checked as it is read), each style's window assemblies built, each
+// window and console model a prototype that all its buildings instance.
+class ModularBuildings {
+  public:
+    // `camera` and `builder` outlive this; `addImage` registers the baked atlases.
+    ModularBuildings(const Camera &camera, RenderSceneBuilder &builder, AddImage addImage);
+    ~ModularBuildings();
+    ModularBuildings(const ModularBuildings &) = delete;
+    ModularBuildings &operator=(const ModularBuildings &) = delete;
+
+    // Runs `add` for the element at `loc`, naming the element in what it throws.
+    using ElementGuard = std::function<void(const FileLoc &loc, const std::function<void()> &add)>;
+
+    // Adds the buildings in the elements' order, each with its seed, made in parallel batches: its
+    // mesh as a world mesh with the element's object and building ids, a building record, its
+    // windows and consoles as instances. Each building's notes (openings left out and why) are
+    // appended to `warnings` at its element's place. The first element (in order) that fails
+    // throws, through `guard`: InputError at the files' places.
+    void add(const std::vector<ModularBuildingDesc> &descs, const std::vector<uint32_t> &seeds,
+             const ElementGuard &guard, std::vector<std::string> &warnings);
+
+  private:
+    struct LoadedStyle;
+    struct Made;
+
+    // Buildings made at once before they are placed: what bounds the memory their atlases hold.
+    static constexpr size_t kModularBatch = 64;
+
+    Made make(const ModularBuildingDesc &desc, uint32_t seed, const BuildingStructure &structure,
+              LoadedStyle &style) const;
+    void place(const ModularBuildingDesc &desc, Made made, std::vector<std::string> &warnings);
+
+    const BuildingStructure &structure(const std::filesystem::path &file);
+    LoadedStyle &style(const std::filesystem::path &file);
+    PrototypeId console(const std::filesystem::path &file, const ConsoleSet &set);
+    void addInstances(const ModularBuildingDesc &desc, PrototypeId prototype, const std::vector<Transform> &transforms);
+
+    const Camera &camera_;
+    CameraRays rays_;
+    RenderSceneBuilder &builder_;
+    AddImage addImage_;
+    std::map<std::filesystem::path, BuildingStructure> structures_;
+    std::map<std::filesystem::path, std::unique_ptr<LoadedStyle>> styles_;
+    std::map<const Mesh *, PrototypeId> openingPrototypes_;  // by the style's shared window models
+    std::map<std::pair<std::string, MaterialId>, PrototypeId> consolePrototypes_;
+};
 
 }  // namespace veduta

@@ -4,12 +4,14 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <numeric>
 #include <optional>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
+#include "core/check.h"
 #include "core/hash.h"
 #include "facade/casings.h"
 #include "facade/consoles.h"
@@ -57,11 +59,29 @@ struct StoreyPlan {
     FloorPlan plan;
 };
 
+// The assembly of `window` at its size: refined opening, casing, frame and pane, and the reveal.
+WindowAssembly assembleWindow(const WindowStyle &window, const PieceMaterials &materials, MaterialId interior) {
+    Vec2d size{window.placement.width, window.placement.height};
+    CoarseOpening coarse{{0, 0}, {size.x, 0}, size, {0, size.y}};
+    RefinedOpening refined = refineOpening(coarse, window.refinement, window.dominance, window.kind);
+    OpeningPieces pieces = buildOpeningPieces(refined, window.casing, window.frame);
+    // The opening's frame: along x, up z, so out of the wall is -y.
+    WallFrame3d frame{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}};
+    auto model = std::make_shared<Mesh>(extrudePieces(pieces.pieces, frame, materials));
+    model->append(revealMesh(pieces.hole, frame, kRevealDepth, interior), Transform());
+    return {std::move(model), std::move(pieces.hole)};
+}
+
 class BuildingAssembly {
   public:
     BuildingAssembly(const BuildingStructure &structure, const BuildingStyle &style, const MaterialByName &material,
-                     uint32_t seed, uint32_t buildingId) :
-        structure_(structure), style_(style), material_(material), seed_(seed), buildingId_(buildingId) {}
+                     uint32_t seed, uint32_t buildingId, WindowAssemblies &windows) :
+        structure_(structure),
+        style_(style),
+        material_(material),
+        seed_(seed),
+        buildingId_(buildingId),
+        windows_(windows) {}
 
     FacadeBuilding build() && {
         validateStructure(structure_);
@@ -326,22 +346,15 @@ class BuildingAssembly {
                                  material(style, StylePart::Cornice), material(style, StylePart::Frame),
                                  material(style, StylePart::Pane),    material(style, StylePart::Door)};
         MaterialId interior = material(style, StylePart::Interior);
-        OpeningKey key{&window,
-                       {materials.casing, materials.cornice, materials.wall, materials.frame, materials.pane,
-                        materials.door, interior}};
+        WindowAssemblies::Key key{&window,
+                                  {materials.casing, materials.cornice, materials.wall, materials.frame, materials.pane,
+                                   materials.door, interior}};
         auto [it, fresh] = openingModels_.try_emplace(key);
         if (!fresh) return it->second;
-        Vec2d size{window.placement.width, window.placement.height};
-        CoarseOpening coarse{{0, 0}, {size.x, 0}, size, {0, size.y}};
-        RefinedOpening refined = refineOpening(coarse, window.refinement, window.dominance, window.kind);
-        OpeningPieces pieces = buildOpeningPieces(refined, window.casing, window.frame);
-        // The opening's frame: along x, up z, so out of the wall is -y.
-        WallFrame3d frame{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}};
-        OpeningSet set;
-        set.model = extrudePieces(pieces.pieces, frame, materials);
-        set.model.append(revealMesh(pieces.hole, frame, kRevealDepth, interior), Transform());
-        it->second = {result_.openingSets.size(), std::move(pieces.hole)};
-        result_.openingSets.push_back(std::move(set));
+        const WindowAssembly &assembly =
+            windows_.get(style_, key, [&] { return assembleWindow(window, materials, interior); });
+        it->second = {result_.openingSets.size(), assembly.hole};
+        result_.openingSets.push_back({assembly.model, {}});
         return it->second;
     }
 
@@ -515,16 +528,33 @@ class BuildingAssembly {
     std::map<FaceKey, FaceBuild> faces_;
     std::vector<FaceKey> faceOrder_;
     std::map<std::string, size_t> dropped_;
-    using OpeningKey = std::pair<const WindowStyle *, std::array<MaterialId, 7>>;
-    std::map<OpeningKey, OpeningModel> openingModels_;
+    WindowAssemblies &windows_;
+    std::map<WindowAssemblies::Key, OpeningModel> openingModels_;
     size_t elementCount_ = 0;
 };
 
 }  // namespace
 
+const WindowAssembly &WindowAssemblies::get(const BuildingStyle &style, const Key &key,
+                                            const std::function<WindowAssembly()> &make) {
+    std::lock_guard lock(mutex_);
+    if (!style_) style_ = &style;
+    VEDUTA_CHECK(style_ == &style, "window assemblies given with a style not their own");
+    auto it = built_.find(key);
+    if (it == built_.end()) it = built_.emplace(key, make()).first;
+    return it->second;
+}
+
+FacadeBuilding buildFacadeBuilding(const BuildingStructure &structure, const BuildingStyle &style,
+                                   const MaterialByName &material, uint32_t seed, uint32_t buildingId,
+                                   WindowAssemblies &windows) {
+    return BuildingAssembly(structure, style, material, seed, buildingId, windows).build();
+}
+
 FacadeBuilding buildFacadeBuilding(const BuildingStructure &structure, const BuildingStyle &style,
                                    const MaterialByName &material, uint32_t seed, uint32_t buildingId) {
-    return BuildingAssembly(structure, style, material, seed, buildingId).build();
+    WindowAssemblies windows;
+    return buildFacadeBuilding(structure, style, material, seed, buildingId, windows);
 }
 
 }  // namespace veduta

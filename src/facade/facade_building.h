@@ -25,9 +25,14 @@
 // * Gable walls above the eaves are the roof's interface faces, in the style's roof-side material.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/vecmath.h"
@@ -53,8 +58,31 @@ struct MasonryWall {
 // corner, z up, -y out of the wall), one instance per transform (the thesis's window assemblies
 // as instances, digest §9).
 struct OpeningSet {
-    Mesh model;
+    std::shared_ptr<const Mesh> model;  // shared by every building built with the same WindowAssemblies
     std::vector<Transform> transforms;
+};
+
+// A window style's assembly in given materials: the model of its opening (as OpeningSet's) and
+// the hole it needs in the wall, from the coarse opening's lower left corner.
+struct WindowAssembly {
+    std::shared_ptr<const Mesh> model;
+    std::vector<Vec2d> hole;
+};
+
+// The window assemblies of one style, built once for all the buildings of that style: a casing's
+// exact Booleans cost more than the rest of a building's walls. Keep one beside each style
+// object; buildFacadeBuilding checks that it is always given with the same style. Buildings may
+// be built in parallel with one WindowAssemblies.
+class WindowAssemblies {
+  public:
+    using Key = std::pair<const WindowStyle *, std::array<MaterialId, 7>>;
+    // The assembly for `key`, made by `make` the first time. `style` owns the key's window style.
+    const WindowAssembly &get(const BuildingStyle &style, const Key &key, const std::function<WindowAssembly()> &make);
+
+  private:
+    std::mutex mutex_;
+    const BuildingStyle *style_ = nullptr;
+    std::map<Key, WindowAssembly> built_;
 };
 
 // A console model set along a cornice: one instance per transform (consoles.h's unit box).
@@ -79,9 +107,14 @@ using MaterialByName = std::function<MaterialId(const std::string &name, const F
 
 inline constexpr size_t kFacadeElementLimit = 200000;  // wall elements over all storeys
 
-// Builds the building. `seed` and `buildingId` make its masonry (every stone's size and colour).
-// Throws InputError at the structure's or the style's place when they do not fit together
-// (a binding to a missing module, a plan that does not close, a cornice that cannot be swept).
+// Builds the building. `seed` and `buildingId` make its masonry (every stone's size and colour);
+// its window assemblies come from, or go to, `windows`, the style's. Throws InputError at the
+// structure's or the style's place when they do not fit together (a binding to a missing module,
+// a plan that does not close, a cornice that cannot be swept).
+FacadeBuilding buildFacadeBuilding(const BuildingStructure &structure, const BuildingStyle &style,
+                                   const MaterialByName &material, uint32_t seed, uint32_t buildingId,
+                                   WindowAssemblies &windows);
+// The same with window assemblies of its own.
 FacadeBuilding buildFacadeBuilding(const BuildingStructure &structure, const BuildingStyle &style,
                                    const MaterialByName &material, uint32_t seed, uint32_t buildingId);
 

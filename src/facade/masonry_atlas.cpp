@@ -46,14 +46,22 @@ struct Slot {
     int64_t x = 0, y = 0;
 };
 
+// A wall's texel when the atlas's is `texelSize` (see Texel per wall in the header).
+double wallTexel(const AtlasWall &wall, double texelSize) {
+    return std::max(texelSize, std::min(texelSize * wall.texelScale, kCoarsestAtlasTexel));
+}
+
 // The shelf packing of the walls at `texelSize`, or nothing when it exceeds `maxTexels`.
-std::optional<MasonryAtlasLayout> pack(const std::vector<Extent> &extents, double texelSize, size_t maxTexels) {
+std::optional<MasonryAtlasLayout> pack(const std::vector<AtlasWall> &walls, const std::vector<Extent> &extents,
+                                       double texelSize, size_t maxTexels) {
     const double budget = double(maxTexels);
     std::vector<Slot> slots(extents.size());
+    std::vector<double> texels(extents.size());
     double area = 0;
     for (size_t i = 0; i < extents.size(); ++i) {
-        double width = texelsAlong(extents[i].high.x - extents[i].low.x, texelSize) + 2 * kAtlasGutter;
-        double height = texelsAlong(extents[i].high.y - extents[i].low.y, texelSize) + 2 * kAtlasGutter;
+        texels[i] = wallTexel(walls[i], texelSize);
+        double width = texelsAlong(extents[i].high.x - extents[i].low.x, texels[i]) + 2 * kAtlasGutter;
+        double height = texelsAlong(extents[i].high.y - extents[i].low.y, texels[i]) + 2 * kAtlasGutter;
         area += width * height;
         if (area > budget) return std::nullopt;
         slots[i].width = int64_t(width), slots[i].height = int64_t(height);
@@ -83,10 +91,11 @@ std::optional<MasonryAtlasLayout> pack(const std::vector<Extent> &extents, doubl
         AtlasRegion region;
         region.x = int(slots[i].x) + kAtlasGutter, region.y = int(slots[i].y) + kAtlasGutter;
         region.width = int(slots[i].width) - 2 * kAtlasGutter, region.height = int(slots[i].height) - 2 * kAtlasGutter;
+        region.texelSize = texels[i];
         region.origin = extents[i].low;
         // Column x + (p.x − origin.x) / s; and from the bottom row up, the region's bottom lies
         // h − (y + height) rows above the atlas's bottom.
-        region.uv.scale = {1 / (texelSize * w), 1 / (texelSize * h)};
+        region.uv.scale = {1 / (texels[i] * w), 1 / (texels[i] * h)};
         region.uv.offset = {region.x / w - region.origin.x * region.uv.scale.x,
                             (h - region.y - region.height) / h - region.origin.y * region.uv.scale.y};
         layout.regions.push_back(region);
@@ -94,23 +103,20 @@ std::optional<MasonryAtlasLayout> pack(const std::vector<Extent> &extents, doubl
     return layout;
 }
 
-// The least texel size at which the walls alone, without gutters, fit `maxTexels`: a wall of
-// a × b metres takes at least a·b / s² texels.
-double areaBound(const std::vector<Extent> &extents, size_t maxTexels) {
-    double area = 0;
-    for (const Extent &e : extents) area += (e.high.x - e.low.x) * (e.high.y - e.low.y);
-    return std::sqrt(area / double(maxTexels));
-}
-
 // Copies `from` (a wall's image) into its region of `to`, and its edge texels into the gutter.
 void copyWithGutter(const Image &from, const AtlasRegion &region, Image &to) {
     VEDUTA_CHECK(from.width == region.width && from.height == region.height && from.channels == to.channels,
                  "a baked wall differs from its atlas region");
-    for (int row = -kAtlasGutter; row < region.height + kAtlasGutter; ++row)
-        for (int x = -kAtlasGutter; x < region.width + kAtlasGutter; ++x) {
-            const float *texel = from.at(std::clamp(x, 0, from.width - 1), std::clamp(row, 0, from.height - 1));
-            std::copy(texel, texel + from.channels, to.at(region.x + x, region.y + row));
+    const size_t channels = size_t(from.channels), rowLength = size_t(from.width) * channels;
+    for (int row = -kAtlasGutter; row < region.height + kAtlasGutter; ++row) {
+        const float *source = from.at(0, std::clamp(row, 0, from.height - 1));
+        float *target = to.at(region.x, region.y + row);
+        std::copy(source, source + rowLength, target);
+        for (int g = 1; g <= kAtlasGutter; ++g) {
+            std::copy(source, source + channels, target - size_t(g) * channels);
+            std::copy(source + rowLength - channels, source + rowLength, target + rowLength + size_t(g - 1) * channels);
         }
+    }
 }
 
 }  // namespace
@@ -119,21 +125,21 @@ MasonryAtlasLayout layOutMasonryAtlas(const std::vector<AtlasWall> &walls, doubl
     if (!(texelSize > 0) || !std::isfinite(texelSize))
         throw std::invalid_argument(fmt::format("an atlas texel of {} m", texelSize));
     std::vector<Extent> extents;
-    for (size_t i = 0; i < walls.size(); ++i) extents.push_back(extentOf(walls[i], i));
+    for (size_t i = 0; i < walls.size(); ++i) {
+        extents.push_back(extentOf(walls[i], i));
+        if (!(walls[i].texelScale >= 1) || !std::isfinite(walls[i].texelScale))
+            throw std::invalid_argument(fmt::format("atlas wall {} has a texel scale of {}", i, walls[i].texelScale));
+    }
     // The ladder texelSize · 2^(step / kAtlasTexelSteps), its last step clamped to the coarsest
-    // texel; steps below the area bound are skipped, as they cannot fit.
+    // texel. pack refuses a step as soon as its walls alone exceed the budget, before placing any.
     const int lastStep = texelSize < kCoarsestAtlasTexel
         ? int(std::ceil(kAtlasTexelSteps * std::log2(kCoarsestAtlasTexel / texelSize)))
         : 0;
-    const double bound = areaBound(extents, maxTexels);
-    int firstStep = 0;
-    if (!(bound < kCoarsestAtlasTexel)) firstStep = lastStep;
-    else if (bound > texelSize) firstStep = int(std::floor(kAtlasTexelSteps * std::log2(bound / texelSize)));
-    for (int step = firstStep; step <= lastStep; ++step) {
+    for (int step = 0; step <= lastStep; ++step) {
         double size = step == 0 ? texelSize
             : step == lastStep  ? kCoarsestAtlasTexel
                                 : texelSize * std::exp2(double(step) / kAtlasTexelSteps);
-        if (auto layout = pack(extents, size, maxTexels)) return *layout;
+        if (auto layout = pack(walls, extents, size, maxTexels)) return *layout;
     }
     throw std::length_error(fmt::format("the masonry of {} walls does not fit {} texels at {} m per texel",
                                         walls.size(), maxTexels, std::max(texelSize, kCoarsestAtlasTexel)));
@@ -151,7 +157,7 @@ MasonryAtlas bakeMasonryAtlas(const std::vector<AtlasWall> &walls, double texelS
         }
     for (size_t i = 0; i < walls.size(); ++i) {
         const AtlasRegion &region = atlas.layout.regions[i];
-        MasonryTextures wall = bakeMasonry(*walls[i].masonry, *walls[i].face, atlas.layout.texelSize, look,
+        MasonryTextures wall = bakeMasonry(*walls[i].masonry, *walls[i].face, region.texelSize, look,
                                            size_t(region.width) * size_t(region.height));
         VEDUTA_CHECK(wall.origin == region.origin, "a baked wall's origin differs from its atlas region's");
         copyWithGutter(wall.diffuse, region, atlas.diffuse);

@@ -16,14 +16,17 @@
 //   and their copies. A deeper level k (used where a wall texel is a quarter of a pixel or less)
 //   reaches about 1.5 of its texels beyond the point and may then blend in the neighbour's edge, but
 //   only within the wall's outermost pixel or two, where it meets its corner or cornice (L1013).
+// * Texel per wall: each wall asks for its texel as a multiple (texelScale, at least 1) of the
+//   atlas's texel size s, so that a wall far from the camera, or facing away from it, takes fewer
+//   texels than the nearest one; a wall's texel is s · texelScale but never coarser than
+//   kCoarsestAtlasTexel unless s itself is.
 // * Budget (the resolution "chosen for the viewer", L1018): the atlas (width × height texels) never
 //   exceeds `maxTexels`. Where the asked texel size s does not fit, the size grows for all walls
 //   alike, along the ladder s · 2^(k/kAtlasTexelSteps), k = 1, 2, …, to the first step at which the
-//   packing fits (steps below the area bound, where the walls alone would need more texels than
-//   allowed, are skipped: they cannot fit), its last step being kCoarsestAtlasTexel; if even that
-//   does not fit, std::length_error (an asked size coarser than that is only tried itself). The
-//   layout is found from the walls' sizes before any image is made, and walls are baked one at a
-//   time, so memory is the atlas plus one wall's images.
+//   packing fits, its last step being kCoarsestAtlasTexel; if even that does not fit,
+//   std::length_error (an asked size coarser than that is only tried itself). The layout is found
+//   from the walls' sizes before any image is made, and walls are baked one at a time, so memory is
+//   the atlas plus one wall's images.
 // * A wall whose masonry has no stones (plastered, or too small for a single brick) is baked as
 //   mortar only, not skipped: every wall of the building then has its region and its map, one
 //   material serves them all, and the opening cut-outs (alpha 0) stay exact on it too.
@@ -48,10 +51,12 @@ inline constexpr double kCoarsestAtlasTexel = 0.1;
 // Ladder steps per doubling of the texel size (each step about 1.1 %, 2.2 % fewer texels).
 inline constexpr int kAtlasTexelSteps = 64;
 
-// One wall face and its masonry, both outliving the call.
+// One wall face and its masonry, both outliving the call, and its texel as a multiple of the
+// atlas's (see Texel per wall above).
 struct AtlasWall {
     const Masonry *masonry = nullptr;
     const WallFace *face = nullptr;
+    double texelScale = 1;
 };
 
 // The affine map from a wall's metres to atlas (u, v): u = scale.x · x + offset.x and
@@ -70,12 +75,13 @@ struct AtlasUvMap {
 // top as in Image; the gutter lies around that, kAtlasGutter wide.
 struct AtlasRegion {
     int x = 0, y = 0, width = 0, height = 0;
-    Vec2d origin;  // the wall point at the region's bottom left corner (the face's lowest x and y)
+    double texelSize = 0;  // metres, this wall's
+    Vec2d origin;          // the wall point at the region's bottom left corner (the face's lowest x and y)
     AtlasUvMap uv;
 };
 
 struct MasonryAtlasLayout {
-    double texelSize = 0;  // metres, as used: the asked one or coarser (see Budget above)
+    double texelSize = 0;  // metres, of a wall of texelScale 1: the asked one or coarser (see Budget above)
     int width = 0, height = 0;
     std::vector<AtlasRegion> regions;  // one per wall, in the walls' order
 };
@@ -92,7 +98,8 @@ struct MasonryAtlas {
 
 // Where each wall goes at `texelSize` metres per texel, or the coarsest size that fits
 // `maxTexels` (see Budget above). No walls give an empty layout. Throws std::invalid_argument for
-// a texel size that is not positive and finite, a missing face or masonry, or a face with fewer
+// a texel size that is not positive and finite, a texel scale not finite or below 1, a missing
+// face or masonry, or a face with fewer
 // than three corners or a corner not finite; std::length_error when even kCoarsestAtlasTexel
 // does not fit.
 MasonryAtlasLayout layOutMasonryAtlas(const std::vector<AtlasWall> &walls, double texelSize, size_t maxTexels);

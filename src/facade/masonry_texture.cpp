@@ -112,12 +112,15 @@ std::vector<float> distancesFromStoneEdges(const IdRaster &raster) {
 // How far each texel stands out of the mortar, in metres: a stone's depth, falling to the mortar
 // over the bevel at its edges.
 std::vector<double> heights(const IdRaster &raster, const Masonry &masonry, double bevel) {
-    std::vector<float> distance = distancesFromStoneEdges(raster);
+    // Where half a texel spans the bevel, even a texel at a stone's edge (distance 0, its centre
+    // half a texel in) stands at the full depth: the distances change nothing and are not made.
+    const bool distances = bevel > 0.5 * raster.texelSize;
+    std::vector<float> distance = distances ? distancesFromStoneEdges(raster) : std::vector<float>();
     std::vector<double> height(raster.ids.size(), 0.0);
     for (size_t i = 0; i < height.size(); ++i) {
         int id = raster.ids[i];
         if (id < 0) continue;
-        double inset = (distance[i] + 0.5) * raster.texelSize;
+        double inset = ((distances ? distance[i] : 0.0f) + 0.5) * raster.texelSize;
         height[i] = masonry.stones[size_t(id)].depth * (bevel > 0 ? std::min(1.0, inset / bevel) : 1.0);
     }
     return height;

@@ -47,11 +47,42 @@ Polygon box(double lowX, double lowY, double highX, double highY) {
     return toExact({{lowX, lowY}, {highX, lowY}, {highX, highY}, {lowX, highY}});
 }
 
-// The opening grown by an axis-parallel square of half-side `mortar` (see the header).
+bool isAxisParallelRectangle(const std::vector<Vec2d> &polygon) {
+    return polygon.size() == 4 && polygon[0].y == polygon[1].y && polygon[1].x == polygon[2].x &&
+        polygon[2].y == polygon[3].y && polygon[3].x == polygon[0].x && polygon[0].x < polygon[1].x &&
+        polygon[1].y < polygon[2].y;
+}
+
+// The box a polygon encloses when every edge of it runs along the box's sides (corners and, as the
+// refined edges of openings have them, points between); nullopt otherwise. A simple polygon whose
+// edges all lie on its bounding box's sides is that box.
+std::optional<std::pair<Vec2d, Vec2d>> boxOf(const std::vector<Vec2d> &polygon) {
+    Vec2d low = polygon.front(), high = polygon.front();
+    for (Vec2d p : polygon) {
+        low = {std::min(low.x, p.x), std::min(low.y, p.y)};
+        high = {std::max(high.x, p.x), std::max(high.y, p.y)};
+    }
+    for (size_t i = 0; i < polygon.size(); ++i) {
+        Vec2d p = polygon[i], q = polygon[(i + 1) % polygon.size()];
+        bool side = (p.x == q.x && (p.x == low.x || p.x == high.x)) || (p.y == q.y && (p.y == low.y || p.y == high.y));
+        if (!side) return std::nullopt;
+    }
+    return std::make_pair(low, high);
+}
+
+// The opening grown by an axis-parallel square of half-side `mortar` (see the header). Most
+// openings are axis-parallel rectangles, whose sum with the square is the rectangle widened by
+// the mortar on every side: the same region without the convolution.
 PolygonWithHoles grown(const std::vector<Vec2d> &opening, double mortar) {
-    Polygon polygon = toExact(opening);
-    if (mortar == 0) return PolygonWithHoles(polygon);
-    return CGAL::minkowski_sum_2(polygon, box(-mortar, -mortar, mortar, mortar));
+    if (mortar == 0) return PolygonWithHoles(toExact(opening));
+    if (auto box = boxOf(opening)) {
+        // In exact numbers, as the sum's corners are.
+        const Kernel::FT m(mortar), x0 = Kernel::FT(box->first.x) - m, y0 = Kernel::FT(box->first.y) - m,
+                                    x1 = Kernel::FT(box->second.x) + m, y1 = Kernel::FT(box->second.y) + m;
+        std::vector<Kernel::Point_2> corners{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+        return PolygonWithHoles(Polygon(corners.begin(), corners.end()));
+    }
+    return CGAL::minkowski_sum_2(toExact(opening), box(-mortar, -mortar, mortar, mortar));
 }
 
 bool overlaps(const CGAL::Bbox_2 &a, const CGAL::Bbox_2 &b) {
@@ -152,6 +183,12 @@ void WallMask::rasterise() {
         addRing(part.outer);
         for (const Polygon &hole : part.holes) addRing(hole);
     }
+    rowEdges_.assign(size_t(rows_), {});
+    for (size_t e = 0; e < edges.size(); ++e) {
+        auto [p, q] = edges[e];
+        for (int row = rowOf(std::min(p.y, q.y)); row <= rowOf(std::max(p.y, q.y)); ++row)
+            rowEdges_[size_t(row)].push_back(uint32_t(e));
+    }
     cells_.assign(size_t(columns_) * size_t(rows_), kBlockedCell);
     std::vector<bool> crossed(cells_.size(), false);
     // The first and last cell whose open inside meets [low, high] (none when both lie on one side).
@@ -242,12 +279,6 @@ MaskCover WallMask::cover(Vec2d low, Vec2d high) const {
 
 namespace {
 
-bool isAxisParallelRectangle(const std::vector<Vec2d> &polygon) {
-    return polygon.size() == 4 && polygon[0].y == polygon[1].y && polygon[1].x == polygon[2].x &&
-        polygon[2].y == polygon[3].y && polygon[3].x == polygon[0].x && polygon[0].x < polygon[1].x &&
-        polygon[1].y < polygon[2].y;
-}
-
 // The boundary of the kept cells of a grid (xs × ys, cell (i, j) kept when keep[j · columns + i]),
 // as counter-clockwise rings without collinear corners; nullopt when it is not a set of simple
 // rings without holes: a hole (a clockwise ring) or cells that touch only at a corner.
@@ -307,16 +338,19 @@ std::optional<std::vector<std::vector<Vec2d>>> WallMask::clipAlongAxes(const std
     if (!isAxisParallelRectangle(polygon)) return std::nullopt;
     Vec2d low = polygon[0], high = polygon[2];
     std::vector<double> xs{low.x, high.x}, ys{low.y, high.y};
-    for (auto [p, q] : edges_) {
-        if (std::max(p.x, q.x) < low.x || std::min(p.x, q.x) > high.x || std::max(p.y, q.y) < low.y ||
-            std::min(p.y, q.y) > high.y)
-            continue;
-        if (p.x != q.x && p.y != q.y) return std::nullopt;
-        for (double x : {p.x, q.x})
-            if (x > low.x && x < high.x) xs.push_back(x);
-        for (double y : {p.y, q.y})
-            if (y > low.y && y < high.y) ys.push_back(y);
-    }
+    // An edge spanning several rows comes once for each: its cuts are merged below.
+    for (int row = rowOf(low.y); row <= rowOf(high.y); ++row)
+        for (uint32_t e : rowEdges_[size_t(row)]) {
+            auto [p, q] = edges_[e];
+            if (std::max(p.x, q.x) < low.x || std::min(p.x, q.x) > high.x || std::max(p.y, q.y) < low.y ||
+                std::min(p.y, q.y) > high.y)
+                continue;
+            if (p.x != q.x && p.y != q.y) return std::nullopt;
+            for (double x : {p.x, q.x})
+                if (x > low.x && x < high.x) xs.push_back(x);
+            for (double y : {p.y, q.y})
+                if (y > low.y && y < high.y) ys.push_back(y);
+        }
     for (auto *cuts : {&xs, &ys}) {
         std::sort(cuts->begin(), cuts->end());
         cuts->erase(std::unique(cuts->begin(), cuts->end()), cuts->end());
@@ -330,11 +364,20 @@ std::optional<std::vector<std::vector<Vec2d>>> WallMask::clipAlongAxes(const std
     return traceCells(xs, ys, keep);
 }
 
-// Even-odd over the rounded rings: the free region, holes and all.
+// The grey image's row holding height y, clamped to the image: monotonic in y, so an edge and a
+// query whose y-ranges meet share a row.
+int WallMask::rowOf(double y) const {
+    return int(std::clamp(std::floor((y - low_.y) / cellSize_), 0.0, double(rows_ - 1)));
+}
+
+// Even-odd over the rounded rings: the free region, holes and all. Every edge a horizontal line
+// at p.y crosses has p.y in its y-range, so it is listed at p.y's row.
 bool WallMask::insideRings(Vec2d p) const {
     bool inside = false;
-    for (auto [a, b] : edges_)
+    for (uint32_t e : rowEdges_[size_t(rowOf(p.y))]) {
+        auto [a, b] = edges_[e];
         if ((a.y <= p.y) != (b.y <= p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)) inside = !inside;
+    }
     return inside;
 }
 

@@ -88,10 +88,14 @@ class WallMask {
     void rasterise();
     std::optional<std::vector<std::vector<Vec2d>>> clipAlongAxes(const std::vector<Vec2d> &polygon) const;
     bool insideRings(Vec2d p) const;
+    int rowOf(double y) const;
     uint32_t countIn(const std::vector<uint32_t> &table, int column0, int row0, int column1, int row1) const;
 
     std::unique_ptr<Exact> exact_;
     std::vector<Edge> edges_;  // the free region's rings rounded to double
+    // Per row of the grey image, the edges whose y-range meets the row's (both closed): a clip
+    // near an opening consults only those.
+    std::vector<std::vector<uint32_t>> rowEdges_;
     Vec2d low_, high_;
     double cellSize_ = 0;
     int columns_ = 0, rows_ = 0;

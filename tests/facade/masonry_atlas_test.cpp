@@ -322,6 +322,43 @@ TEST(MasonryAtlas, RefusesOnlyWhenEvenATexelPerTenCentimetresDoesNotFit) {
     EXPECT_TRUE(none.regions.empty());
 }
 
+// A wall may ask for a coarser texel than the atlas's (farther from the camera, or facing away):
+// its region shrinks by that factor, up to the coarsest texel, its map stays true, and a tight
+// budget coarsens every wall by the same step.
+TEST(MasonryAtlas, EachWallTakesItsOwnTexelUpToTheCoarsest) {
+    std::vector<WallFace> faces{{rectangle(0, 0, 4, 3), {}}, {rectangle(0, 0, 4, 3), {}}, {rectangle(0, 0, 4, 3), {}}};
+    std::vector<Masonry> masonry(faces.size());
+    std::vector<AtlasWall> walls = atlasWalls(masonry, faces);
+    walls[1].texelScale = 4;
+    walls[2].texelScale = 1000;
+    MasonryAtlasLayout layout = layOutMasonryAtlas(walls, 0.01, kLargeBudget);
+    EXPECT_DOUBLE_EQ(layout.texelSize, 0.01);
+    EXPECT_DOUBLE_EQ(layout.regions[0].texelSize, 0.01);
+    EXPECT_DOUBLE_EQ(layout.regions[1].texelSize, 0.04);
+    EXPECT_DOUBLE_EQ(layout.regions[2].texelSize, kCoarsestAtlasTexel);
+    EXPECT_EQ(layout.regions[0].width, 400);
+    EXPECT_EQ(layout.regions[1].width, 100);
+    EXPECT_EQ(layout.regions[2].width, 40);
+    for (size_t i = 0; i < 3; ++i) {
+        // A wall metre is 1 / texel columns: the map's scale in atlas widths.
+        EXPECT_NEAR(layout.regions[i].uv.scale.x * layout.width, 1 / layout.regions[i].texelSize, 1e-9) << i;
+        Vec2f corner = layout.regions[i].uv({0, 3});
+        EXPECT_NEAR(corner.x * layout.width, layout.regions[i].x, 1e-3) << i;
+        EXPECT_NEAR((1 - corner.y) * layout.height, layout.regions[i].y, 1e-3) << i;
+    }
+    // Room for the three only at twice the texel: the coarse wall, already at the coarsest, stays.
+    size_t budget = size_t((200 + 8) * (150 + 8) + (50 + 8) * (38 + 8) + (40 + 8) * (30 + 8)) * 2;
+    MasonryAtlasLayout tight = layOutMasonryAtlas(walls, 0.01, budget);
+    EXPECT_GT(tight.texelSize, 0.01);
+    EXPECT_LE(size_t(tight.width) * size_t(tight.height), budget);
+    EXPECT_DOUBLE_EQ(tight.regions[1].texelSize, 4 * tight.texelSize);
+    EXPECT_DOUBLE_EQ(tight.regions[2].texelSize, kCoarsestAtlasTexel);
+    walls[1].texelScale = 0.5;
+    EXPECT_THROW(layOutMasonryAtlas(walls, 0.01, kLargeBudget), std::invalid_argument);
+    walls[1].texelScale = std::nan("");
+    EXPECT_THROW(layOutMasonryAtlas(walls, 0.01, kLargeBudget), std::invalid_argument);
+}
+
 TEST(MasonryAtlas, AWallWithoutStonesIsBakedAsMortarWithItsOpeningsCut) {
     std::vector<WallFace> faces{{rectangle(0, 0, 2, 2), {rectangle(0.5, 0.5, 1.5, 1.5)}}};
     std::vector<Masonry> masonry{{{}, Vec3f(0.6f, 0.55f, 0.5f), 0.01}};

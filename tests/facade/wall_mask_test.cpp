@@ -162,6 +162,28 @@ TEST(WallMask, RectanglesCutAlongTheAxesAgreeWithTheExactRegion) {
     EXPECT_GT(cut, 50u);
 }
 
+// Openings are mostly rectangles, often with points between their corners (refined edges); grown,
+// such an opening is the rectangle widened by the mortar, exactly as the Minkowski sum that a
+// slanted opening takes makes it.
+TEST(WallMask, ARectangleWithPointsAlongItsSidesGrowsAsTheRectangleDoes) {
+    std::vector<Vec2d> refined{{1, 1}, {1.25, 1}, {1.5, 1}, {2, 1}, {2, 1.5}, {2, 2}, {1.5, 2}, {1, 2}, {1, 1.2}};
+    WallMask plain(wallWithWindow(), 0.1, 0.25);
+    WallMask withPoints({rectangle(0, 0, 4, 3), {refined}}, 0.1, 0.25);
+    EXPECT_DOUBLE_EQ(withPoints.freeArea(), 12 - 1.2 * 1.2);
+    EXPECT_DOUBLE_EQ(withPoints.freeArea(), plain.freeArea());
+    for (int row = 0; row < plain.rows(); ++row)
+        for (int column = 0; column < plain.columns(); ++column)
+            EXPECT_EQ(withPoints.grey(column, row), plain.grey(column, row)) << column << " " << row;
+    // The same opening as a slanted quadrilateral's limit: a rhombus grows by the square's
+    // Minkowski sum, its area that of the rhombus plus its swept sides and the square.
+    std::vector<Vec2d> rhombus{{2, 1}, {3, 1.5}, {2, 2}, {1, 1.5}};
+    WallMask slanted({rectangle(0, 0, 4, 3), {rhombus}}, 0.1, 0.25);
+    // Rhombus 1 (diagonals 2 and 1); each side (length √1.25) swept by the square's width across it
+    // (0.2 · (|dx| + |dy|) / length per unit length), plus the square 0.04.
+    double sides = 4 * 0.1 * (1 + 0.5) * 2 / 2;
+    EXPECT_NEAR(slanted.freeArea(), 12 - (1 + sides + 0.04), 1e-9);
+}
+
 TEST(WallMask, ACellSizeTooFineForTheWallIsCoarsened) {
     WallMask mask({rectangle(0, 0, 1000, 1000), {}}, 0, 0.001);
     EXPECT_LE(size_t(mask.columns()) * size_t(mask.rows()), kMaskCellLimit);
