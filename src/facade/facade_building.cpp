@@ -508,7 +508,9 @@ class BuildingAssembly {
             case MasonryStyle::Kind::Cyclopean:
                 wall.masonry = cyclopeanMasonry(wall.face, *style.cyclopean, seed_, wallId);
                 break;
-            case MasonryStyle::Kind::Plain: break;
+            case MasonryStyle::Kind::Plain:  // resolveStyle gives plastered walls no masonry
+                VEDUTA_CHECK(false, "a plastered wall among the masonry faces");
+                break;
             }
             wall.material = build.material;
             wall.triangles = std::move(build.triangles);

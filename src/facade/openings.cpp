@@ -162,11 +162,4 @@ RefinedOpening refineOpening(const CoarseOpening &coarse, const std::array<EdgeR
     return opening;
 }
 
-std::optional<std::string> whyNotUnder(const std::vector<Vec2d> &outline, double z) {
-    if (outline.empty()) return std::nullopt;
-    double top = std::max_element(outline.begin(), outline.end(), [](Vec2d a, Vec2d b) { return a.y < b.y; })->y;
-    if (top <= z) return std::nullopt;
-    return fmt::format("the opening reaches {:.3f} m, above the limit at {:.3f} m", top, z);
-}
-
 }  // namespace veduta

@@ -29,8 +29,6 @@
 #pragma once
 
 #include <array>
-#include <optional>
-#include <string>
 #include <vector>
 
 #include "core/vecmath.h"
@@ -104,9 +102,5 @@ struct RefinedOpening {
 // (their dist_b + size add up to 1 or more).
 RefinedOpening refineOpening(const CoarseOpening &coarse, const std::array<EdgeRefinement, 4> &edges,
                              Dominance dominance = Dominance::BottomAndTop, OpeningKind kind = OpeningKind::Window);
-
-// Whether an outline (an opening's hole) stays at or below height `z` in its wall, as a later step
-// needs to drop windows under a roof line (§8 row 19): nothing when it fits, else why not.
-std::optional<std::string> whyNotUnder(const std::vector<Vec2d> &outline, double z);
 
 }  // namespace veduta

@@ -116,14 +116,6 @@ TEST(Openings, BadRefinementsAreRefused) {
     EXPECT_THROW(refineOpening(kUnit, e), std::invalid_argument);
 }
 
-TEST(Openings, AnOutlineFitsUnderALimitAtOrAboveItsTop) {
-    std::vector<Vec2d> outline{{0, 0}, {1, 0}, {1, 2}, {0, 2}};
-    EXPECT_FALSE(whyNotUnder(outline, 2).has_value());
-    std::optional<std::string> why = whyNotUnder(outline, 1.5);
-    ASSERT_TRUE(why.has_value());
-    EXPECT_NE(why->find("2.000"), std::string::npos);
-}
-
 TEST(Openings, LeftEdgeMovesAlongTheTopEdgeOnANonParallelogram) {
     // A wall with a sloping top: the opening's top edge is steeper than its bottom edge.
     WallQuad wall{{0, 0}, {4, 0}, {4, 3}, {0, 2}};
