@@ -1,7 +1,7 @@
 // Finkenzeller's buildings in a scene (<modular_building>, docs/facades.md): the structure and
-// style files read, the building assembled (facade/facade_building.h), its masonry baked into one
-// texture atlas at the texel sizes the camera asks of its walls, handed to the texture registry as
-// images and given back to the walls as maps, and its consoles set as instances of their model.
+// style files read, the building assembled (facade/facade_building.h), its masonry baked into
+// maps at the texels the camera asks for (city/masonry_maps.h), its windows and consoles set as
+// instances of their models.
 #pragma once
 
 #include <cstdint>
@@ -21,14 +21,6 @@
 #include "scene/textures.h"
 
 namespace veduta {
-
-// The most texels one building's masonry atlas may have; finer asks are coarsened
-// (facade/masonry_atlas.h), so that a building costs at most 32 bytes a texel while it is baked
-// (64 MB). The texture registry holds the atlases whole, with their mip levels, while they fit its
-// memory budget (images/oiio_textures.h), and streams the rest from its cache.
-inline constexpr size_t kModularBuildingTexels = size_t(1) << 21;
-// The finest texel asked for, metres: finer than a brick's chamfer shows nothing more.
-inline constexpr double kFinestMasonryTexel = 0.002;
 
 // The modular buildings of one scene. What they share is made once: each structure and style file
 // read (a style's materials checked as it is read), each style's window assemblies built, each
