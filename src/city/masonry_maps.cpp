@@ -142,8 +142,16 @@ constexpr int kTileSamples = 9;
 // its points; nothing for a tile the camera sees from behind or not at all.
 std::optional<double> seenTexel(const Mesh &mesh, const MasonryTile &tile, const Transform &toWorld,
                                 const CameraRays &rays, const Camera &camera) {
-    // The affine map from wall metres to the world, from one of the tile's triangles.
-    const uint32_t *corner = &mesh.indices[3 * size_t(tile.triangles.front())];
+    // The affine map from wall metres to the world, from the tile's largest triangle in wall
+    // metres (a sliver would give it no precision).
+    auto uvArea = [&](uint32_t t) {
+        const uint32_t *c = &mesh.indices[3 * size_t(t)];
+        Vec2f e1 = mesh.uvs[c[1]] - mesh.uvs[c[0]], e2 = mesh.uvs[c[2]] - mesh.uvs[c[0]];
+        return std::abs(e1.x * e2.y - e1.y * e2.x);
+    };
+    uint32_t largest = *std::max_element(tile.triangles.begin(), tile.triangles.end(),
+                                         [&](uint32_t a, uint32_t b) { return uvArea(a) < uvArea(b); });
+    const uint32_t *corner = &mesh.indices[3 * size_t(largest)];
     Vec3f p0 = toWorld.applyPoint(mesh.positions[corner[0]]), p1 = toWorld.applyPoint(mesh.positions[corner[1]]),
           p2 = toWorld.applyPoint(mesh.positions[corner[2]]);
     if (dot(cross(p1 - p0, p2 - p0), camera.position - p0) <= 0) return std::nullopt;
