@@ -108,9 +108,12 @@ class SceneAssembler {
         }
         GroundHeight ground = landscape ? landscape->ground : GroundHeight();
         if (slgLand) slgLand->ground = ground;
+        // Where baked masonry's maps go (rule files' <Masonry>, <modular_building>).
+        AddImage masonryMaps = [&](Image image) { return texture(std::move(image)); };
         for (const BuildingGroupDesc &group : d_.buildingGroups) {
-            within(group.loc, "<buildings>",
-                   [&] { generateBuildings(group, seedOf(group.seed), ground, builder_, warnings_); });
+            within(group.loc, "<buildings>", [&] {
+                generateBuildings(group, seedOf(group.seed), ground, builder_, warnings_, &camera, masonryMaps);
+            });
         }
         for (const CityGmlDesc &gml : d_.cityGml)
             within(gml.loc, "<citygml>", [&] {
@@ -122,7 +125,7 @@ class SceneAssembler {
                     warnings_);
             });
         if (!d_.modularBuildings.empty()) {
-            ModularBuildings modular(camera, builder_, [&](Image image) { return texture(std::move(image)); });
+            ModularBuildings modular(camera, builder_, masonryMaps);
             std::vector<uint32_t> seeds;
             for (const ModularBuildingDesc &b : d_.modularBuildings) seeds.push_back(seedOf(b.seed));
             modular.add(
@@ -139,7 +142,7 @@ class SceneAssembler {
         for (size_t i = 0; i < d_.cities.size(); ++i) {
             within(d_.cities[i].loc, elementName(d_.cities[i]), [&] {
                 generateCity(d_.cities[i], cities[i], seedOf(d_.cities[i].seed), landscape ? &*landscape : nullptr,
-                             builder_, warnings_, camera);
+                             builder_, warnings_, camera, masonryMaps);
             });
         }
         if (textures_) builder_.setTextures(textures_);

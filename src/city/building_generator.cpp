@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "city/asset_fitting.h"
+#include "city/masonry_maps.h"
 #include "city/roof_choice.h"
 #include "city/start_shapes.h"
 #include "core/check.h"
@@ -60,6 +61,19 @@ BuildingGenerator::BuildingGenerator(const Grammar &grammar, const AssetLibrary 
         VEDUTA_CHECK(
             assets[uint32_t(a)].surfaces.size() <= kMaxSurfaces,
             fmt::format("the model {} has more surfaces than a prototype key holds", assets[uint32_t(a)].name));
+    for (const MasonryRule &rule : grammar.rules().masonry) {
+        std::optional<uint32_t> model = assets.find(rule.model);
+        if (!model || assets[*model].type != ModelType::Wall)
+            throw InputError(
+                rule.loc,
+                fmt::format("<Masonry model=\"{}\">: {}", rule.model,
+                            model ? "not a wall model (masonry covers walls)" : "no such model in the library"));
+        masonryModels_[*model].push_back(&rule);
+    }
+}
+
+void BuildingGenerator::bakeMasonryWith(const Camera &camera, AddImage addImage) {
+    masonryBaking_.emplace(MasonryBaking{&camera, CameraRays(camera), std::move(addImage)});
 }
 
 PrototypeId BuildingGenerator::prototypeFor(const PrototypeKey &key) {
@@ -102,6 +116,74 @@ void BuildingGenerator::addWallPiece(const Asset &model, const Transform &modelT
     }
     for (size_t t = firstTriangle; t < baked.triangleCount(); ++t)
         baked.triangleMaterials[t] = key.materials[model.mesh.triangleMaterials[t - firstTriangle]];
+}
+
+// The masonry of the first <Masonry> that covers the model on that facade, or none.
+const MasonryStyle *BuildingGenerator::masonryOf(uint32_t model, const std::string &facade) const {
+    auto rules = masonryModels_.find(model);
+    if (rules == masonryModels_.end()) return nullptr;
+    for (const MasonryRule *rule : rules->second)
+        if (rule->covers(facade)) return &rule->style;
+    return nullptr;
+}
+
+// A piece of a <Masonry> model: baked like any wall piece, but its texture coordinates are its
+// facade metres (from the facade's lower left), which the masonry atlas maps later, and its
+// triangles join the facade's masonry wall for that style.
+void BuildingGenerator::addMasonryPiece(const Asset &model, const Transform &modelToFacade, const StartShape &start,
+                                        const PrototypeKey &key, const MasonryStyle &style, Mesh &baked,
+                                        MadeBuilding &made) const {
+    auto first = uint32_t(baked.positions.size());
+    auto firstTriangle = uint32_t(baked.triangleCount());
+    baked.append(model.mesh, start.facadeToWorld * modelToFacade);
+    for (size_t v = 0; v < model.mesh.positions.size(); ++v) {
+        Vec3f onFacade = modelToFacade.applyPoint(model.mesh.positions[v]);
+        baked.uvs[first + v] = {onFacade.x, onFacade.y};
+    }
+    MaterialId material = key.materials[model.mesh.triangleMaterials.empty() ? 0 : model.mesh.triangleMaterials[0]];
+    for (uint32_t t = firstTriangle; t < baked.triangleCount(); ++t) baked.triangleMaterials[t] = material;
+    // One masonry wall a facade and style, its stones laid over the whole facade: pieces apart on
+    // it continue one bond.
+    auto facade = std::make_pair(start.edge, &style);
+    auto found = std::find(made.masonryFacades.begin(), made.masonryFacades.end(), facade);
+    if (found == made.masonryFacades.end()) {
+        MasonryWall wall;
+        wall.face.outline = {{0, 0}, {start.width, 0}, {start.width, start.height}, {0, start.height}};
+        wall.material = material;
+        made.masonry.push_back(std::move(wall));
+        made.masonryFacades.push_back(facade);
+        found = made.masonryFacades.end() - 1;
+    }
+    MasonryWall &wall = made.masonry[size_t(found - made.masonryFacades.begin())];
+    for (uint32_t t = firstTriangle; t < baked.triangleCount(); ++t) wall.triangles.push_back(t);
+}
+
+// Lays each masonry wall's stones and bakes the building's atlas, before the mesh is welded (the
+// atlas's coordinates keep the tiles' vertices apart); the stones are dropped once baked.
+void BuildingGenerator::bakeMasonry(const BuildingContext &building, Mesh &baked, MadeBuilding &made,
+                                    std::vector<std::string> &warnings) const {
+    if (made.masonry.empty()) return;
+    if (!masonryBaking_) {
+        if (!masonryUnbakedSaid_.exchange(true))
+            warnings.push_back(fmt::format("{}: no camera to bake masonry for; its walls keep their model's texture",
+                                           grammar_.rules().masonry.front().loc.toString()));
+        made.masonry.clear();
+        made.masonryFacades.clear();
+        return;
+    }
+    for (size_t w = 0; w < made.masonry.size(); ++w) {
+        uint32_t edge = made.masonryFacades[w].first;
+        const MasonryStyle *style = made.masonryFacades[w].second;
+        MasonryWall &wall = made.masonry[w];
+        // The rule's place in the file, stable where its address is not.
+        const std::vector<MasonryRule> &rules = grammar_.rules().masonry;
+        auto rule =
+            uint32_t(std::find_if(rules.begin(), rules.end(), [&](const MasonryRule &m) { return &m.style == style; }) -
+                     rules.begin());
+        wall.masonry = layStyleMasonry(*style, wall.face, seed_, hashValues({building.id, edge, rule}));
+    }
+    made.masonryMaps = bakeMasonryMaps(baked, made.masonry, Transform(), masonryBaking_->rays, *masonryBaking_->camera);
+    for (MasonryWall &wall : made.masonry) wall.masonry.stones = {};
 }
 
 // The roof closes the walls at the eaves: buildRoof's slopes pass over the wall tops there,
@@ -182,7 +264,9 @@ void BuildingGenerator::emitFacade(const BuildingContext &building, const StartS
         Transform modelToFacadeFrame = modelToFacade(model, terminal);
         PrototypeKey key = keyFor(terminal, building.materials);
         if (model.type == ModelType::Wall) {
-            addWallPiece(model, modelToFacadeFrame, start.facadeToWorld, alongPerimeter, terminal, key, baked);
+            if (const MasonryStyle *masonry = masonryOf(terminal.model, start.symbol))
+                addMasonryPiece(model, modelToFacadeFrame, start, key, *masonry, baked, made);
+            else addWallPiece(model, modelToFacadeFrame, start.facadeToWorld, alongPerimeter, terminal, key, baked);
             continue;
         }
         made.instances.push_back({start.facadeToWorld * modelToFacadeFrame, key});
@@ -203,6 +287,7 @@ BuildingGenerator::MadeBuilding BuildingGenerator::make(const BuildingSpec &spec
         else emitFacade(building, start, along, baked, made, warnings);
     }
     addRoof(spec, building, baked, made, warnings);
+    bakeMasonry(building, baked, made, warnings);
     made.stats.bakedTriangles = baked.triangleCount();
     made.mesh = weldVertices(baked);
     return made;
@@ -219,6 +304,9 @@ BuildingStats BuildingGenerator::add(MadeBuilding &&made, Mesh *merged) {
     }
     // A building has its mesh and record; a lone facade has no record, and a mesh only where
     // its rules baked walls.
+    if (made.masonryMaps)
+        addMasonryMaps(made.mesh, made.masonry, std::move(*made.masonryMaps), builder_, masonryBaking_->addImage,
+                       made.id);
     bool building = made.record.has_value();
     if (building) builder_.recordBuilding(std::move(*made.record));
     if (merged) merged->append(made.mesh, Transform());
@@ -239,6 +327,7 @@ BuildingStats BuildingGenerator::generateFacade(const FacadeSpec &spec, std::vec
     made.id = spec.id;
     Mesh &baked = startBakedMesh();
     emitFacade(building, start, 0, baked, made, warnings);
+    bakeMasonry(building, baked, made, warnings);
     made.stats.bakedTriangles = baked.triangleCount();
     made.mesh = weldVertices(baked);
     return add(std::move(made));

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <mutex>
 #include <optional>
@@ -20,7 +21,11 @@
 #include "city/material_palette.h"
 #include "city/start_shapes.h"
 #include "core/error.h"
+#include "facade/facade_building.h"
+#include "facade/masonry_atlas.h"
+#include "scene/camera.h"
 #include "scene/render_scene.h"
+#include "scene/textures.h"
 
 namespace veduta {
 
@@ -83,10 +88,20 @@ class BuildingGenerator {
         std::vector<Placement> instances;      // the models, in the order the rules placed them
         std::optional<BuildingRecord> record;  // none for a lone facade
         BuildingStats stats;
+        // The walls of the rules' <Masonry> models (their stones dropped once baked) and their atlas.
+        std::vector<MasonryWall> masonry;
+        std::vector<std::pair<uint32_t, const MasonryStyle *>> masonryFacades;  // each wall's facade edge, style
+        std::optional<MasonryAtlas> masonryMaps;
     };
 
+    // Throws InputError at a rule file's <Masonry> that names no wall model.
     BuildingGenerator(const Grammar &grammar, const AssetLibrary &assets, RenderSceneBuilder &builder, uint32_t seed,
                       const DerivationLimits &limits = {});
+
+    // What baking the rules' <Masonry> needs: the camera its texels are matched to, and where the
+    // maps go. Without it (a library caller), those walls keep their model's texture, and the
+    // first building says so.
+    void bakeMasonryWith(const Camera &camera, AddImage addImage);
 
     // Emits one building into the builder: add(make(building)). Warnings are appended as
     // "file:line:col: message"; problems in the rules or settings throw InputError.
@@ -127,6 +142,11 @@ class BuildingGenerator {
                       float alongPerimeter, const Terminal &terminal, const PrototypeKey &key, Mesh &baked) const;
     void addRoof(const BuildingSpec &building, const BuildingContext &context, Mesh &baked, MadeBuilding &made,
                  std::vector<std::string> &warnings) const;
+    const MasonryStyle *masonryOf(uint32_t model, const std::string &facade) const;
+    void addMasonryPiece(const Asset &model, const Transform &modelToFacade, const StartShape &start,
+                         const PrototypeKey &key, const MasonryStyle &style, Mesh &baked, MadeBuilding &made) const;
+    void bakeMasonry(const BuildingContext &building, Mesh &baked, MadeBuilding &made,
+                     std::vector<std::string> &warnings) const;
 
     const Grammar &grammar_;
     const AssetLibrary &assets_;
@@ -135,6 +155,14 @@ class BuildingGenerator {
     uint32_t seed_;
     DerivationLimits limits_;
     uint32_t plainWall_;  // Wall0, for walls the rules have no start rule for
+    std::unordered_map<uint32_t, std::vector<const MasonryRule *>> masonryModels_;  // the rules' <Masonry>
+    struct MasonryBaking {
+        const Camera *camera;
+        CameraRays rays;
+        AddImage addImage;
+    };
+    std::optional<MasonryBaking> masonryBaking_;
+    mutable std::atomic<bool> masonryUnbakedSaid_ = false;
     std::unordered_map<PrototypeKey, PrototypeId, PrototypeKeyHash> prototypes_;
     // What each texture of the rules stands for, found when first needed by any thread.
     mutable std::mutex textureMutex_;

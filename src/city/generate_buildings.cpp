@@ -46,7 +46,8 @@ ModelEffort effortOf(const BuildingGroupDesc &group) {
 }
 
 void generateGroup(const BuildingGroupDesc &group, uint32_t seed, const GroundHeight &ground,
-                   RenderSceneBuilder &builder, std::vector<std::string> &warnings) {
+                   RenderSceneBuilder &builder, std::vector<std::string> &warnings, const Camera *camera,
+                   const AddImage &masonryMaps) {
     if (!std::filesystem::is_regular_file(group.rules))
         throw InputError(group.rulesLoc, fmt::format("cannot read the rule file {}", group.rules.string()));
     BuildingRules loaded(group.rules);
@@ -54,6 +55,7 @@ void generateGroup(const BuildingGroupDesc &group, uint32_t seed, const GroundHe
     const Grammar &grammar = loaded.grammar;
     warnings.insert(warnings.end(), rules.warnings.begin(), rules.warnings.end());
     BuildingGenerator generator(grammar, AssetLibrary::builtIn(), builder, seed);
+    if (camera && masonryMaps) generator.bakeMasonryWith(*camera, masonryMaps);
     builder.addEffort(effortOf(group));
     for (const BuildingDesc &desc : group.buildings) {
         BuildingSpec spec;
@@ -84,10 +86,11 @@ void generateGroup(const BuildingGroupDesc &group, uint32_t seed, const GroundHe
 }  // namespace
 
 void generateBuildings(const BuildingGroupDesc &group, uint32_t seed, const GroundHeight &ground,
-                       RenderSceneBuilder &builder, std::vector<std::string> &out) {
+                       RenderSceneBuilder &builder, std::vector<std::string> &out, const Camera *camera,
+                       const AddImage &masonryMaps) {
     std::vector<std::string> warnings;
     try {
-        generateGroup(group, seed, ground, builder, warnings);
+        generateGroup(group, seed, ground, builder, warnings, camera, masonryMaps);
     } catch (const InputError &) {
         appendOnce(warnings, out);  // they may say why
         throw;

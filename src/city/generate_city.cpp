@@ -392,6 +392,8 @@ uint32_t buildCity(const CityData &data, uint32_t seed, ObjectId objectId, const
     warnings.insert(warnings.end(), data.warnings.begin(), data.warnings.end());
     if (landscape) warnIfHeightsIgnored(data, fileLoc, warnings);
     auto ruleFiles = readRuleFiles(fileLoc, data, seed, builder, warnings);
+    if (detail.camera && detail.masonryMaps)
+        for (auto &ruleFile : ruleFiles) ruleFile->generator.bakeMasonryWith(*detail.camera, detail.masonryMaps);
     StreetNetwork streets = streetNetworkOf(data);
     // The street surface while the lots are cut: neither reads what the other makes, and the
     // lots do not touch the builder. A street error comes first, as it did one after the other.
@@ -560,10 +562,11 @@ std::vector<Vec3f> groundJunctions(const CityData &data, const LandscapeGround *
 }
 
 uint32_t generateCity(const CityDesc &city, const SceneCity &read, uint32_t seed, const LandscapeGround *landscape,
-                      RenderSceneBuilder &builder, std::vector<std::string> &out, const Camera &camera) {
+                      RenderSceneBuilder &builder, std::vector<std::string> &out, const Camera &camera,
+                      const AddImage &masonryMaps) {
     return withWarnings(out, [&](std::vector<std::string> &warnings) {
-        uint32_t built = buildCity(read.data, seed, city.objectId, city.fileLoc, landscape, {camera, city.coarse},
-                                   builder, warnings);
+        uint32_t built = buildCity(read.data, seed, city.objectId, city.fileLoc, landscape,
+                                   {camera, city.coarse, masonryMaps}, builder, warnings);
         if (read.upperLevels.empty()) return built;
         return built +
             buildUpperLevels(read.upperLevels, groundJunctions(read.data, landscape), read.levels, seed, city.objectId,

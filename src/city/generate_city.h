@@ -17,6 +17,7 @@
 #include "geo/generate_landscape.h"
 #include "geodesy/georeference.h"
 #include "scene/render_scene.h"
+#include "scene/textures.h"
 
 namespace veduta {
 
@@ -55,12 +56,16 @@ SceneCity readCity(const CityDesc &city, const std::optional<Georeference> &geor
 // lasts the others keep their facades, past it the farthest lose them first, with
 // a warning. Distant buildings share one mesh. Without a camera every building keeps its
 // facades while the budget lasts.
+// The rule files' <Masonry> walls are baked for the camera into maps registered through
+// `masonryMaps`; without either, they keep their model's texture (a warning says so).
 struct BuildingDetail {
     std::optional<Camera> camera;
     CoarseRule coarse;
+    AddImage masonryMaps = {};
 };
 uint32_t generateCity(const CityDesc &city, const SceneCity &read, uint32_t seed, const LandscapeGround *landscape,
-                      RenderSceneBuilder &builder, std::vector<std::string> &warnings, const Camera &camera);
+                      RenderSceneBuilder &builder, std::vector<std::string> &warnings, const Camera &camera,
+                      const AddImage &masonryMaps = {});
 // The same for a city made in memory (as the benchmark does); errors about the city as a
 // whole (no rule file) have no place in a file.
 uint32_t generateCity(const CityData &data, uint32_t seed, ObjectId objectId, RenderSceneBuilder &builder,

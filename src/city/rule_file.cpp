@@ -4,12 +4,15 @@
 #include <charconv>
 #include <cmath>
 #include <deque>
+#include <memory>
 #include <optional>
+#include <sstream>
 
 #include <fmt/format.h>
 
 #include "city/building_settings.h"
 #include "core/check.h"
+#include "core/input_file.h"
 #include "io/xml_reader.h"
 
 namespace veduta {
@@ -183,6 +186,8 @@ class RuleSetReader {
                 readSettings(doc, child);
             } else if (e.name() == "Include") {
                 includes.push_back(e);
+            } else if (e.name() == "Masonry") {
+                readMasonry(e, baseDirectory);
             } else {
                 e.fail(fmt::format("unknown element <{}> in <Rulefile>", e.name()));
             }
@@ -218,6 +223,54 @@ class RuleSetReader {
         } catch (const InputError &error) {
             // A file that cannot be opened has no line of its own: point at the include.
             if (error.loc().line == 0) e.failAt("file", error.what());
+            throw;
+        }
+    }
+
+    // <Masonry model="…" facades="…" bricks|ashlar|cyclopean="file" unit="metres"/>, the file
+    // beside the rule file; unit (metres per unit of the description) for bricks and ashlar only.
+    void readMasonry(const XmlElement &e, const std::filesystem::path &baseDirectory) {
+        MasonryRule rule;
+        rule.loc = e.loc();
+        rule.model = e.string("model");
+        std::istringstream facades(e.string("facades", ""));
+        for (std::string facade; facades >> facade;) rule.facades.push_back(facade);
+        const char *kinds[] = {"bricks", "ashlar", "cyclopean"};
+        const char *given = nullptr;
+        for (const char *kind : kinds)
+            if (e.has(kind)) {
+                if (given) e.failAt(kind, fmt::format("<Masonry> gives both {}= and {}=", given, kind));
+                given = kind;
+            }
+        if (!given) e.fail("<Masonry> needs one of bricks=, ashlar= or cyclopean=");
+        std::filesystem::path file = e.string(given);
+        if (file.is_relative()) file = baseDirectory / file;
+        std::string text = readDescription(e, given, file);
+        MasonryStyle &style = rule.style;
+        style.loc = rule.loc;
+        if (std::string_view(given) == "cyclopean") {
+            style.kind = MasonryStyle::Kind::Cyclopean;
+            style.cyclopean = std::make_shared<const CyclopeanMasonry>(parseCyclopeanMasonry(text, file.string()));
+        } else {
+            style.metresPerUnit = e.number("unit", 1.0f, 1e-6f, 100.0f);
+            if (std::string_view(given) == "bricks") {
+                style.kind = MasonryStyle::Kind::Bricks;
+                style.bricks = std::make_shared<const BrickBond>(parseBrickBond(text, file.string()));
+            } else {
+                style.kind = MasonryStyle::Kind::Ashlar;
+                style.ashlar = std::make_shared<const AshlarMasonry>(parseAshlarMasonry(text, file.string()));
+            }
+        }
+        e.checkLeaf();
+        set_.masonry.push_back(std::move(rule));
+    }
+
+    // A description file's text; one that cannot be read is said at the attribute naming it.
+    static std::string readDescription(const XmlElement &e, const char *attribute, const std::filesystem::path &file) {
+        try {
+            return readInputFile(file);
+        } catch (const InputError &error) {
+            if (error.loc().line == 0) e.failAt(attribute, error.what());
             throw;
         }
     }

@@ -3,6 +3,7 @@
 // split or repeat. rule_file.h reads it from Bilke's XML; derivation.h applies it.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -12,6 +13,7 @@
 #include "core/error.h"
 #include "core/vecmath.h"
 #include "description/settings_map.h"
+#include "facade/building_style.h"
 
 namespace veduta {
 
@@ -73,8 +75,25 @@ struct Rule {
 };
 
 // All rules of a rule file and the files it includes.
+// <Masonry model="Wall0.wrl" facades="SideFacade SmallFacade" bricks="party.bricks" unit="0.01"/>
+// (or ashlar=, cyclopean=): the walls the rules build from that wall model on those facades (start
+// symbols; all when not given) get Finkenzeller's masonry (docs/facades.md), baked at the camera's
+// texels, instead of the model's own texture.
+struct MasonryRule {
+    std::string model;
+    std::vector<std::string> facades;  // empty: every facade
+    MasonryStyle style;
+    FileLoc loc;
+
+    bool covers(const std::string &facade) const {
+        return facades.empty() || std::find(facades.begin(), facades.end(), facade) != facades.end();
+    }
+};
+
 struct RuleSet {
     std::string name;  // Rulefile@name of the file that was read
+    // In file order (an including file's own first): for a wall, the first that covers it.
+    std::vector<MasonryRule> masonry;
     std::vector<Rule> rules;
     std::unordered_map<std::string, uint32_t> ruleIndex;  // predecessor → index into rules
     // The rule files' <BuildingSettings>, defaults for properties the rules use; the first

@@ -6,6 +6,17 @@
 
 namespace veduta {
 
+Masonry layStyleMasonry(const MasonryStyle &style, const WallFace &wall, uint32_t seed, uint32_t wallId) {
+    MasonryPlacement placement{style.metresPerUnit, seed, wallId};
+    switch (style.kind) {
+    case MasonryStyle::Kind::Bricks: return layBrickBond(*style.bricks, wall, placement);
+    case MasonryStyle::Kind::Ashlar: return layAshlar(*style.ashlar, wall, placement);
+    case MasonryStyle::Kind::Cyclopean: return cyclopeanMasonry(wall, *style.cyclopean, seed, wallId);
+    case MasonryStyle::Kind::Plain: break;
+    }
+    return {};
+}
+
 const char *stylePartName(StylePart part) {
     static constexpr std::array<const char *, kStylePartCount> kNames = {
         "wall", "casing", "cornice", "frame", "pane", "door", "roof", "roof-side", "parapet", "interior"};

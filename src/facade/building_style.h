@@ -48,6 +48,10 @@ struct MasonryStyle {
     FileLoc loc;
 };
 
+// The stones `style` lays on `wall` (bricks, ashlar or cyclopean; none for plain), each wall's own
+// by `wallId`, every random choice from `seed` and that id.
+Masonry layStyleMasonry(const MasonryStyle &style, const WallFace &wall, uint32_t seed, uint32_t wallId);
+
 // FensterTuer with its refinement, casing and frame (Defs 5.12–5.15).
 struct WindowStyle {
     OpeningKind kind = OpeningKind::Window;

@@ -500,18 +500,8 @@ class BuildingAssembly {
             wall.face.openings = build.holes;
             uint32_t wallId =
                 hashValues({buildingId_, uint32_t(key.module), uint32_t(key.edge), uint32_t(key.reversed)});
-            const MasonryStyle &style = *key.masonry;
-            MasonryPlacement placement{style.metresPerUnit, seed_, wallId};
-            switch (style.kind) {
-            case MasonryStyle::Kind::Bricks: wall.masonry = layBrickBond(*style.bricks, wall.face, placement); break;
-            case MasonryStyle::Kind::Ashlar: wall.masonry = layAshlar(*style.ashlar, wall.face, placement); break;
-            case MasonryStyle::Kind::Cyclopean:
-                wall.masonry = cyclopeanMasonry(wall.face, *style.cyclopean, seed_, wallId);
-                break;
-            case MasonryStyle::Kind::Plain:  // resolveStyle gives plastered walls no masonry
-                VEDUTA_CHECK(false, "a plastered wall among the masonry faces");
-                break;
-            }
+            // resolveStyle gives plastered walls no masonry: these all lay stones.
+            wall.masonry = layStyleMasonry(*key.masonry, wall.face, seed_, wallId);
             wall.material = build.material;
             wall.triangles = std::move(build.triangles);
             result_.masonry.push_back(std::move(wall));
