@@ -118,12 +118,12 @@ void BuildingGenerator::addWallPiece(const Asset &model, const Transform &modelT
         baked.triangleMaterials[t] = key.materials[model.mesh.triangleMaterials[t - firstTriangle]];
 }
 
-// The masonry of the first <Masonry> that covers the model on that facade, or none.
-const MasonryStyle *BuildingGenerator::masonryOf(uint32_t model, const std::string &facade) const {
+// The first <Masonry> that covers the model on that facade, or none.
+const MasonryRule *BuildingGenerator::masonryOf(uint32_t model, const std::string &facade) const {
     auto rules = masonryModels_.find(model);
     if (rules == masonryModels_.end()) return nullptr;
     for (const MasonryRule *rule : rules->second)
-        if (rule->covers(facade)) return &rule->style;
+        if (rule->covers(facade)) return rule;
     return nullptr;
 }
 
@@ -131,7 +131,7 @@ const MasonryStyle *BuildingGenerator::masonryOf(uint32_t model, const std::stri
 // facade metres (from the facade's lower left), which the masonry atlas maps later, and its
 // triangles join the facade's masonry wall for that style.
 void BuildingGenerator::addMasonryPiece(const Asset &model, const Transform &modelToFacade, const StartShape &start,
-                                        const PrototypeKey &key, const MasonryStyle &style, Mesh &baked,
+                                        const PrototypeKey &key, const MasonryRule &rule, Mesh &baked,
                                         MadeBuilding &made) const {
     auto first = uint32_t(baked.positions.size());
     auto firstTriangle = uint32_t(baked.triangleCount());
@@ -142,9 +142,9 @@ void BuildingGenerator::addMasonryPiece(const Asset &model, const Transform &mod
     }
     MaterialId material = key.materials[model.mesh.triangleMaterials.empty() ? 0 : model.mesh.triangleMaterials[0]];
     for (uint32_t t = firstTriangle; t < baked.triangleCount(); ++t) baked.triangleMaterials[t] = material;
-    // One masonry wall a facade and style, its stones laid over the whole facade: pieces apart on
+    // One masonry wall a facade and rule, its stones laid over the whole facade: pieces apart on
     // it continue one bond.
-    auto facade = std::make_pair(start.edge, &style);
+    auto facade = std::make_pair(start.edge, &rule);
     auto found = std::find(made.masonryFacades.begin(), made.masonryFacades.end(), facade);
     if (found == made.masonryFacades.end()) {
         MasonryWall wall;
@@ -172,15 +172,11 @@ void BuildingGenerator::bakeMasonry(const BuildingContext &building, Mesh &baked
         return;
     }
     for (size_t w = 0; w < made.masonry.size(); ++w) {
-        uint32_t edge = made.masonryFacades[w].first;
-        const MasonryStyle *style = made.masonryFacades[w].second;
+        auto [edge, rule] = made.masonryFacades[w];
         MasonryWall &wall = made.masonry[w];
         // The rule's place in the file, stable where its address is not.
-        const std::vector<MasonryRule> &rules = grammar_.rules().masonry;
-        auto rule =
-            uint32_t(std::find_if(rules.begin(), rules.end(), [&](const MasonryRule &m) { return &m.style == style; }) -
-                     rules.begin());
-        wall.masonry = layStyleMasonry(*style, wall.face, seed_, hashValues({building.id, edge, rule}));
+        auto place = uint32_t(rule - grammar_.rules().masonry.data());
+        wall.masonry = layStyleMasonry(rule->style, wall.face, seed_, hashValues({building.id, edge, place}));
     }
     made.masonryMaps = bakeMasonryMaps(baked, made.masonry, Transform(), masonryBaking_->rays, *masonryBaking_->camera);
     for (MasonryWall &wall : made.masonry) wall.masonry.stones = {};
@@ -264,7 +260,7 @@ void BuildingGenerator::emitFacade(const BuildingContext &building, const StartS
         Transform modelToFacadeFrame = modelToFacade(model, terminal);
         PrototypeKey key = keyFor(terminal, building.materials);
         if (model.type == ModelType::Wall) {
-            if (const MasonryStyle *masonry = masonryOf(terminal.model, start.symbol))
+            if (const MasonryRule *masonry = masonryOf(terminal.model, start.symbol))
                 addMasonryPiece(model, modelToFacadeFrame, start, key, *masonry, baked, made);
             else addWallPiece(model, modelToFacadeFrame, start.facadeToWorld, alongPerimeter, terminal, key, baked);
             continue;

@@ -90,7 +90,7 @@ class BuildingGenerator {
         BuildingStats stats;
         // The walls of the rules' <Masonry> models (their stones dropped once baked) and their atlas.
         std::vector<MasonryWall> masonry;
-        std::vector<std::pair<uint32_t, const MasonryStyle *>> masonryFacades;  // each wall's facade edge, style
+        std::vector<std::pair<uint32_t, const MasonryRule *>> masonryFacades;  // each wall's facade edge, rule
         std::optional<MasonryAtlas> masonryMaps;
     };
 
@@ -142,9 +142,9 @@ class BuildingGenerator {
                       float alongPerimeter, const Terminal &terminal, const PrototypeKey &key, Mesh &baked) const;
     void addRoof(const BuildingSpec &building, const BuildingContext &context, Mesh &baked, MadeBuilding &made,
                  std::vector<std::string> &warnings) const;
-    const MasonryStyle *masonryOf(uint32_t model, const std::string &facade) const;
+    const MasonryRule *masonryOf(uint32_t model, const std::string &facade) const;
     void addMasonryPiece(const Asset &model, const Transform &modelToFacade, const StartShape &start,
-                         const PrototypeKey &key, const MasonryStyle &style, Mesh &baked, MadeBuilding &made) const;
+                         const PrototypeKey &key, const MasonryRule &rule, Mesh &baked, MadeBuilding &made) const;
     void bakeMasonry(const BuildingContext &building, Mesh &baked, MadeBuilding &made,
                      std::vector<std::string> &warnings) const;
 

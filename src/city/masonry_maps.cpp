@@ -100,33 +100,20 @@ void tileWall(const Mesh &mesh, const MasonryWall &wall, size_t index, std::vect
         cell.triangles.insert(cell.triangles.end(), p.triangles.begin(), p.triangles.end());
         grow(cell.box, p.box);
     }
-    // Stones by the rows of tile height they reach, so that a tile looks at its own rows' stones.
-    std::map<int64_t, std::vector<uint32_t>> stoneRows;
-    std::vector<Box> stoneBoxes;
-    for (const Stone &stone : wall.masonry.stones) {
-        stoneBoxes.push_back(boxOf(stone.outline));
-        for (int64_t row = int64_t(std::floor(stoneBoxes.back().first.y / kMasonryTileSize));
-             row <= int64_t(std::floor(stoneBoxes.back().second.y / kMasonryTileSize)); ++row)
-            stoneRows[row].push_back(uint32_t(stoneBoxes.size() - 1));
-    }
+    std::vector<Box> stoneBoxes, openingBoxes;
+    for (const Stone &stone : wall.masonry.stones) stoneBoxes.push_back(boxOf(stone.outline));
+    for (const auto &opening : wall.face.openings) openingBoxes.push_back(boxOf(opening));
     for (auto &[key, cell] : cells) {
         MasonryTile tile;
         tile.wall = index;
         tile.masonry.mortarColour = wall.masonry.mortarColour;
         tile.masonry.mortarThickness = wall.masonry.mortarThickness;
-        std::vector<uint32_t> stones;
-        for (auto row = stoneRows.lower_bound(int64_t(std::floor(cell.box.first.y / kMasonryTileSize)));
-             row != stoneRows.end() && row->first <= int64_t(std::floor(cell.box.second.y / kMasonryTileSize)); ++row)
-            for (uint32_t s : row->second)
-                if (meet(stoneBoxes[s], cell.box)) stones.push_back(s);
-        // A stone reaching over two rows is listed in both: each once, in the wall's order.
-        std::sort(stones.begin(), stones.end());
-        stones.erase(std::unique(stones.begin(), stones.end()), stones.end());
-        for (uint32_t s : stones) tile.masonry.stones.push_back(wall.masonry.stones[s]);
         const Box &box = cell.box;
+        for (size_t s = 0; s < stoneBoxes.size(); ++s)
+            if (meet(stoneBoxes[s], box)) tile.masonry.stones.push_back(wall.masonry.stones[s]);
         tile.face.outline = {box.first, {box.second.x, box.first.y}, box.second, {box.first.x, box.second.y}};
-        for (const auto &opening : wall.face.openings)
-            if (meet(boxOf(opening), box)) tile.face.openings.push_back(opening);
+        for (size_t o = 0; o < openingBoxes.size(); ++o)
+            if (meet(openingBoxes[o], box)) tile.face.openings.push_back(wall.face.openings[o]);
         tile.triangles = std::move(cell.triangles);
         tiles.push_back(std::move(tile));
     }
