@@ -163,6 +163,7 @@ Vec2d meet(Vec2d a0, Vec2d dir0, Vec2d a1, Vec2d dir1) {
 Vec2d leftNormal(Vec2d d) { return Vec2d{-d.y, d.x} * (1 / length(d)); }
 
 // The deck's corners: each edge's line moved inwards by the parapet's width where it has one.
+// Empty when the width is so wide that an edge of the deck vanishes or turns round.
 std::vector<Vec2d> deckOutline(const std::vector<Vec2d> &outline, const std::vector<bool> &connected, double width) {
     size_t n = outline.size();
     auto shifted = [&](size_t i) {
@@ -174,12 +175,23 @@ std::vector<Vec2d> deckOutline(const std::vector<Vec2d> &outline, const std::vec
         size_t before = (i + n - 1) % n;
         deck.push_back(meet(shifted(before), direction(before), shifted(i), direction(i)));
     }
-    for (size_t i = 0; i < n; ++i) {
-        if (dot(deck[(i + 1) % n] - deck[i], direction(i)) <= 0) {
-            throw std::invalid_argument(fmt::format("a parapet {} m wide leaves no deck along edge {}", width, i));
-        }
-    }
+    for (size_t i = 0; i < n; ++i)
+        if (dot(deck[(i + 1) % n] - deck[i], direction(i)) <= 0) return {};
     return deck;
+}
+
+// The deck of the parapet's width, or of a narrower parapet where a module is too thin for it (a
+// sliver that a footprint's partition cut): 0.9 of the width at which the first edge of the deck
+// vanishes, found by bisection, since the deck only shrinks as the width grows.
+std::vector<Vec2d> deckThatFits(const std::vector<Vec2d> &outline, const std::vector<bool> &connected, double width) {
+    std::vector<Vec2d> deck = deckOutline(outline, connected, width);
+    if (!deck.empty()) return deck;
+    double fits = 0, vanishes = width;
+    for (int step = 0; step < 40; ++step) {
+        double mid = 0.5 * (fits + vanishes);
+        (deckOutline(outline, connected, mid).empty() ? vanishes : fits) = mid;
+    }
+    return deckOutline(outline, connected, 0.9 * fits);
 }
 
 void addParapet(ModuleRoof &roof, const std::vector<Vec2d> &deck, size_t i, double height) {
@@ -271,7 +283,9 @@ ModuleRoof flatRoof(const std::vector<Vec2d> &outline, double eavesZ, const std:
         throw std::invalid_argument(fmt::format("a parapet {} m high and {} m wide", parapet.height, parapet.width));
     }
     ModuleRoof roof{outline, connected, eavesZ, std::nullopt, {}};
-    std::vector<Vec2d> deck = deckOutline(outline, connected, parapet.width);
+    std::vector<Vec2d> deck = deckThatFits(outline, connected, parapet.width);
+    if (deck.empty())  // only where rounding defeats every width: a strictly convex outline has a deck
+        throw std::invalid_argument(fmt::format("a parapet of any width leaves no deck"));
     std::vector<Vec3d> deckCorners;
     for (Vec2d p : deck) deckCorners.push_back(lift(p, eavesZ));
     roof.faces.push_back({std::move(deckCorners), RoofFaceKind::Slope, kNoOutlineEdge});

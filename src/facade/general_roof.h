@@ -76,9 +76,10 @@ struct ParapetParameters {
 ModuleRoof generalRoof(const std::vector<Vec2d> &outline, double eavesZ, const std::vector<bool> &connected,
                        const GeneralRoofParameters &parameters);
 
-// The flat roof over `outline` with a parapet on every edge that is not connected. Throws
-// std::invalid_argument as generalRoof does, and for a parapet without height or width, or
-// one so wide that the deck vanishes.
+// The flat roof over `outline` with a parapet on every edge that is not connected; on a module too
+// thin for the parapet's width, a narrower one that leaves a deck (0.9 of the width at which the
+// deck would lose an edge). Throws std::invalid_argument as generalRoof does, and for a parapet
+// without height or width.
 ModuleRoof flatRoof(const std::vector<Vec2d> &outline, double eavesZ, const std::vector<bool> &connected,
                     const ParapetParameters &parapet);
 

@@ -246,7 +246,23 @@ TEST(GeneralRoof, RejectsWhatDefinition413RulesOut) {
     EXPECT_THROW(generalRoof(kUnitSquare, 0, kFree, {0, 2, 1.5, 0.5, 0, 1, 1}), std::invalid_argument);
     EXPECT_THROW(generalRoof(kUnitSquare, 0, kFree, {0, 2, 0.5, 0.5, 0, 1, 0}), std::invalid_argument);
     EXPECT_THROW(generalRoof({{0, 0}, {1, 0}, {2, 0}, {1, 1}}, 0, kFree, {}), std::invalid_argument);
-    EXPECT_THROW(flatRoof(kUnitSquare, 0, kFree, {1, 0.6}), std::invalid_argument);
+    EXPECT_THROW(flatRoof(kUnitSquare, 0, kFree, {0, 0.3}), std::invalid_argument);
+}
+
+// A module too thin for its parapet (a sliver a footprint's partition cut) gets a narrower one:
+// 0.9 of the width at which the deck would vanish, 0.5 on the unit square.
+TEST(GeneralRoof, AParapetTooWideForItsModuleNarrowsToLeaveADeck) {
+    ModuleRoof roof = flatRoof(kUnitSquare, 2, kFree, {1, 0.6});
+    const ModuleRoofFace &deck = roof.faces.front();
+    ASSERT_EQ(deck.corners.size(), 4u);
+    for (const Vec3d &c : deck.corners) {
+        EXPECT_NEAR(std::min(c.x, 1 - c.x), 0.45, 1e-9);
+        EXPECT_NEAR(std::min(c.y, 1 - c.y), 0.45, 1e-9);
+        EXPECT_EQ(c.z, 2);
+    }
+    // A parapet that fits keeps its width.
+    ModuleRoof fits = flatRoof(kUnitSquare, 2, kFree, {1, 0.3});
+    for (const Vec3d &c : fits.faces.front().corners) EXPECT_NEAR(std::min(c.x, 1 - c.x), 0.3, 1e-12);
 }
 
 }  // namespace
