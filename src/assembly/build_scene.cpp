@@ -115,20 +115,36 @@ class SceneAssembler {
                 generateBuildings(group, seedOf(group.seed), ground, builder_, warnings_, &camera, masonryMaps);
             });
         }
+        // Finkenzeller's buildings: the scene's own, and those that data's footprints stand as.
+        std::optional<ModularBuildings> modular;
+        if (needsModular()) modular.emplace(camera, builder_, masonryMaps);
         for (const CityGmlDesc &gml : d_.cityGml)
             within(gml.loc, "<citygml>", [&] {
-                generateCityGml(
-                    gml, d_.georeference, camera, builder_,
-                    [&](const std::filesystem::path &image) {
-                        return texture({image, "", gml.fileLoc});
-                    },
-                    warnings_);
+                if (gml.modular)
+                    addFromData(*modular, cityGmlModularBuildings(gml, d_.georeference, warnings_), d_.seed);
+                else
+                    generateCityGml(
+                        gml, d_.georeference, camera, builder_,
+                        [&](const std::filesystem::path &image) {
+                            return texture({image, "", gml.fileLoc});
+                        },
+                        warnings_);
+            });
+        if (slgLand && d_.landscape->modular)
+            within(d_.landscape->loc, "<landscape>", [&] {
+                for (const SlgDesc &slg : d_.slg)
+                    if (slg.level == SlgDesc::Level::Atkis)
+                        throw InputError(d_.landscape->modular->structureLoc,
+                                         fmt::format("the ALK footprints stand either as modular buildings or as "
+                                                     "the <slg level=\"atkis\"> at {}, not both",
+                                                     slg.loc.toString()));
+                addFromData(*modular, alkModularBuildings(*d_.landscape, slgLand->input.footprints, ground),
+                            seedOf(d_.landscape->seed));
             });
         if (!d_.modularBuildings.empty()) {
-            ModularBuildings modular(camera, builder_, masonryMaps);
             std::vector<uint32_t> seeds;
             for (const ModularBuildingDesc &b : d_.modularBuildings) seeds.push_back(seedOf(b.seed));
-            modular.add(
+            modular->add(
                 d_.modularBuildings, seeds,
                 [&](const FileLoc &loc, const std::function<void()> &add) { within(loc, "<modular_building>", add); },
                 warnings_);
@@ -142,7 +158,7 @@ class SceneAssembler {
         for (size_t i = 0; i < d_.cities.size(); ++i) {
             within(d_.cities[i].loc, elementName(d_.cities[i]), [&] {
                 generateCity(d_.cities[i], cities[i], seedOf(d_.cities[i].seed), landscape ? &*landscape : nullptr,
-                             builder_, warnings_, camera, masonryMaps);
+                             builder_, warnings_, camera, masonryMaps, modular ? &*modular : nullptr);
             });
         }
         if (textures_) builder_.setTextures(textures_);
@@ -150,6 +166,43 @@ class SceneAssembler {
     }
 
   private:
+    bool needsModular() const {
+        bool data = d_.landscape && d_.landscape->modular;
+        for (const CityDesc &city : d_.cities) data = data || city.modular;
+        for (const CityGmlDesc &gml : d_.cityGml) data = data || gml.modular;
+        return data || !d_.modularBuildings.empty();
+    }
+
+    // Buildings on footprints from data, within the element that reads them.
+    void addFromData(ModularBuildings &modular, const std::vector<ModularBuildingDesc> &descs, uint32_t seed) {
+        modular.add(
+            descs, std::vector<uint32_t>(descs.size(), seed),
+            [](const FileLoc &, const std::function<void()> &add) { add(); }, warnings_);
+    }
+
+    // The landscape's ALK footprints (Folie 011) in its modular look, each on the lowest ground
+    // under it (off the terrain at 0, with a warning) with the structure's storeys, edge 0 its
+    // longest.
+    std::vector<ModularBuildingDesc> alkModularBuildings(const LandscapeDesc &land,
+                                                         const std::vector<SlgFootprint> &footprints,
+                                                         const GroundHeight &ground) {
+        std::vector<ModularBuildingDesc> descs;
+        for (const SlgFootprint &f : footprints) {
+            std::vector<Vec2f> outline;
+            for (Vec2d p : f.outline) outline.push_back({float(p.x), float(p.y)});
+            std::optional<float> base = ground(outline);
+            uint32_t id = cityBuildingId(land.objectId, f.identity);
+            if (!base)
+                warnings_.push_back(fmt::format("{}: ALK building {} stands off the terrain; it is placed at height 0",
+                                                land.loc.toString(), id));
+            ModularBuildingDesc &b =
+                descs.emplace_back(footprintBuilding(*land.modular, land.loc, outline, std::nullopt, base.value_or(0)));
+            b.objectId = land.objectId;
+            b.buildingId = id;
+        }
+        return descs;
+    }
+
     static const char *elementName(const CityDesc &city) { return city.growth ? "<generate>" : "<city>"; }
 
     // Runs `make` for the element at `loc`: memory running out there says which element ran
@@ -318,6 +371,7 @@ void replaceEverySeed(SceneDescription &d, uint32_t seed) {
     for (BuildingGroupDesc &group : d.buildingGroups) group.seed.reset();
     for (CityDesc &city : d.cities) city.seed.reset();
     for (SlgDesc &slg : d.slg) slg.seed.reset();
+    for (ModularBuildingDesc &b : d.modularBuildings) b.seed.reset();
     if (d.landscape) d.landscape->seed.reset();
 }
 

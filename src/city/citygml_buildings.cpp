@@ -9,6 +9,9 @@
 #include <fmt/format.h>
 
 #include "city/citygml_measures.h"
+#include "city/citygml_twin.h"
+#include "city/modular_buildings.h"
+#include "core/check.h"
 #include "core/error.h"
 #include "core/hash.h"
 #include "geodesy/map_projection.h"
@@ -317,9 +320,12 @@ int cityGmlEpsg(const CityGmlDesc &desc, const CityGmlModel &model) {
     return desc.epsg;
 }
 
-uint32_t generateCityGml(const CityGmlDesc &desc, const std::optional<Georeference> &georeference, const Camera &camera,
-                         RenderSceneBuilder &builder, const AddTexture &addTexture,
-                         std::vector<std::string> &warnings) {
+namespace {
+
+// The element's file, its warnings appended, and the CRS of its coordinates. Throws InputError
+// when the scene has no georeference to place it.
+CityGmlModel readElementFile(const CityGmlDesc &desc, const std::optional<Georeference> &georeference,
+                             std::vector<std::string> &warnings, int &epsg) {
     CityGmlModel model;
     try {
         model = readCityGml(desc.file, {desc.minLod, desc.maxLod});
@@ -327,12 +333,35 @@ uint32_t generateCityGml(const CityGmlDesc &desc, const std::optional<Georeferen
         throw InputError(desc.fileLoc, e.what());
     }
     warnings.insert(warnings.end(), model.warnings.begin(), model.warnings.end());
-    int epsg = cityGmlEpsg(desc, model);
+    epsg = cityGmlEpsg(desc, model);
     if (!georeference)
         throw InputError(desc.loc,
                          fmt::format("a <citygml> needs the scene's <georeference>, such as "
                                      "<georeference crs=\"EPSG:{}\" origin=\"{}\"/>",
                                      epsg, envelopeCentre(model)));
+    return model;
+}
+
+// What the element keeps of the file's buildings, and what it draws nothing of, said.
+void warnOfKept(const CityGmlDesc &desc, const CityGmlModel &model, size_t kept, std::vector<std::string> &warnings) {
+    if (desc.bbox)
+        warnings.push_back(fmt::format("{}: the bbox keeps {} of the file's {} buildings", desc.bboxLoc.toString(),
+                                       kept, model.buildings.size()));
+    if (model.buildings.empty())
+        warnings.push_back(fmt::format(
+            "{}: {} draws nothing: it holds {} building(s) with no polygon of LoD {} to {} and {} other city "
+            "object(s), which veduta does not draw",
+            desc.loc.toString(), desc.file.string(), model.buildingsWithoutGeometry, desc.minLod, desc.maxLod,
+            model.otherObjects));
+}
+
+}  // namespace
+
+uint32_t generateCityGml(const CityGmlDesc &desc, const std::optional<Georeference> &georeference, const Camera &camera,
+                         RenderSceneBuilder &builder, const AddTexture &addTexture,
+                         std::vector<std::string> &warnings) {
+    int epsg = 0;
+    CityGmlModel model = readElementFile(desc, georeference, warnings, epsg);
     MapProjection projection(crsByEpsg(epsg), *georeference);
     AppearanceMaterials materials(builder, addTexture);
     std::vector<PlacedBuilding> placed;
@@ -343,16 +372,35 @@ uint32_t generateCityGml(const CityGmlDesc &desc, const std::optional<Georeferen
     chooseDetail(placed, desc, camera, projection, materials, builder, warnings);
     addBuildings(placed, desc, projection, builder);
     materials.warnUnread(warnings);
-    if (desc.bbox)
-        warnings.push_back(fmt::format("{}: the bbox keeps {} of the file's {} buildings", desc.bboxLoc.toString(),
-                                       placed.size(), model.buildings.size()));
-    if (model.buildings.empty())
-        warnings.push_back(fmt::format(
-            "{}: {} draws nothing: it holds {} building(s) with no polygon of LoD {} to {} and {} other city "
-            "object(s), which veduta does not draw",
-            desc.loc.toString(), desc.file.string(), model.buildingsWithoutGeometry, desc.minLod, desc.maxLod,
-            model.otherObjects));
+    warnOfKept(desc, model, placed.size(), warnings);
     return uint32_t(placed.size());
+}
+
+std::vector<ModularBuildingDesc> cityGmlModularBuildings(const CityGmlDesc &desc,
+                                                         const std::optional<Georeference> &georeference,
+                                                         std::vector<std::string> &warnings) {
+    VEDUTA_CHECK(desc.modular, "a <citygml> with a modular look");
+    int epsg = 0;
+    CityGmlModel model = readElementFile(desc, georeference, warnings, epsg);
+    MapProjection projection(crsByEpsg(epsg), *georeference);
+    std::vector<ModularBuildingDesc> descs;
+    size_t kept = 0;
+    for (const CityGmlBuilding &building : model.buildings) {
+        if (desc.bbox && !centreWithin(building, projection, *desc.bbox, desc.loc)) continue;
+        ++kept;
+        std::optional<TwinBuilding> twin = deriveTwin(building, projection, warnings);
+        if (!twin) continue;
+        // Named as the OpenStreetMap import names a way: the file, then the building.
+        FileLoc where{fmt::format("{}: building {}", desc.file.string(), twin->gmlId)};
+        ModularBuildingDesc &b = descs.emplace_back(
+            footprintBuilding(*desc.modular, where, std::move(twin->footprint), std::nullopt, float(twin->base)));
+        b.objectId = desc.objectId;
+        b.buildingId = twin->id;
+        if (building.storeysAboveGround) b.storeys = size_t(std::max(1, *building.storeysAboveGround));
+        else b.eaves = twin->wallHeight;
+    }
+    warnOfKept(desc, model, kept, warnings);
+    return descs;
 }
 
 }  // namespace veduta

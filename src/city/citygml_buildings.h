@@ -43,4 +43,12 @@ int cityGmlEpsg(const CityGmlDesc &desc, const CityGmlModel &model);
 uint32_t generateCityGml(const CityGmlDesc &desc, const std::optional<Georeference> &georeference, const Camera &camera,
                          RenderSceneBuilder &builder, const AddTexture &addTexture, std::vector<std::string> &warnings);
 
+// The same element with a modular look (ModularLookDesc): each building the bbox keeps stands on
+// its procedural twin's footprint (deriveTwin; a building without one is said and left out) at
+// its ground, edge 0 the footprint's longest, with the storeys the file counts
+// (storeysAboveGround), else those nearest its eaves. Throws InputError, as generateCityGml.
+std::vector<ModularBuildingDesc> cityGmlModularBuildings(const CityGmlDesc &desc,
+                                                         const std::optional<Georeference> &georeference,
+                                                         std::vector<std::string> &warnings);
+
 }  // namespace veduta

@@ -26,6 +26,7 @@
 #include "city/street_geometry.h"
 #include "city/streets_on_terrain.h"
 #include "city/warning_list.h"
+#include "core/check.h"
 #include "core/hash.h"
 #include "core/random_streams.h"
 #include "geodesy/map_projection.h"
@@ -44,9 +45,9 @@ struct RuleFileBuilder {
 };
 
 std::vector<std::unique_ptr<RuleFileBuilder>> readRuleFiles(const FileLoc &fileLoc, const CityData &data, uint32_t seed,
-                                                            RenderSceneBuilder &builder,
+                                                            bool modularLook, RenderSceneBuilder &builder,
                                                             std::vector<std::string> &warnings) {
-    if (data.ruleFiles.empty())
+    if (data.ruleFiles.empty() && !modularLook)
         throw InputError(fileLoc, "the city names no <Rulefile> to build its lots with, and its <city> no rules");
     std::vector<std::unique_ptr<RuleFileBuilder>> builders;
     for (const std::filesystem::path &file : data.ruleFiles) {
@@ -386,12 +387,54 @@ void buildAll(std::vector<PlannedBuilding> &planned, const LandscapeGround *land
     if (levels.box.buildings > 0) builder.countLod("city/box", levels.box);
 }
 
+// The edge of a lot that faces the street: its longest street edge; none when no edge does.
+std::optional<size_t> frontEdge(const Footprint &footprint) {
+    std::optional<size_t> front;
+    for (size_t e = 0; e < footprint.streetEdges.size(); ++e)
+        if (footprint.streetEdges[e] && (!front || footprint.edgeLength(e) > footprint.edgeLength(*front))) front = e;
+    return front;
+}
+
+// The lots as modular buildings (BuildingDetail's look).
+uint32_t buildModular(const CityData &data, std::vector<std::vector<IdentifiedLot>> &lots, uint32_t seed,
+                      ObjectId objectId, const LandscapeGround *landscape, const BuildingDetail &detail,
+                      std::vector<std::string> &warnings) {
+    std::vector<ModularBuildingDesc> descs;
+    std::unordered_map<uint32_t, FileLoc> lotOfId;
+    for (size_t b = 0; b < data.blocks.size(); ++b) {
+        const CityBlock &block = data.blocks[b];
+        for (size_t l = 0; l < lots[b].size(); ++l) {
+            const CityLot *given = block.lots.empty() ? nullptr : &block.lots[l];
+            const FileLoc &loc = given ? given->loc : block.loc;
+            Footprint &footprint = lots[b][l].footprint;
+            uint32_t id = cityBuildingId(objectId, lots[b][l].identity);
+            warnOfSharedId(lotOfId, id, loc, warnings);
+            if (landscape) seatOnGround(footprint, landscape->ground, loc, id, warnings);
+            std::optional<size_t> front = frontEdge(footprint);
+            ModularBuildingDesc &desc = descs.emplace_back(
+                footprintBuilding(*detail.look, loc, std::move(footprint.points), front, footprint.base));
+            desc.objectId = objectId;
+            desc.buildingId = id;
+            // The data's own height, not a rule file's default.
+            const SettingsMap noRuleFile;
+            std::vector<const SettingsMap *> own{&block.settings, &data.settings};
+            if (given) own.insert(own.begin(), &given->settings);
+            if (SettingsStack(own).find("BuildingHeight"))
+                desc.eaves = randomiseHeights(settingsFor(data, block, given, noRuleFile), seed, id).building;
+        }
+    }
+    std::vector<uint32_t> seeds(descs.size(), seed);
+    detail.modular->add(
+        descs, seeds, [](const FileLoc &, const std::function<void()> &add) { add(); }, warnings);
+    return uint32_t(descs.size());
+}
+
 uint32_t buildCity(const CityData &data, uint32_t seed, ObjectId objectId, const FileLoc &fileLoc,
                    const LandscapeGround *landscape, const BuildingDetail &detail, RenderSceneBuilder &builder,
                    std::vector<std::string> &warnings) {
     warnings.insert(warnings.end(), data.warnings.begin(), data.warnings.end());
     if (landscape) warnIfHeightsIgnored(data, fileLoc, warnings);
-    auto ruleFiles = readRuleFiles(fileLoc, data, seed, builder, warnings);
+    auto ruleFiles = readRuleFiles(fileLoc, data, seed, detail.look != nullptr, builder, warnings);
     if (detail.camera && detail.masonryMaps)
         for (auto &ruleFile : ruleFiles) ruleFile->generator.bakeMasonryWith(*detail.camera, detail.masonryMaps);
     StreetNetwork streets = streetNetworkOf(data);
@@ -403,13 +446,15 @@ uint32_t buildCity(const CityData &data, uint32_t seed, ObjectId objectId, const
     streetWork.run([&] { addStreets(streets, landscape, objectId, builder); });
     size_t slivers = 0;
     try {
-        lots = lotsOfBlocks(data, streets, ruleFiles.front()->loaded.rules.settings, seed, slivers);
+        lots = lotsOfBlocks(data, streets, ruleFiles.empty() ? SettingsMap() : ruleFiles.front()->loaded.rules.settings,
+                            seed, slivers);
     } catch (...) {
         lotError = std::current_exception();
     }
     streetWork.wait();
     if (lotError) std::rethrow_exception(lotError);
     warnOfSlivers(slivers, fileLoc, warnings);
+    if (detail.look) return buildModular(data, lots, seed, objectId, landscape, detail, warnings);
     std::vector<PlannedBuilding> planned = planBuildings(data, lots, seed, objectId, landscape, ruleFiles);
     chooseDetail(planned, seed, detail, builder, fileLoc, warnings);
     buildAll(planned, landscape, builder, warnings);
@@ -563,10 +608,12 @@ std::vector<Vec3f> groundJunctions(const CityData &data, const LandscapeGround *
 
 uint32_t generateCity(const CityDesc &city, const SceneCity &read, uint32_t seed, const LandscapeGround *landscape,
                       RenderSceneBuilder &builder, std::vector<std::string> &out, const Camera &camera,
-                      const AddImage &masonryMaps) {
+                      const AddImage &masonryMaps, ModularBuildings *modular) {
+    VEDUTA_CHECK(!city.modular || modular, "a city with a modular look has its modular buildings");
     return withWarnings(out, [&](std::vector<std::string> &warnings) {
+        const ModularLookDesc *look = city.modular ? &*city.modular : nullptr;
         uint32_t built = buildCity(read.data, seed, city.objectId, city.fileLoc, landscape,
-                                   {camera, city.coarse, masonryMaps}, builder, warnings);
+                                   {camera, city.coarse, masonryMaps, look, modular}, builder, warnings);
         if (read.upperLevels.empty()) return built;
         return built +
             buildUpperLevels(read.upperLevels, groundJunctions(read.data, landscape), read.levels, seed, city.objectId,

@@ -11,6 +11,7 @@
 #include "city/city_data.h"
 #include "city/footprint.h"
 #include "city/futuristic_city.h"
+#include "city/modular_buildings.h"
 #include "city/street_geometry.h"
 #include "city/street_index.h"
 #include "description/scene_description.h"
@@ -58,14 +59,21 @@ SceneCity readCity(const CityDesc &city, const std::optional<Georeference> &geor
 // facades while the budget lasts.
 // The rule files' <Masonry> walls are baked for the camera into maps registered through
 // `masonryMaps`; without either, they keep their model's texture (a warning says so).
+//
+// A city with a modular look (ModularLookDesc) builds each lot as one of `modular`'s buildings
+// instead (footprintBuilding): edge 0 its longest street edge, its storeys nearest the data's own
+// BuildingHeight (the lot's, block's or city's, not the rule file's), else as the structure has
+// them. Its rule files, if any, then only say how blocks are cut into lots.
 struct BuildingDetail {
     std::optional<Camera> camera;
     CoarseRule coarse;
     AddImage masonryMaps = {};
+    const ModularLookDesc *look = nullptr;
+    ModularBuildings *modular = nullptr;
 };
 uint32_t generateCity(const CityDesc &city, const SceneCity &read, uint32_t seed, const LandscapeGround *landscape,
                       RenderSceneBuilder &builder, std::vector<std::string> &warnings, const Camera &camera,
-                      const AddImage &masonryMaps = {});
+                      const AddImage &masonryMaps = {}, ModularBuildings *modular = nullptr);
 // The same for a city made in memory (as the benchmark does); errors about the city as a
 // whole (no rule file) have no place in a file.
 uint32_t generateCity(const CityData &data, uint32_t seed, ObjectId objectId, RenderSceneBuilder &builder,

@@ -33,17 +33,37 @@ BuildingStyle readStyle(const std::filesystem::path &file) {
     });
 }
 
-// The structure on the element's footprint, if it gives one.
+// With a footprint, the structure's one module is the prototype of its pieces.
+void checkPrototype(const BuildingStructure &structure, const ModularBuildingDesc &desc) {
+    if (desc.footprint.empty() || structure.modules.size() == 1) return;
+    throw InputError(desc.fromData ? desc.structureLoc : desc.footprintLoc,
+                     fmt::format("with a footprint, the structure's one module is the "
+                                 "prototype of its pieces; {} has {} modules",
+                                 desc.structure.string(), structure.modules.size()));
+}
+
+// The structure on the element's footprint, if it gives one, with the storeys the data asks for.
 BuildingStructure placedStructure(const BuildingStructure &structure, const ModularBuildingDesc &desc) {
     if (desc.footprint.empty()) return structure;
-    if (structure.modules.size() != 1)
-        throw InputError(desc.footprintLoc,
-                         fmt::format("with a footprint, the structure's one module is the "
-                                     "prototype of its pieces; {} has {} modules",
-                                     desc.structure.string(), structure.modules.size()));
     std::vector<Vec2d> footprint;
     for (Vec2f p : desc.footprint) footprint.push_back({p.x, p.y});
-    return structureOnFootprint(structure.modules[0], footprint, desc.footprintLoc);
+    BuildingStructure placed = structureOnFootprint(structure.modules[0], footprint, desc.footprintLoc);
+    const std::vector<double> &written = structure.modules[0].storeyHeights;
+    if (desc.storeys) refitStoreys(placed, std::clamp<size_t>(*desc.storeys, 1, kStructureStoreyLimit));
+    else if (desc.eaves) refitStoreys(placed, storeysNearest(written, *desc.eaves));
+    return placed;
+}
+
+// The edge of a footprint from data that faces the street when the data does not say: the longest.
+size_t longestEdge(const std::vector<Vec2f> &points) {
+    auto edgeLength = [&](size_t i) {
+        Vec2f d = points[(i + 1) % points.size()] - points[i];
+        return std::hypot(d.x, d.y);
+    };
+    size_t longest = 0;
+    for (size_t i = 1; i < points.size(); ++i)
+        if (edgeLength(i) > edgeLength(longest)) longest = i;
+    return longest;
 }
 
 // Every material a style names is the scene's, said at the style that names it.
@@ -82,10 +102,45 @@ struct ModularBuildings::LoadedStyle {
 
 // One building made, before anything of it is in the scene.
 struct ModularBuildings::Made {
+    std::string leftOut;  // a footprint from data that no partition fits: why
     BuildingStructure structure;
     FacadeBuilding building;
     std::optional<MasonryAtlas> atlas;
 };
+
+// Footprints from data left out, counted: a district's worth of them is one warning, not thousands.
+struct ModularBuildings::LeftOut {
+    size_t count = 0;
+    std::string first;
+
+    void add(const std::string &why) {
+        if (count++ == 0) first = why;
+    }
+    void warn(std::vector<std::string> &warnings) const {
+        if (count == 0) return;
+        warnings.push_back(
+            fmt::format("{} footprint{} from data left out: no partition into modules fits {} "
+                        "(the first: {})",
+                        count, count == 1 ? "" : "s", count == 1 ? "it" : "them", first));
+    }
+};
+
+ModularBuildingDesc footprintBuilding(const ModularLookDesc &look, const FileLoc &loc, std::vector<Vec2f> footprint,
+                                      std::optional<size_t> front, float base) {
+    ModularBuildingDesc desc;
+    desc.loc = desc.footprintLoc = loc;
+    desc.structure = look.structure;
+    desc.style = look.style;
+    desc.structureLoc = look.structureLoc;
+    desc.styleLoc = look.styleLoc;
+    desc.fromData = true;
+    std::rotate(footprint.begin(), footprint.begin() + long(front.value_or(longestEdge(footprint))), footprint.end());
+    const Vec2f corner = footprint.front();
+    for (Vec2f &p : footprint) p = p - corner;
+    desc.footprint = std::move(footprint);
+    desc.transform = Transform::translate({corner.x, corner.y, base});
+    return desc;
+}
 
 ModularBuildings::ModularBuildings(const Camera &camera, RenderSceneBuilder &builder, AddImage addImage) :
     camera_(camera), rays_(camera), builder_(builder), addImage_(std::move(addImage)) {}
@@ -95,6 +150,7 @@ ModularBuildings::~ModularBuildings() = default;
 void ModularBuildings::add(const std::vector<ModularBuildingDesc> &descs, const std::vector<uint32_t> &seeds,
                            const ElementGuard &guard, std::vector<std::string> &warnings) {
     VEDUTA_CHECK(descs.size() == seeds.size(), "a seed for every modular building");
+    LeftOut leftOut;
     for (size_t first = 0; first < descs.size(); first += kModularBatch) {
         const size_t end = std::min(descs.size(), first + kModularBatch);
         std::vector<std::optional<Made>> made(end - first);
@@ -116,15 +172,24 @@ void ModularBuildings::add(const std::vector<ModularBuildingDesc> &descs, const 
         });
         for (size_t i = first; i < end; ++i) {
             if (errors[i - first]) guard(descs[i].loc, [&] { std::rethrow_exception(errors[i - first]); });
-            guard(descs[i].loc, [&] { place(descs[i], std::move(*made[i - first]), warnings); });
+            if (!made[i - first]->leftOut.empty()) leftOut.add(made[i - first]->leftOut);
+            else guard(descs[i].loc, [&] { place(descs[i], std::move(*made[i - first]), warnings); });
         }
     }
+    leftOut.warn(warnings);
 }
 
 ModularBuildings::Made ModularBuildings::make(const ModularBuildingDesc &desc, uint32_t seed,
                                               const BuildingStructure &structure, LoadedStyle &style) const {
     Made made;
-    made.structure = placedStructure(structure, desc);
+    checkPrototype(structure, desc);
+    try {
+        made.structure = placedStructure(structure, desc);
+    } catch (const InputError &e) {
+        if (!desc.fromData) throw;
+        made.leftOut = e.what();
+        return made;
+    }
     MaterialByName material = [&](const std::string &name, const FileLoc &) {
         return name.empty() ? MaterialId(0) : builder_.findMaterial(name);
     };

@@ -9,6 +9,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -21,6 +22,14 @@
 #include "scene/textures.h"
 
 namespace veduta {
+
+// A building on a footprint from data (a city's lot, a CityGML building's, an ALK footprint) in
+// `look`, at the data's `loc`: edge 0 of its structure is the footprint's edge `front` (the
+// street side), or its longest edge when the data does not say; it stands at height `base`,
+// translated to its first corner. The caller sets its ids, and the storeys or eaves height the
+// data gives.
+ModularBuildingDesc footprintBuilding(const ModularLookDesc &look, const FileLoc &loc, std::vector<Vec2f> footprint,
+                                      std::optional<size_t> front, float base);
 
 // The modular buildings of one scene. What they share is made once: each structure and style file
 // read (a style's materials checked as it is read), each style's window assemblies built, each
@@ -47,6 +56,7 @@ class ModularBuildings {
   private:
     struct LoadedStyle;
     struct Made;
+    struct LeftOut;
 
     // Buildings made at once before they are placed: what bounds the memory their atlases hold.
     static constexpr size_t kModularBatch = 64;

@@ -175,6 +175,15 @@ struct CoarseRule {
     }
 };
 
+// structure="…" style="…" on a <city>, <citygml> or <landscape>: its buildings' footprints stand as
+// Finkenzeller's modular buildings (docs/facades.md, "Footprints from data"): each split into
+// modules that take the structure's one module's storeys, refitted to the storeys or height the
+// data gives, in the style.
+struct ModularLookDesc {
+    std::filesystem::path structure, style;  // resolved against the scene's folder
+    FileLoc structureLoc, styleLoc;
+};
+
 struct CityDesc {
     FileLoc loc;
     std::filesystem::path file;  // resolved against the scene's folder; .osm: OpenStreetMap (docs/osm.md)
@@ -189,6 +198,7 @@ struct CityDesc {
     FileLoc crsLoc;
     std::optional<uint32_t> seed;  // with each lot's identity, every random choice; unset: the scene's
     CoarseRule coarse;
+    std::optional<ModularLookDesc> modular;  // its lots' buildings; the rule files then only cut lots
     uint32_t objectId = 0;
 };
 
@@ -208,6 +218,7 @@ struct CityGmlDesc {
     std::optional<std::array<double, 4>> bbox;
     FileLoc bboxLoc;
     CoarseRule coarse;
+    std::optional<ModularLookDesc> modular;  // its buildings rebuilt on their footprints (citygml_twin.h)
     uint32_t objectId = 0;
 };
 
@@ -225,6 +236,12 @@ struct ModularBuildingDesc {
     std::optional<uint32_t> seed;
     uint32_t objectId = 0;
     uint32_t buildingId = 0;  // its random choices (the masonry) and its id pass
+    // A footprint from data (ModularLookDesc): the storeys the data counts, else the eaves height
+    // it gives, refit the structure's (refitStoreys); a footprint that no partition splits into
+    // modules is left out with a warning rather than an error.
+    bool fromData = false;
+    std::optional<size_t> storeys;
+    std::optional<double> eaves;
 };
 
 // An <slg> element: a block or a district planned with Schrader's Spatial Landmark Graph from
@@ -274,8 +291,9 @@ struct LandscapeDesc {
     int fillDistance = kDefaultFillDistance;
     float simplify = 0;  // the largest height error of a simplified mesh; 0: full resolution
     bool trees = true;
-    uint32_t treeBudget = 500000;  // more trees than this is an error
-    std::optional<uint32_t> seed;  // with each object's identity, every random choice; unset: the scene's
+    uint32_t treeBudget = 500000;            // more trees than this is an error
+    std::optional<uint32_t> seed;            // with each object's identity, every random choice; unset: the scene's
+    std::optional<ModularLookDesc> modular;  // its building footprints (ALK Folie 011) raised as buildings
     uint32_t objectId = 0;
 };
 

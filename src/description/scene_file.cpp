@@ -423,6 +423,17 @@ class SceneFileReader {
         return file.is_absolute() ? file : baseDirectory_ / file;
     }
 
+    // structure= and style=, both or neither.
+    std::optional<ModularLookDesc> modularLook(const XmlElement &e) const {
+        if (!e.has("structure") && !e.has("style")) return std::nullopt;
+        for (const char *attribute : {"structure", "style"})
+            if (!e.has(attribute))
+                e.failAt(e.has("structure") ? "structure" : "style",
+                         fmt::format("a modular look takes both structure and style; {} is missing", attribute));
+        return ModularLookDesc{pathAttribute(e, "structure"), pathAttribute(e, "style"), e.attributeLoc("structure"),
+                               e.attributeLoc("style")};
+    }
+
     void readCity(const XmlElement &e) {
         CityDesc city;
         city.loc = e.loc();
@@ -435,6 +446,7 @@ class SceneFileReader {
         readFileCrs(e, city.epsg, city.crsLoc);
         city.seed = seedOverride(e);
         city.coarse = coarseRule(e);
+        city.modular = modularLook(e);
         readObjectId(e, city.loc);
         e.checkLeaf();
         scene_.cities.push_back(std::move(city));
@@ -482,6 +494,7 @@ class SceneFileReader {
         }
         city.seed = seedOverride(e);
         city.coarse = coarseRule(e);
+        city.modular = modularLook(e);
         readObjectId(e, city.loc);
         e.checkLeaf();
         scene_.cities.push_back(std::move(city));
@@ -502,6 +515,7 @@ class SceneFileReader {
             gml.bboxLoc = e.attributeLoc("bbox");
         }
         gml.coarse = coarseRule(e);
+        gml.modular = modularLook(e);
         readObjectId(e, gml.loc);
         e.checkLeaf();
         scene_.cityGml.push_back(std::move(gml));
@@ -588,6 +602,7 @@ class SceneFileReader {
         land.trees = e.boolean("trees", true);
         land.treeBudget = e.unsignedInteger("tree_budget", land.treeBudget);
         land.seed = seedOverride(e);
+        land.modular = modularLook(e);
         readObjectId(e, land.loc);
         e.checkAllRead();
         for (const XmlElement &child : e.children()) {

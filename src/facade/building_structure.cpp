@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "core/check.h"
 #include "core/hash.h"
 #include "core/polygon_area.h"
 #include "facade/module_partition.h"
@@ -28,7 +29,23 @@ size_t BuildingStructure::storeyCount() const {
     return most;
 }
 
+int BuildingStructure::storeyRole(int storey) const {
+    return storeyRoles.empty() ? storey : storeyRoles[size_t(storey)];
+}
+
+size_t BuildingStructure::boundStoreyCount() const { return storeyRoles.empty() ? storeyCount() : writtenStoreys; }
+
 namespace {
+
+// Which written storey each of `count` refitted ones repeats (refitStoreys).
+std::vector<int> refittedRoles(size_t written, size_t count) {
+    std::vector<int> roles{0};
+    if (count == 1) return roles;
+    const int top = int(written) - 1;
+    for (size_t s = 1; s + 1 < count; ++s) roles.push_back(written <= 2 ? top : std::min(int(s), top - 1));
+    roles.push_back(top);
+    return roles;
+}
 
 void checkModule(const ModuleStructure &m) {
     const FileLoc &loc = m.module.loc;
@@ -111,6 +128,34 @@ void addRoof(StructureHasher &h, const RoofStructure &r) {
 
 }  // namespace
 
+void refitStoreys(BuildingStructure &structure, size_t count) {
+    VEDUTA_CHECK(count >= 1 && count <= kStructureStoreyLimit, "a storey count within the limits");
+    const std::vector<double> written = structure.modules.front().storeyHeights;
+    std::vector<int> roles = refittedRoles(written.size(), count);
+    for (ModuleStructure &m : structure.modules) {
+        VEDUTA_CHECK(m.storeyHeights == written, "every module with the same storeys");
+        m.storeyHeights.clear();
+        for (int r : roles) m.storeyHeights.push_back(written[size_t(r)]);
+    }
+    structure.writtenStoreys = written.size();
+    structure.storeyRoles = std::move(roles);
+}
+
+size_t storeysNearest(const std::vector<double> &written, double eaves) {
+    size_t best = 1;
+    double bestMiss = INFINITY;
+    for (size_t count = 1; count <= kStructureStoreyLimit; ++count) {
+        double height = 0;
+        for (int r : refittedRoles(written.size(), count)) height += written[size_t(r)];
+        if (std::abs(height - eaves) < bestMiss) {
+            best = count;
+            bestMiss = std::abs(height - eaves);
+        }
+        if (height > eaves) break;
+    }
+    return best;
+}
+
 uint64_t structureHash(const BuildingStructure &structure) {
     StructureHasher h;
     h.add(structure.modules.size());
@@ -130,6 +175,8 @@ uint64_t structureHash(const BuildingStructure &structure) {
             h.add(s.slot);
         }
     }
+    h.add(structure.storeyRoles.size());
+    for (int r : structure.storeyRoles) h.add(r);
     h.add(structure.docks.size());
     for (const ModuleDock &d : structure.docks) {
         h.add(d.docked);

@@ -70,10 +70,17 @@ inline constexpr double kStoreyHeightLimit = 100;  // metres; the least is 0.5 m
 struct BuildingStructure {
     std::vector<ModuleStructure> modules;
     std::vector<ModuleDock> docks;
+    // Storeys refitted to a count (refitStoreys): storey s of the building repeats storey
+    // storeyRoles[s] of the structure as written, which had `writtenStoreys`; a style binds
+    // those (building_style.h). Empty: every storey is as written.
+    std::vector<int> storeyRoles;
+    size_t writtenStoreys = 0;
 
     // The module called `name`; an InputError at `loc` when there is none.
     int moduleIndex(const std::string &name, const FileLoc &loc) const;
-    size_t storeyCount() const;  // the most storeys of any module
+    size_t storeyCount() const;        // the most storeys of any module
+    int storeyRole(int storey) const;  // the written storey that a style's binding names
+    size_t boundStoreyCount() const;   // the storeys a style may bind: as written
 };
 
 // Throws InputError at the offending place for names used twice, docks naming unknown modules,
@@ -88,6 +95,18 @@ void validateStructure(const BuildingStructure &structure);
 // prototype's parapet, since a roof edge of the prototype names no edge of a piece.
 BuildingStructure structureOnFootprint(const ModuleStructure &prototype, const std::vector<Vec2d> &footprint,
                                        const FileLoc &loc);
+
+// Storey subdivision and repetition (§2.2) for data that counts a building's storeys or gives its
+// height: every module of a one-storey-list structure (as structureOnFootprint makes) gets `count`
+// storeys. The ground storey and the top one stay as written; between them come the written middle
+// storeys, the last of them repeated upward where the count asks for more, the upper ones left out
+// where it asks for fewer (one storey: the ground storey alone). A structure of two storeys repeats
+// its top one. `count` is at least 1 and at most kStructureStoreyLimit.
+void refitStoreys(BuildingStructure &structure, size_t count);
+
+// The storey count whose refitted storeys (refitStoreys of `written`) reach nearest `eaves` metres;
+// the fewer storeys on a tie.
+size_t storeysNearest(const std::vector<double> &written, double eaves);
 
 // A hash of everything the structure says, and nothing else: not the places, not any style.
 uint64_t structureHash(const BuildingStructure &structure);

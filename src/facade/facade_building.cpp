@@ -87,7 +87,7 @@ class BuildingAssembly {
         validateStructure(structure_);
         std::vector<std::string> names;
         for (const ModuleStructure &m : structure_.modules) names.push_back(m.name);
-        checkBindings(style_, names, structure_.storeyCount());
+        checkBindings(style_, names, structure_.boundStoreyCount());
         placeModules();
         buildRoofs();
         for (size_t s = 0; s < structure_.storeyCount(); ++s)
@@ -170,7 +170,8 @@ class BuildingAssembly {
 
     const ResolvedStyle &resolved(int module, int storey) {
         auto [it, fresh] = resolved_.try_emplace({module, storey});
-        if (fresh) it->second = resolveStyle(style_, structure_.modules[size_t(module)].name, storey);
+        if (fresh)
+            it->second = resolveStyle(style_, structure_.modules[size_t(module)].name, structure_.storeyRole(storey));
         return it->second;
     }
 

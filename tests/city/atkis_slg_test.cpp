@@ -70,13 +70,14 @@ class AtkisSlg : public ::testing::Test {
     }
     void TearDown() override { fs::remove_all(dir_); }
 
-    RenderScene scene(const std::string &slg) {
+    // `landscape`: more attributes of the <landscape>; `more`: more elements of the scene.
+    RenderScene scene(const std::string &slg, const std::string &landscape = "") {
         SceneDescription d =
             readSceneText(fmt::format("<scene version=\"1\">\n<georeference crs=\"EPSG:25832\" origin=\"{} {}\"/>\n"
                                       "<camera position=\"200 -300 200\" look_at=\"200 100 300\" up=\"0 0 1\"/>\n"
-                                      "<landscape seed=\"4\" trees=\"false\"><dgm file=\"dgm.asc\"/>"
+                                      "<landscape seed=\"4\" trees=\"false\" {}><dgm file=\"dgm.asc\"/>"
                                       "<atkis file=\"areas.geojson\"/></landscape>\n{}\n</scene>\n",
-                                      kWest, kSouth, slg),
+                                      kWest, kSouth, landscape, slg),
                           "test.xml", dir_);
         return buildRenderScene(d, &warnings_);
     }
@@ -122,6 +123,27 @@ TEST_F(AtkisSlg, SettlementAreasAreFilledAndFootprintsBuiltInside) {
         }
     }
     EXPECT_GT(inFootprints, 0u);
+}
+
+// structure= and style= on the landscape: its two footprints stand as town houses of modules, each
+// at the lowest ground under it; an <slg level="atkis"> beside them
+// would build on the same footprints and is refused.
+TEST_F(AtkisSlg, AModularLookRaisesTheFootprintsAsModularBuildings) {
+    std::string look =
+        fmt::format(R"(structure="{}" style="{}")", test::sourceFile("scenes/townhouse/townhouse.structure"),
+                    test::sourceFile("scenes/townhouse/ochre.style"));
+    std::string materials =
+        fmt::format(R"(<materials file="{}"/><material name="interior_dim" diffuse="0.1 0.1 0.1"/>)",
+                    test::sourceFile("rules/gruenderzeit/materials.xml"));
+    RenderScene s = scene(materials, look);
+    ASSERT_EQ(s.buildings.size(), 2u);
+    for (const BuildingRecord &b : s.buildings) {
+        bool first = b.base < height(300, 100);
+        double lowest = first ? height(250, 40) : height(300, 100);
+        EXPECT_NEAR(b.base, lowest, 0.01) << b.id;
+        EXPECT_NEAR(b.eaves - b.base, 18.6, 1e-3) << "the structure's storeys: ALK counts none";
+    }
+    EXPECT_NE(test::inputErrorOf([&] { scene(materials + atkisSlg(), look); }).find("not both"), std::string::npos);
 }
 
 TEST_F(AtkisSlg, EveryBuildingStandsAtTheLowestGroundUnderIt) {
