@@ -117,7 +117,7 @@ class SceneAssembler {
         }
         // Finkenzeller's buildings: the scene's own, and those that data's footprints stand as.
         std::optional<ModularBuildings> modular;
-        if (needsModular()) modular.emplace(camera, builder_, masonryMaps);
+        if (needsModular()) modular.emplace(camera, builder_, masonryMaps, [&](MaterialId id) { return albedo(id); });
         for (const CityGmlDesc &gml : d_.cityGml)
             within(gml.loc, "<citygml>", [&] {
                 if (gml.modular)
@@ -244,6 +244,17 @@ class SceneAssembler {
     }
 
     TextureId texture(Image image) { return textures().add(std::move(image)); }
+
+    // A material's colour times its diffuse map's mean (a lookup over the whole period). Read-only:
+    // the modular buildings ask it while they are made in parallel.
+    Vec3f albedo(MaterialId id) const {
+        const Material &m = builder_.materials().at(id);
+        if (m.diffuseMap == kNoTexture) return m.diffuse;
+        float mean[3] = {1, 1, 1};
+        textures_->lookup(m.diffuseMap, {0.5f, 0.5f}, 1.0f, mean, 3);
+        if (textures_->channels(m.diffuseMap) < 3) mean[1] = mean[2] = mean[0];
+        return m.diffuse * Vec3f(mean[0], mean[1], mean[2]);
+    }
 
     Textures &textures() {
         if (!textures_) textures_ = imageLibrary().makeTextures(defaultTextureCacheDirectory());

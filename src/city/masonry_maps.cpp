@@ -108,6 +108,7 @@ void tileWall(const Mesh &mesh, const MasonryWall &wall, size_t index, std::vect
         tile.wall = index;
         tile.masonry.mortarColour = wall.masonry.mortarColour;
         tile.masonry.mortarThickness = wall.masonry.mortarThickness;
+        tile.masonry.relief = wall.masonry.relief;
         const Box &box = cell.box;
         for (size_t s = 0; s < stoneBoxes.size(); ++s)
             if (meet(stoneBoxes[s], box)) tile.masonry.stones.push_back(wall.masonry.stones[s]);

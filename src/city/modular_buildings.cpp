@@ -142,8 +142,9 @@ ModularBuildingDesc footprintBuilding(const ModularLookDesc &look, const FileLoc
     return desc;
 }
 
-ModularBuildings::ModularBuildings(const Camera &camera, RenderSceneBuilder &builder, AddImage addImage) :
-    camera_(camera), rays_(camera), builder_(builder), addImage_(std::move(addImage)) {}
+ModularBuildings::ModularBuildings(const Camera &camera, RenderSceneBuilder &builder, AddImage addImage,
+                                   MaterialAlbedo albedo) :
+    camera_(camera), rays_(camera), builder_(builder), addImage_(std::move(addImage)), albedo_(std::move(albedo)) {}
 
 ModularBuildings::~ModularBuildings() = default;
 
@@ -194,6 +195,11 @@ ModularBuildings::Made ModularBuildings::make(const ModularBuildingDesc &desc, u
         return name.empty() ? MaterialId(0) : builder_.findMaterial(name);
     };
     made.building = buildFacadeBuilding(made.structure, style.style, material, seed, desc.buildingId, style.windows);
+    // A relief alone (an apron's) shows its material's albedo; the atlas replaces the material's.
+    for (MasonryWall &wall : made.building.masonry)
+        if (wall.masonry.relief && wall.masonry.stones.empty())
+            wall.masonry.mortarColour =
+                albedo_ ? albedo_(wall.material) : builder_.materials().at(wall.material).diffuse;
     made.atlas = bakeMasonryMaps(made.building.mesh, made.building.masonry, desc.transform, rays_, camera_);
     return made;
 }

@@ -36,8 +36,13 @@ ModularBuildingDesc footprintBuilding(const ModularLookDesc &look, const FileLoc
 // window and console model a prototype that all its buildings instance.
 class ModularBuildings {
   public:
+    // The mean albedo of one of the scene's materials, its colour times its diffuse map's mean:
+    // what an apron's face (facade/apron_ornament.h) shows, since its baked maps replace the
+    // material's. Without one, the material's colour.
+    using MaterialAlbedo = std::function<Vec3f(MaterialId)>;
+
     // `camera` and `builder` outlive this; `addImage` registers the baked atlases.
-    ModularBuildings(const Camera &camera, RenderSceneBuilder &builder, AddImage addImage);
+    ModularBuildings(const Camera &camera, RenderSceneBuilder &builder, AddImage addImage, MaterialAlbedo albedo = {});
     ~ModularBuildings();
     ModularBuildings(const ModularBuildings &) = delete;
     ModularBuildings &operator=(const ModularBuildings &) = delete;
@@ -74,6 +79,7 @@ class ModularBuildings {
     CameraRays rays_;
     RenderSceneBuilder &builder_;
     AddImage addImage_;
+    MaterialAlbedo albedo_;
     std::map<std::filesystem::path, BuildingStructure> structures_;
     std::map<std::filesystem::path, std::unique_ptr<LoadedStyle>> styles_;
     std::map<const Mesh *, PrototypeId> openingPrototypes_;  // by the style's shared window models

@@ -433,6 +433,14 @@ void applyFrame(const DescriptionItem &item, WindowStyle &window) {
             fmt::format("the pane depth {} lies in front of the frame's overhang {}", frame.paneDepth, frame.overhang));
 }
 
+// `apron, slot, height, depth`: at least 10 cm high, up to 1 m proud.
+void applyApron(const DescriptionItem &item, WindowStyle &window) {
+    item.expectFieldCount(4, 4, "an apron (apron, slot, height, depth)");
+    if (window.kind == OpeningKind::Door) throw InputError(item.fields[1].loc, "a door has no apron below it");
+    window.apron = ApronStyle{boundedNumber(item, 2, "the apron's height", 0.1, 10),
+                              boundedNumber(item, 3, "the apron's depth", 0, 1), item.loc};
+}
+
 BandStyle readBand(const DescriptionItem &item, NamedFiles &files) {
     item.expectFieldCount(4, 4, "a band (band, vStart, vStop, \"cornice file\")");
     BandStyle band{fraction(item, 1, "the band's vStart"), fraction(item, 2, "the band's vStop"), nullptr, item.loc};
@@ -465,27 +473,30 @@ class StyleReader {
         expectItems(block_, 1, "a name");
         style_.name = nameItem(block_.items[0], "the style's name");
         style_.loc = block_.loc;
-        std::vector<const DescriptionItem *> casings, frames;
+        std::vector<const DescriptionItem *> casings, frames, aprons;
         for (size_t i = 1; i < block_.items.size(); ++i) {
             const DescriptionItem &item = block_.items[i];
-            const std::string &kind = item.word(
-                0, "the kind of a style item (walls, masonry, window, door, casing, frame, band, bands or material)");
+            const std::string &kind = item.word(0,
+                                                "the kind of a style item (walls, masonry, window, door, casing, "
+                                                "frame, apron, band, bands or material)");
             if (kind == "walls") setWalls(item);
             else if (kind == "masonry") setMasonry(item);
             else if (kind == "window" || kind == "door") addWindow(item, kind);
             else if (kind == "casing") casings.push_back(&item);
             else if (kind == "frame") frames.push_back(&item);
+            else if (kind == "apron") aprons.push_back(&item);
             else if (kind == "band") addBand(item);
             else if (kind == "bands") noBands(item);
             else if (kind == "material") addMaterial(item);
             else
                 throw InputError(item.fields[0].loc,
                                  fmt::format("unknown style item '{}' (walls, masonry, window, door, casing, frame, "
-                                             "band, bands or material)",
+                                             "apron, band, bands or material)",
                                              kind));
         }
         for (const DescriptionItem *item : casings) applyCasing(*item, windowOf(*item, "casing"));
         for (const DescriptionItem *item : frames) applyFrame(*item, windowOf(*item, "frame"));
+        for (const DescriptionItem *item : aprons) applyApron(*item, windowOf(*item, "apron"));
         return std::move(style_);
     }
 

@@ -25,6 +25,8 @@
 //     casing, 0, gesims, 0.15, 0.05, 0.05;  # slot, einfach|gesims|doppelgesims|klinker, size,
 //                                       #    thickness, overhang (m)
 //     frame, 0, 0.06, -0.05, -0.1;      # slot, thickness, overhang, pane depth (m)
+//     apron, 0, 0.5, 0.025;             # slot, height (0.1–10 m), depth (0–1 m): a window's
+//                                       #    ornamented panel below it (apron_ornament.h)
 //     band, 0.0, 0.08, "cornice.txt";   # Wandpartition [vStart, vStop] of the storey, its Gesims
 //     bands, none;                      # no bands here (ends the chain's search for bands)
 //     material, wall, "putz";           # stylePartName (quoted where not a word:
@@ -38,7 +40,7 @@
 //   a wall's thickness. Every module needs a Storeys block: its height is its storeys'.
 // * Blocks may come in any order; one Storeys, Roof and Windows block per module, any number of
 //   Dock blocks and items. Items of a Style may come in any order; a single-valued one (walls,
-//   masonry, bands none, a slot's window, casing or frame, a part's material) given twice is an
+//   masonry, bands none, a slot's window, casing, frame or apron, a part's material) given twice is an
 //   error, as is `band` beside `bands, none`.
 // * Casing (Def 5.14, FTStock): every edge has the item's thickness bf (a fraction of the opening
 //   across the edge, casings.h) and overhang, except a door's threshold, which has none (doors
@@ -49,8 +51,9 @@
 //   of classicist windows, Fig. 5.41), the tympanum between its two cornices; einfach and klinker
 //   have no band (size 0), and klinker takes casings.h's bricks (0.25 m, 2 cm overhang, 1 cm
 //   joints), which the thesis's Klinker concept gives no place here.
-// * A casing or frame names a slot whose window or door is in the same Style: the thesis hangs
-//   them on their FensterTuer (hat_FTStock, hat_Fensterrahmen), so they are not inherited alone.
+// * A casing, frame or apron names a slot whose window or door is in the same Style: the thesis
+//   hangs them on their FensterTuer (hat_FTStock, hat_Fensterrahmen), so they are not inherited
+//   alone. A door has no apron.
 // * Named files are read through the caller's `readFile` once per name and parsed once per use,
 //   so every style that names one shares one description (shared_ptr). Their errors are the
 //   file's own, at its line and column.

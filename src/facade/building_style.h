@@ -52,7 +52,15 @@ struct MasonryStyle {
 // by `wallId`, every random choice from `seed` and that id.
 Masonry layStyleMasonry(const MasonryStyle &style, const WallFace &wall, uint32_t seed, uint32_t wallId);
 
-// FensterTuer with its refinement, casing and frame (Defs 5.12–5.15).
+// Brüstungsfeld: a panel under a window's casing, standing `depth` proud of the wall, `height` high
+// (metres), its face an ornament grown into it (ornament_growth.h, §2.7) and baked as relief into
+// the building's atlas (facade_building.h).
+struct ApronStyle {
+    double height = 0, depth = 0;
+    FileLoc loc;
+};
+
+// FensterTuer with its refinement, casing and frame (Defs 5.12–5.15), and an apron below it.
 struct WindowStyle {
     OpeningKind kind = OpeningKind::Window;
     AbsolutePlacement placement;
@@ -60,6 +68,7 @@ struct WindowStyle {
     Dominance dominance = Dominance::BottomAndTop;
     Casing casing;
     WindowFrame frame;
+    std::optional<ApronStyle> apron;
     FileLoc loc;
 };
 

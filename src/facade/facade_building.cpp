@@ -13,6 +13,7 @@
 
 #include "core/check.h"
 #include "core/hash.h"
+#include "facade/apron_ornament.h"
 #include "facade/casings.h"
 #include "facade/consoles.h"
 #include "facade/convex_pieces.h"
@@ -60,6 +61,19 @@ struct StoreyPlan {
 };
 
 // The assembly of `window` at its size: refined opening, casing, frame and pane, and the reveal.
+// An apron keeps this far above its storey's floor, metres; lower, it is left out.
+constexpr double kApronClearance = 0.05;
+
+// The lower left and upper right corners of a polygon's bounding box.
+std::pair<Vec2d, Vec2d> boundsOf(const std::vector<Vec2d> &polygon) {
+    Vec2d low = polygon.front(), high = polygon.front();
+    for (Vec2d p : polygon) {
+        low = {std::min(low.x, p.x), std::min(low.y, p.y)};
+        high = {std::max(high.x, p.x), std::max(high.y, p.y)};
+    }
+    return {low, high};
+}
+
 WindowAssembly assembleWindow(const WindowStyle &window, const PieceMaterials &materials, MaterialId interior) {
     Vec2d size{window.placement.width, window.placement.height};
     CoarseOpening coarse{{0, 0}, {size.x, 0}, size, {0, size.y}};
@@ -69,7 +83,14 @@ WindowAssembly assembleWindow(const WindowStyle &window, const PieceMaterials &m
     WallFrame3d frame{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}};
     auto model = std::make_shared<Mesh>(extrudePieces(pieces.pieces, frame, materials));
     model->append(revealMesh(pieces.hole, frame, kRevealDepth, interior), Transform());
-    return {std::move(model), std::move(pieces.hole)};
+    std::shared_ptr<const Image> apron;
+    if (window.apron) try {
+            auto [low, high] = boundsOf(pieces.hole);
+            apron = std::make_shared<const Image>(apronRelief(high.x - low.x, window.apron->height));
+        } catch (const std::invalid_argument &e) {
+            throw InputError(window.apron->loc, fmt::format("the apron cannot be grown: {}", e.what()));
+        }
+    return {std::move(model), std::move(pieces.hole), std::move(apron)};
 }
 
 class BuildingAssembly {
@@ -331,12 +352,66 @@ class BuildingAssembly {
         ++result_.openings;
         std::vector<Vec2d> hole = model.hole;
         for (Vec2d &p : hole) p = p + coarse.bl;
+        if (model.apron) addApron(face, hole, low.y, *window, model.apron, style);
         return hole;
+    }
+
+    // The window's apron right under its hole (ApronStyle), or a note where the storey leaves it
+    // no room: a panel standing out of the wall, its sides in the casing's material, its face
+    // in a masonry wall of the relief alone, which the building's atlas bakes.
+    void addApron(const PieceFace &face, const std::vector<Vec2d> &hole, double floor, const WindowStyle &window,
+                  const std::shared_ptr<const Image> &relief, const ResolvedStyle &style) {
+        auto [low, high] = boundsOf(hole);
+        double width = relief->width * kApronCell, height = relief->height * kApronCell;
+        Vec2d corner{(low.x + high.x - width) / 2, low.y - height};
+        if (corner.y < floor + kApronClearance) {
+            ++dropped_[fmt::format("the apron of {} does not fit below its window", window.loc.toString())];
+            return;
+        }
+        MaterialId material = this->material(style, StylePart::Casing);
+        uint32_t front = uint32_t(result_.mesh.triangleCount());
+        result_.mesh.append(apronPanel(face.frame, corner, {width, height}, window.apron->depth, material),
+                            Transform());
+        MasonryWall wall;
+        wall.face.outline = {corner, corner + Vec2d{width, 0}, corner + Vec2d{width, height},
+                             corner + Vec2d{0, height}};
+        wall.masonry.mortarColour = Vec3f(1.0f);  // the caller's to tint: the material's colour
+        wall.masonry.relief = MasonryRelief{corner, kApronCell, relief};
+        wall.material = material;
+        wall.triangles = {front, front + 1};
+        result_.masonry.push_back(std::move(wall));
+    }
+
+    // A box on the wall, `depth` out of it over [corner, corner + size] of its plane: the front first
+    // (two triangles), then the four sides; wall metres as texture coordinates throughout.
+    Mesh apronPanel(const FaceFrame &frame, Vec2d corner, Vec2d size, double depth, MaterialId material) const {
+        Vec3f outward(float(frame.along.y), float(-frame.along.x), 0.0f),
+            along(float(frame.along.x), float(frame.along.y), 0.0f);
+        auto point = [&](Vec2d p, double out) { return worldOf(frame, corner + p) + outward * float(out); };
+        Mesh panel;
+        auto quad = [&](std::array<Vec3f, 4> corners, std::array<Vec2d, 4> uvs, Vec3f normal) {
+            auto first = uint32_t(panel.positions.size());
+            for (size_t k = 0; k < 4; ++k) {
+                panel.positions.push_back(corners[k]);
+                panel.normals.push_back(normal);
+                panel.uvs.push_back({float(corner.x + uvs[k].x), float(corner.y + uvs[k].y)});
+            }
+            panel.indices.insert(panel.indices.end(), {first, first + 1, first + 2, first, first + 2, first + 3});
+        };
+        const Vec2d bl{0, 0}, br{size.x, 0}, tr = size, tl{0, size.y};
+        quad({point(bl, depth), point(br, depth), point(tr, depth), point(tl, depth)}, {bl, br, tr, tl}, outward);
+        quad({point(tl, depth), point(tr, depth), point(tr, 0), point(tl, 0)}, {tl, tr, tr, tl}, {0, 0, 1});
+        quad({point(br, depth), point(bl, depth), point(bl, 0), point(br, 0)}, {br, bl, bl, br}, {0, 0, -1});
+        quad({point(bl, 0), point(bl, depth), point(tl, depth), point(tl, 0)}, {bl, bl, tl, tl}, -along);
+        quad({point(br, depth), point(br, 0), point(tr, 0), point(tr, depth)}, {br, br, tr, tr}, along);
+        panel.setMaterial(material);
+        return panel;
     }
 
     struct OpeningModel {
         size_t set = 0;           // in result_.openingSets
         std::vector<Vec2d> hole;  // from the coarse opening's lower left corner
+        std::shared_ptr<const Image> apron;
     };
 
     // The opening of `window` in `style`'s materials, built once: every window of a style has
@@ -354,7 +429,7 @@ class BuildingAssembly {
         if (!fresh) return it->second;
         const WindowAssembly &assembly =
             windows_.get(style_, key, [&] { return assembleWindow(window, materials, interior); });
-        it->second = {result_.openingSets.size(), assembly.hole};
+        it->second = {result_.openingSets.size(), assembly.hole, assembly.apron};
         result_.openingSets.push_back({assembly.model, {}});
         return it->second;
     }

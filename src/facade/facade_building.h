@@ -67,6 +67,9 @@ struct OpeningSet {
 struct WindowAssembly {
     std::shared_ptr<const Mesh> model;
     std::vector<Vec2d> hole;
+    // The relief of the apron below it (apron_ornament.h), when its style has one: as wide as the
+    // hole, to the nearest relief cell.
+    std::shared_ptr<const Image> apron;
 };
 
 // The window assemblies of one style, built once for all the buildings of that style: a casing's

@@ -5,8 +5,11 @@
 // triangle count): these polygons are baked to images, while the wall's mesh stays coarse.
 #pragma once
 
+#include <memory>
+#include <optional>
 #include <vector>
 
+#include "core/image.h"
 #include "core/vecmath.h"
 
 namespace veduta {
@@ -23,10 +26,21 @@ struct Stone {
     double depth = 0;            // how far it stands out of the mortar (Brick `tiefe`), metres
 };
 
+// A relief over part of a wall (an ornament's height map, ornament_growth.h): `heights`, one
+// channel of metres, top row first, covers [origin.x, origin.x + width · cellSize] ×
+// [origin.y, origin.y + height · cellSize] of the wall. Baked, it raises the wall's height field,
+// whose slopes give the normals.
+struct MasonryRelief {
+    Vec2d origin;
+    double cellSize = 0;
+    std::shared_ptr<const Image> heights;
+};
+
 struct Masonry {
     std::vector<Stone> stones;
     Vec3f mortarColour;
     double mortarThickness = 0;  // metres
+    std::optional<MasonryRelief> relief = {};
 };
 
 }  // namespace veduta

@@ -109,8 +109,22 @@ std::vector<float> distancesFromStoneEdges(const IdRaster &raster) {
     return distance;
 }
 
+// The relief's height at a wall point: bilinear between its cells' centres, held at its edge cells,
+// 0 outside it.
+double reliefAt(const MasonryRelief &relief, Vec2d p) {
+    const Image &image = *relief.heights;
+    double column = (p.x - relief.origin.x) / relief.cellSize;
+    double fromTop = image.height - (p.y - relief.origin.y) / relief.cellSize;
+    if (column < 0 || fromTop < 0 || column > image.width || fromTop > image.height) return 0;
+    double x = std::clamp(column - 0.5, 0.0, image.width - 1.0), y = std::clamp(fromTop - 0.5, 0.0, image.height - 1.0);
+    int x0 = int(x), y0 = int(y), x1 = std::min(x0 + 1, image.width - 1), y1 = std::min(y0 + 1, image.height - 1);
+    double fx = x - x0, fy = y - y0;
+    auto at = [&](int cx, int cy) { return double(image.pixels[size_t(cy) * size_t(image.width) + size_t(cx)]); };
+    return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x1, y0)) + fy * ((1 - fx) * at(x0, y1) + fx * at(x1, y1));
+}
+
 // How far each texel stands out of the mortar, in metres: a stone's depth, falling to the mortar
-// over the bevel at its edges.
+// over the bevel at its edges, and the relief's height where it has one.
 std::vector<double> heights(const IdRaster &raster, const Masonry &masonry, double bevel) {
     // Where half a texel spans the bevel, even a texel at a stone's edge (distance 0, its centre
     // half a texel in) stands at the full depth: the distances change nothing and are not made.
@@ -123,6 +137,12 @@ std::vector<double> heights(const IdRaster &raster, const Masonry &masonry, doub
         double inset = ((distances ? distance[i] : 0.0f) + 0.5) * raster.texelSize;
         height[i] = masonry.stones[size_t(id)].depth * (bevel > 0 ? std::min(1.0, inset / bevel) : 1.0);
     }
+    if (masonry.relief)
+        for (int row = 0; row < raster.height; ++row)
+            for (int x = 0; x < raster.width; ++x)
+                height[size_t(row) * size_t(raster.width) + size_t(x)] += reliefAt(
+                    *masonry.relief,
+                    {raster.origin.x + (x + 0.5) * raster.texelSize, raster.top() - (row + 0.5) * raster.texelSize});
     return height;
 }
 

@@ -108,6 +108,57 @@ RenderScene sceneWith(const std::string &element, std::vector<std::string> &warn
     return buildRenderScene(readSceneText(xml, "test.xml", test::sourceFile("scenes")), &warnings);
 }
 
+// The ochre town house's piano nobile has aprons (ApronStyle): their faces take a copy of the
+// casing's stucco whose maps are the building's atlas, its colour the stucco's mean albedo (its
+// colour times its plaster map's mean) and its normals the grown ornament's relief where the
+// camera sees it closely.
+TEST(ModularFootprints, TheTownhousesApronsShowTheirOrnamentThroughTheAtlas) {
+    std::vector<std::string> warnings;
+    // Close enough that the atlas's texel (about 3 mm) resolves the ornament's 1 cm cells.
+    RenderScene scene = sceneWith(R"(<camera position="7 -2.5 4.6" look_at="7 0 4.6" resolution="640 360"/>
+        <modular_building footprint="0 0 14 0 14 12 0 12" structure="townhouse/townhouse.structure"
+                          style="townhouse/ochre.style" building="5"/>)",
+                                  warnings);
+    const Material *stucco = nullptr, *apron = nullptr;
+    for (const Material &m : scene.materials) {
+        if (m.name == "stucco_white") stucco = &m;
+        if (m.name == "stucco_white (building 5 masonry)") apron = &m;
+    }
+    ASSERT_NE(stucco, nullptr);
+    ASSERT_NE(apron, nullptr);
+    ASSERT_NE(apron->normalMap, kNoTexture);
+    float plaster[3];
+    scene.textures->lookup(stucco->diffuseMap, {0.5f, 0.5f}, 1.0f, plaster, 3);
+    const MaterialId id = MaterialId(apron - scene.materials.data());
+    size_t faces = 0, tilted = 0, samples = 0, seen = 0, seenTilted = 0;
+    for (const BakedMesh &baked : scene.meshes)
+        for (size_t t = 0; t < baked.mesh.triangleCount(); ++t) {
+            if (baked.mesh.triangleMaterials[t] != id) continue;
+            ++faces;
+            const uint32_t *v = &baked.mesh.indices[3 * t];
+            Vec2f a = baked.mesh.uvs[v[0]], b = baked.mesh.uvs[v[1]], c = baked.mesh.uvs[v[2]];
+            for (int i = 1; i < 20; ++i)
+                for (int j = 1; i + j < 20; ++j) {
+                    Vec2f uv = a + (b - a) * (i / 20.0f) + (c - a) * (j / 20.0f);
+                    float colour[4], normal[3];
+                    scene.textures->lookup(apron->diffuseMap, uv, 0.0f, colour, 4);
+                    scene.textures->lookup(apron->normalMap, uv, 0.0f, normal, 3);
+                    for (int k = 0; k < 3; ++k) EXPECT_NEAR(colour[k], plaster[k], 1e-3) << k;
+                    bool tilt = normal[2] * 2 - 1 < 0.99f;
+                    tilted += tilt;
+                    ++samples;
+                    // The front (y = 0, facing the camera) is baked fine, the back coarse.
+                    if (baked.mesh.positions[v[0]].y < 0) ++seen, seenTilted += tilt;
+                }
+        }
+    // Five windows on the front, four on the back, in the piano nobile: two triangles each.
+    EXPECT_EQ(faces % 2, 0u);
+    EXPECT_GE(faces, 10u);
+    std::printf("apron samples: %zu of %zu tilted; on the front, %zu of %zu\n", tilted, samples, seenTilted, seen);
+    ASSERT_GT(seen, 0u);
+    EXPECT_GT(seenTilted, seen / 10) << "the rim and the ornament tilt the normals (a flat face: none)";
+}
+
 // tests/data/osm/small-district.osm: five buildings, one 18 m high with a 5 m roof (BuildingHeight
 // 13), one of four levels (12, at the built-in 3 m floor) and one of 15 m and five levels (15, the
 // height wins), two without a height.

@@ -458,6 +458,23 @@ TEST(BuildingStyleText, ErrorsNameTheirPlace) {
     EXPECT_EQ(styleError("Style { \"s\"; }\nStyle { \"s\"; }" + bind),
               "t.style:2:9: a second style named 's' (the first is at t.style:1:1)");
     EXPECT_EQ(styleError("Stil { \"s\"; }" + bind), "t.style:1:1: unknown block 'Stil' (Style or Bind)");
+    EXPECT_EQ(styleError("Style { \"s\"; door, 0, 1, 2, 1, 1; apron, 0, 0.5, 0.03; }" + bind),
+              "t.style:1:42: a door has no apron below it");
+    EXPECT_EQ(styleError("Style { \"s\"; window, 0, 1, 2, 1, 1, 1; apron, 0, 0.05, 0.03; }" + bind),
+              "t.style:1:50: the apron's height 0.05 is outside [0.1, 10]");
+    EXPECT_EQ(styleError("Style { \"s\"; window, 0, 1, 2, 1, 1, 1; apron, 0, 0.5; }" + bind),
+              "t.style:1:40: an apron (apron, slot, height, depth) takes 4 fields, found 3");
+}
+
+TEST(BuildingStyleText, AnApronBelongsToItsSlotsWindow) {
+    BuildingStyle style = parseBuildingStyle(
+        "Style { \"s\"; window, 2, 1.2, 2, 0.9, 1, 1; apron, 2, 0.5, 0.03; }\nBind { building, \"s\"; }", "t.style",
+        [](const std::string &, const FileLoc &) { return std::string(); });
+    const WindowStyle &window = style.styles[0].windows.at(2);
+    ASSERT_TRUE(window.apron);
+    EXPECT_EQ(window.apron->height, 0.5);
+    EXPECT_EQ(window.apron->depth, 0.03);
+    EXPECT_EQ(window.apron->loc.toString(), "t.style:1:44");
 }
 
 TEST(BuildingStyleText, AFileNamedByTwoStylesIsReadAndParsedOnce) {
