@@ -35,13 +35,18 @@ framed() {
 
 median() { printf '%s\n' "$@" | sort -g | sed -n "$((($# + 1) / 2))p"; }
 
-seconds() {  # the wall time of one run of veduta with the arguments; a failed run ends the benchmark
-    if ! /usr/bin/time -f '%e %M' -o "$work/time" "$veduta" "$@" >/dev/null 2>"$work/err"; then
+# The wall time of one run of veduta with the arguments, to the millisecond (time's %e has only
+# ten), its peak memory in $work/time; a failed run ends the benchmark.
+seconds() {
+    local start end
+    start=$(date +%s%N)
+    if ! /usr/bin/time -f '%M' -o "$work/time" "$veduta" "$@" >/dev/null 2>"$work/err"; then
         echo "facade_street.sh: veduta $* failed:" >&2
         tail -3 "$work/err" >&2
         kill -TERM $$
     fi
-    cut -d' ' -f1 "$work/time"
+    end=$(date +%s%N)
+    awk -v a="$start" -v b="$end" 'BEGIN { printf "%.3f\n", (b - a) / 1e9 }'
 }
 
 measure() {
@@ -54,7 +59,7 @@ measure() {
     done
     for run in 1 2 3; do
         renders+=("$(seconds render "$scene" --spp 16 -q -o "$work/r.exr")")
-        rss+=("$(cut -d' ' -f2 "$work/time")")
+        rss+=("$(cat "$work/time")")
     done
     echo "$(median "${renders[@]}") $(median "${infos[@]}") $(median "${bare[@]}") $(median "${rss[@]}")"
 }

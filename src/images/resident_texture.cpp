@@ -81,21 +81,40 @@ ResidentTexture ResidentTexture::fromImage(Image image) {
         // Separable: rows first, into a level as wide as the new one and as high as the old.
         std::vector<std::vector<Tap>> across = boxTaps(above.width, level.width);
         std::vector<std::vector<Tap>> down = boxTaps(above.height, level.height);
-        // Rows in parallel: each writes only its own, so the sums are those of one thread.
-        std::vector<float> narrow(size_t(level.width) * size_t(above.height) * channels, 0.0f);
-        tbb::parallel_for(size_t(0), size_t(above.height), [&](size_t y) {
-            for (size_t x = 0; x < size_t(level.width); ++x)
-                for (const Tap &tap : across[x])
-                    for (size_t c = 0; c < channels; ++c)
-                        narrow[(y * size_t(level.width) + x) * channels + c] +=
-                            tap.weight * above.texels[(y * size_t(above.width) + size_t(tap.source)) * channels + c];
-        });
-        level.texels.assign(size_t(level.width) * size_t(level.height) * channels, 0.0f);
+        // Rows in parallel: each writes only its own, so the sums are those of one thread. Each
+        // sum starts from its first tap and adds the others in order, as one from zero would,
+        // so that no buffer needs clearing first.
         const size_t row = size_t(level.width) * channels;
+        std::unique_ptr<float[]> narrow(new float[row * size_t(above.height)]);
+        tbb::parallel_for(size_t(0), size_t(above.height), [&](size_t y) {
+            const float *from = &above.texels[y * size_t(above.width) * channels];
+            float *to = &narrow[y * row];
+            if (above.width == 2 * level.width) {  // the taps are (2x, ½) and (2x + 1, ½): the same sums
+                for (size_t x = 0; x < size_t(level.width); ++x, from += 2 * channels, to += channels)
+                    for (size_t c = 0; c < channels; ++c) {
+                        float sum = 0.0f;
+                        sum += 0.5f * from[c];
+                        sum += 0.5f * from[channels + c];
+                        to[c] = sum;
+                    }
+                return;
+            }
+            for (size_t x = 0; x < size_t(level.width); ++x)
+                for (size_t c = 0; c < channels; ++c) {
+                    float sum = 0.0f;
+                    for (const Tap &tap : across[x]) sum += tap.weight * from[size_t(tap.source) * channels + c];
+                    to[x * channels + c] = sum;
+                }
+        });
+        level.texels.resize(row * size_t(level.height));
         tbb::parallel_for(size_t(0), size_t(level.height), [&](size_t y) {
-            for (const Tap &tap : down[y])
-                for (size_t i = 0; i < row; ++i)
-                    level.texels[y * row + i] += tap.weight * narrow[size_t(tap.source) * row + i];
+            float *to = &level.texels[y * row];
+            const float *first = &narrow[size_t(down[y].front().source) * row];
+            for (size_t i = 0; i < row; ++i) to[i] = 0.0f + down[y].front().weight * first[i];
+            for (size_t t = 1; t < down[y].size(); ++t) {
+                const float *from = &narrow[size_t(down[y][t].source) * row];
+                for (size_t i = 0; i < row; ++i) to[i] += down[y][t].weight * from[i];
+            }
         });
         result.levels_.push_back(std::move(level));
     }
