@@ -182,7 +182,7 @@ class SceneAssembler {
 
     // The landscape's ALK footprints (Folie 011) in its modular look, each on the lowest ground
     // under it (off the terrain at 0, with a warning) with the structure's storeys, edge 0 its
-    // longest.
+    // longest; a block where it spans fewer than 8 pixels.
     std::vector<ModularBuildingDesc> alkModularBuildings(const LandscapeDesc &land,
                                                          const std::vector<SlgFootprint> &footprints,
                                                          const GroundHeight &ground) {
@@ -199,6 +199,7 @@ class SceneAssembler {
                 descs.emplace_back(footprintBuilding(*land.modular, land.loc, outline, std::nullopt, base.value_or(0)));
             b.objectId = land.objectId;
             b.buildingId = id;
+            b.coarse = CoarseRule{};  // the landscape has no coarse attributes: the default, 8 pixels
         }
         return descs;
     }

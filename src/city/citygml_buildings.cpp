@@ -396,6 +396,7 @@ std::vector<ModularBuildingDesc> cityGmlModularBuildings(const CityGmlDesc &desc
             footprintBuilding(*desc.modular, where, std::move(twin->footprint), std::nullopt, float(twin->base)));
         b.objectId = desc.objectId;
         b.buildingId = twin->id;
+        b.coarse = desc.coarse;
         if (building.storeysAboveGround) b.storeys = size_t(std::max(1, *building.storeysAboveGround));
         else b.eaves = twin->wallHeight;
     }

@@ -46,7 +46,8 @@ uint32_t generateCityGml(const CityGmlDesc &desc, const std::optional<Georeferen
 // The same element with a modular look (ModularLookDesc): each building the bbox keeps stands on
 // its procedural twin's footprint (deriveTwin; a building without one is said and left out) at
 // its ground, edge 0 the footprint's longest, with the storeys the file counts
-// (storeysAboveGround), else those nearest its eaves. Throws InputError, as generateCityGml.
+// (storeysAboveGround), else those nearest its eaves, and the element's coarse rule. Throws
+// InputError, as generateCityGml.
 std::vector<ModularBuildingDesc> cityGmlModularBuildings(const CityGmlDesc &desc,
                                                          const std::optional<Georeference> &georeference,
                                                          std::vector<std::string> &warnings);

@@ -415,6 +415,7 @@ uint32_t buildModular(const CityData &data, std::vector<std::vector<IdentifiedLo
                 footprintBuilding(*detail.look, loc, std::move(footprint.points), front, footprint.base));
             desc.objectId = objectId;
             desc.buildingId = id;
+            desc.coarse = detail.coarse;
             // The data's own height, not a rule file's default.
             const SettingsMap noRuleFile;
             std::vector<const SettingsMap *> own{&block.settings, &data.settings};

@@ -63,7 +63,8 @@ SceneCity readCity(const CityDesc &city, const std::optional<Georeference> &geor
 // A city with a modular look (ModularLookDesc) builds each lot as one of `modular`'s buildings
 // instead (footprintBuilding): edge 0 its longest street edge, its storeys nearest the data's own
 // BuildingHeight (the lot's, block's or city's, not the rule file's), else as the structure has
-// them. Its rule files, if any, then only say how blocks are cut into lots.
+// them; one the coarse rule picks is a block of its modules. Its rule files, if any, then only say
+// how blocks are cut into lots.
 struct BuildingDetail {
     std::optional<Camera> camera;
     CoarseRule coarse;

@@ -66,6 +66,61 @@ size_t longestEdge(const std::vector<Vec2f> &points) {
     return longest;
 }
 
+// Whether `rule` picks the building, seen from `camera`: its modules' box from the ground to the
+// eaves, placed by `toWorld`.
+bool pickedAsCoarse(const CoarseRule &rule, const Camera &camera, const BuildingStructure &structure,
+                    const Transform &toWorld) {
+    Vec3f low(INFINITY), high(-INFINITY);
+    for (const ModuleStructure &m : structure.modules)
+        for (Vec2d p : m.module.outline)
+            for (double z : {0.0, m.height()}) {
+                Vec3f q = toWorld.applyPoint({float(p.x), float(p.y), float(z)});
+                low = {std::min(low.x, q.x), std::min(low.y, q.y), std::min(low.z, q.z)};
+                high = {std::max(high.x, q.x), std::max(high.y, q.y), std::max(high.z, q.z)};
+            }
+    return rule.isCoarse(camera, low, high);
+}
+
+// The coarse building: each module a prism up to its eaves, its walls in its middle storey's wall
+// material (what most of a front shows) and its flat top in its top storey's roof material (as
+// resolveStyle gives them).
+Mesh coarseBlock(const BuildingStructure &structure, const BuildingStyle &style, const MaterialByName &material) {
+    Mesh block;
+    for (const ModuleStructure &m : structure.modules) {
+        const std::vector<Vec2d> &outline = m.module.outline;
+        const float top = float(m.height());
+        Mesh walls, roof;
+        for (size_t i = 0; i < outline.size(); ++i) {
+            Vec2d a = outline[i], b = outline[(i + 1) % outline.size()], along = b - a;
+            Vec3f out = normalize(Vec3f(float(along.y), float(-along.x), 0.0f));
+            auto first = uint32_t(walls.positions.size());
+            for (Vec3f p : {Vec3f(float(a.x), float(a.y), 0.0f), Vec3f(float(b.x), float(b.y), 0.0f),
+                            Vec3f(float(b.x), float(b.y), top), Vec3f(float(a.x), float(a.y), top)}) {
+                walls.positions.push_back(p);
+                walls.normals.push_back(out);
+                walls.uvs.push_back({p.x, p.z});
+            }
+            walls.indices.insert(walls.indices.end(), {first, first + 1, first + 2, first, first + 2, first + 3});
+        }
+        // Modules are convex: a fan covers the top.
+        for (Vec2d p : outline) {
+            roof.positions.push_back({float(p.x), float(p.y), top});
+            roof.normals.push_back({0, 0, 1});
+            roof.uvs.push_back({float(p.x), float(p.y)});
+        }
+        for (uint32_t i = 1; i + 1 < outline.size(); ++i) roof.indices.insert(roof.indices.end(), {0, i, i + 1});
+        const int topStorey = int(m.storeyHeights.size()) - 1;
+        const int middle = int(m.storeyHeights.size()) / 2;
+        walls.setMaterial(
+            material(resolveStyle(style, m.name, structure.storeyRole(middle)).material(StylePart::Wall), {}));
+        roof.setMaterial(
+            material(resolveStyle(style, m.name, structure.storeyRole(topStorey)).material(StylePart::Roof), {}));
+        block.append(walls, Transform());
+        block.append(roof, Transform());
+    }
+    return block;
+}
+
 // Every material a style names is the scene's, said at the style that names it.
 void checkMaterials(const BuildingStyle &style, const RenderSceneBuilder &builder) {
     for (const Style &s : style.styles)
@@ -194,6 +249,10 @@ ModularBuildings::Made ModularBuildings::make(const ModularBuildingDesc &desc, u
     MaterialByName material = [&](const std::string &name, const FileLoc &) {
         return name.empty() ? MaterialId(0) : builder_.findMaterial(name);
     };
+    if (desc.coarse && pickedAsCoarse(*desc.coarse, camera_, made.structure, desc.transform)) {
+        made.building.mesh = coarseBlock(made.structure, style.style, material);
+        return made;
+    }
     made.building = buildFacadeBuilding(made.structure, style.style, material, seed, desc.buildingId, style.windows);
     // A relief alone (an apron's) shows its material's albedo; the atlas replaces the material's.
     for (MasonryWall &wall : made.building.masonry)

@@ -242,6 +242,9 @@ struct ModularBuildingDesc {
     bool fromData = false;
     std::optional<size_t> storeys;
     std::optional<double> eaves;
+    // The rule of the element that reads the footprint: a building it picks, seen from the camera,
+    // is a block of its modules up to the eaves in its style's wall and roof materials.
+    std::optional<CoarseRule> coarse;
 };
 
 // An <slg> element: a block or a district planned with Schrader's Spatial Landmark Graph from

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <set>
 #include <string>
 
 #include <fmt/format.h>
@@ -179,6 +180,38 @@ TEST(ModularFootprints, OpenStreetMapBuildingsTakeTheirHeights) {
     EXPECT_EQ(std::count_if(warnings.begin(), warnings.end(),
                             [](const std::string &w) { return w.find("left out: no partition") != std::string::npos; }),
               0);
+}
+
+// The element's coarse rule: a building it picks is a block of its modules up to its eaves, in the
+// style's wall and roof materials, with no windows, consoles or atlas; the others keep their detail.
+TEST(ModularFootprints, BuildingsTheCoarseRulePicksAreBlocks) {
+    const std::string osm = (test::testData() / "osm/small-district.osm").string();
+    auto city = [&](const std::string &coarse) {
+        std::vector<std::string> warnings;
+        return sceneWith(fmt::format(R"(<city file="{}" {} structure="townhouse/townhouse.structure"
+                                           style="townhouse/ochre.style"/>)",
+                                     osm, coarse),
+                         warnings);
+    };
+    RenderScene detailed = city(""), blocks = city(R"(coarse_below_px="100000")");
+    ASSERT_EQ(blocks.buildings.size(), 5u);
+    EXPECT_TRUE(blocks.instances.empty());
+    EXPECT_FALSE(detailed.instances.empty());
+    size_t triangles = 0;
+    std::set<std::string> materials;
+    for (const BakedMesh &baked : blocks.meshes)
+        if (baked.buildingId != 0) {
+            triangles += baked.mesh.triangleCount();
+            for (MaterialId m : baked.mesh.triangleMaterials) materials.insert(blocks.materials[m].name);
+        }
+    EXPECT_LT(triangles, 5u * 40) << "a few quads and a fan a module";
+    EXPECT_EQ(materials, (std::set<std::string>{"plaster_ochre", "roof_slate"}))
+        << "the middle storey's wall, the attic's roof";
+    for (size_t b = 0; b < 5; ++b) {
+        EXPECT_EQ(blocks.buildings[b].id, detailed.buildings[b].id);
+        EXPECT_NEAR(blocks.buildings[b].eaves, detailed.buildings[b].eaves, 1e-4f) << "the same storeys";
+        EXPECT_NEAR(blocks.buildings[b].ridge, blocks.buildings[b].eaves, 1e-4f) << "a flat top at the eaves";
+    }
 }
 
 TEST(ModularFootprints, ALookTakesBothStructureAndStyle) {
