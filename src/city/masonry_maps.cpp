@@ -9,6 +9,8 @@
 
 #include <fmt/format.h>
 
+#include "core/polygon_bounds.h"
+
 namespace veduta {
 
 namespace {
@@ -56,15 +58,6 @@ std::vector<uint32_t> piecesOf(const Mesh &mesh, const std::vector<uint32_t> &tr
 
 using Box = std::pair<Vec2d, Vec2d>;
 
-Box boxOf(const std::vector<Vec2d> &outline) {
-    Box box{outline.front(), outline.front()};
-    for (Vec2d p : outline) {
-        box.first = {std::min(box.first.x, p.x), std::min(box.first.y, p.y)};
-        box.second = {std::max(box.second.x, p.x), std::max(box.second.y, p.y)};
-    }
-    return box;
-}
-
 bool meet(const Box &a, const Box &b) {
     return a.first.x <= b.second.x && a.second.x >= b.first.x && a.first.y <= b.second.y && a.second.y >= b.first.y;
 }
@@ -101,8 +94,8 @@ void tileWall(const Mesh &mesh, const MasonryWall &wall, size_t index, std::vect
         grow(cell.box, p.box);
     }
     std::vector<Box> stoneBoxes, openingBoxes;
-    for (const Stone &stone : wall.masonry.stones) stoneBoxes.push_back(boxOf(stone.outline));
-    for (const auto &opening : wall.face.openings) openingBoxes.push_back(boxOf(opening));
+    for (const Stone &stone : wall.masonry.stones) stoneBoxes.push_back(polygonBounds(stone.outline));
+    for (const auto &opening : wall.face.openings) openingBoxes.push_back(polygonBounds(opening));
     for (auto &[key, cell] : cells) {
         MasonryTile tile;
         tile.wall = index;

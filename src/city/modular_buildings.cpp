@@ -10,6 +10,7 @@
 #include <tbb/parallel_for.h>
 
 #include "city/masonry_maps.h"
+#include "city/prism_building.h"
 #include "core/check.h"
 #include "core/input_file.h"
 #include "facade/building_description.h"
@@ -81,42 +82,22 @@ bool pickedAsCoarse(const CoarseRule &rule, const Camera &camera, const Building
     return rule.isCoarse(camera, low, high);
 }
 
-// The coarse building: each module a prism up to its eaves, its walls in its middle storey's wall
-// material (what most of a front shows) and its flat top in its top storey's roof material (as
-// resolveStyle gives them).
+// The coarse building: each module a prism up to its eaves (prismBuilding), its walls in its
+// middle storey's wall material (what most of a front shows) and its flat top in its top storey's
+// roof material (as resolveStyle gives them); the floor, hidden on the ground, as its walls.
 Mesh coarseBlock(const BuildingStructure &structure, const BuildingStyle &style, const MaterialByName &material) {
     Mesh block;
     for (const ModuleStructure &m : structure.modules) {
-        const std::vector<Vec2d> &outline = m.module.outline;
-        const float top = float(m.height());
-        Mesh walls, roof;
-        for (size_t i = 0; i < outline.size(); ++i) {
-            Vec2d a = outline[i], b = outline[(i + 1) % outline.size()], along = b - a;
-            Vec3f out = normalize(Vec3f(float(along.y), float(-along.x), 0.0f));
-            auto first = uint32_t(walls.positions.size());
-            for (Vec3f p : {Vec3f(float(a.x), float(a.y), 0.0f), Vec3f(float(b.x), float(b.y), 0.0f),
-                            Vec3f(float(b.x), float(b.y), top), Vec3f(float(a.x), float(a.y), top)}) {
-                walls.positions.push_back(p);
-                walls.normals.push_back(out);
-                walls.uvs.push_back({p.x, p.z});
-            }
-            walls.indices.insert(walls.indices.end(), {first, first + 1, first + 2, first, first + 2, first + 3});
-        }
-        // Modules are convex: a fan covers the top.
-        for (Vec2d p : outline) {
-            roof.positions.push_back({float(p.x), float(p.y), top});
-            roof.normals.push_back({0, 0, 1});
-            roof.uvs.push_back({float(p.x), float(p.y)});
-        }
-        for (uint32_t i = 1; i + 1 < outline.size(); ++i) roof.indices.insert(roof.indices.end(), {0, i, i + 1});
-        const int topStorey = int(m.storeyHeights.size()) - 1;
-        const int middle = int(m.storeyHeights.size()) / 2;
-        walls.setMaterial(
-            material(resolveStyle(style, m.name, structure.storeyRole(middle)).material(StylePart::Wall), {}));
-        roof.setMaterial(
-            material(resolveStyle(style, m.name, structure.storeyRole(topStorey)).material(StylePart::Roof), {}));
-        block.append(walls, Transform());
-        block.append(roof, Transform());
+        std::vector<Vec2f> outline;
+        for (Vec2d p : m.module.outline) outline.push_back({float(p.x), float(p.y)});
+        Mesh prism = prismBuilding(outline, 0, float(m.height()), {1, 1});
+        const int middle = int(m.storeyHeights.size()) / 2, top = int(m.storeyHeights.size()) - 1;
+        MaterialId wall =
+            material(resolveStyle(style, m.name, structure.storeyRole(middle)).material(StylePart::Wall), {});
+        MaterialId roof =
+            material(resolveStyle(style, m.name, structure.storeyRole(top)).material(StylePart::Roof), {});
+        for (MaterialId &t : prism.triangleMaterials) t = t == PrismRoof ? roof : wall;
+        block.append(prism, Transform());
     }
     return block;
 }

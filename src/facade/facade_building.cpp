@@ -13,6 +13,7 @@
 
 #include "core/check.h"
 #include "core/hash.h"
+#include "core/polygon_bounds.h"
 #include "facade/apron_ornament.h"
 #include "facade/casings.h"
 #include "facade/consoles.h"
@@ -60,20 +61,10 @@ struct StoreyPlan {
     FloorPlan plan;
 };
 
-// The assembly of `window` at its size: refined opening, casing, frame and pane, and the reveal.
 // An apron keeps this far above its storey's floor, metres; lower, it is left out.
 constexpr double kApronClearance = 0.05;
 
-// The lower left and upper right corners of a polygon's bounding box.
-std::pair<Vec2d, Vec2d> boundsOf(const std::vector<Vec2d> &polygon) {
-    Vec2d low = polygon.front(), high = polygon.front();
-    for (Vec2d p : polygon) {
-        low = {std::min(low.x, p.x), std::min(low.y, p.y)};
-        high = {std::max(high.x, p.x), std::max(high.y, p.y)};
-    }
-    return {low, high};
-}
-
+// The assembly of `window` at its size: refined opening, casing, frame and pane, and the reveal.
 WindowAssembly assembleWindow(const WindowStyle &window, const PieceMaterials &materials, MaterialId interior) {
     Vec2d size{window.placement.width, window.placement.height};
     CoarseOpening coarse{{0, 0}, {size.x, 0}, size, {0, size.y}};
@@ -85,7 +76,7 @@ WindowAssembly assembleWindow(const WindowStyle &window, const PieceMaterials &m
     model->append(revealMesh(pieces.hole, frame, kRevealDepth, interior), Transform());
     std::shared_ptr<const Image> apron;
     if (window.apron) try {
-            auto [low, high] = boundsOf(pieces.hole);
+            auto [low, high] = polygonBounds(pieces.hole);
             apron = std::make_shared<const Image>(apronRelief(high.x - low.x, window.apron->height));
         } catch (const std::invalid_argument &e) {
             throw InputError(window.apron->loc, fmt::format("the apron cannot be grown: {}", e.what()));
@@ -361,7 +352,7 @@ class BuildingAssembly {
     // in a masonry wall of the relief alone, which the building's atlas bakes.
     void addApron(const PieceFace &face, const std::vector<Vec2d> &hole, double floor, const WindowStyle &window,
                   const std::shared_ptr<const Image> &relief, const ResolvedStyle &style) {
-        auto [low, high] = boundsOf(hole);
+        auto [low, high] = polygonBounds(hole);
         double width = relief->width * kApronCell, height = relief->height * kApronCell;
         Vec2d corner{(low.x + high.x - width) / 2, low.y - height};
         if (corner.y < floor + kApronClearance) {
