@@ -40,6 +40,26 @@ Mesh &startBakedMesh() {
     return baked;
 }
 
+// The material of a model's first surface in the key's materials: what a piece baked or swept
+// in one material takes.
+MaterialId firstMaterial(const Asset &model, const BuildingGenerator::PrototypeKey &key) {
+    return key.materials[model.mesh.triangleMaterials.empty() ? 0 : model.mesh.triangleMaterials[0]];
+}
+
+// Where a terminal's scope lies on its facade: the box of its corners.
+CornicePlace placeOf(const Terminal &terminal, const CorniceRule &rule, size_t facade, MaterialId material) {
+    CornicePlace place{&rule, facade, INFINITY, -INFINITY, INFINITY, -INFINITY, material};
+    for (float sx : {-0.5f, 0.5f})
+        for (float sy : {-0.5f, 0.5f}) {
+            Vec3f corner = terminal.shapeToFacade.applyPoint({sx * terminal.size.x, sy * terminal.size.y, 0.0f});
+            place.left = std::min(place.left, double(corner.x));
+            place.right = std::max(place.right, double(corner.x));
+            place.bottom = std::min(place.bottom, double(corner.y));
+            place.top = std::max(place.top, double(corner.y));
+        }
+    return place;
+}
+
 }  // namespace
 
 size_t BuildingGenerator::PrototypeKeyHash::operator()(const PrototypeKey &key) const {
@@ -56,7 +76,8 @@ BuildingGenerator::BuildingGenerator(const Grammar &grammar, const AssetLibrary 
     palette_(builder),
     seed_(seed),
     limits_(limits),
-    plainWall_(*assets.find("Wall0")) {
+    plainWall_(*assets.find("Wall0")),
+    consolePrototypes_(builder) {
     for (size_t a = 0; a < assets.size(); ++a)
         VEDUTA_CHECK(
             assets[uint32_t(a)].surfaces.size() <= kMaxSurfaces,
@@ -69,6 +90,15 @@ BuildingGenerator::BuildingGenerator(const Grammar &grammar, const AssetLibrary 
                 fmt::format("<Masonry model=\"{}\">: {}", rule.model,
                             model ? "not a wall model (masonry covers walls)" : "no such model in the library"));
         masonryModels_[*model].push_back(&rule);
+    }
+    for (const CorniceRule &rule : grammar.rules().cornices) {
+        std::optional<uint32_t> model = assets.find(rule.model);
+        if (!model || assets[*model].type == ModelType::Wall)
+            throw InputError(
+                rule.loc,
+                fmt::format("<Cornice model=\"{}\">: {}", rule.model,
+                            model ? "a wall model (walls are baked, not placed)" : "no such model in the library"));
+        corniceModels_[*model].push_back(&rule);
     }
 }
 
@@ -118,6 +148,28 @@ void BuildingGenerator::addWallPiece(const Asset &model, const Transform &modelT
         baked.triangleMaterials[t] = key.materials[model.mesh.triangleMaterials[t - firstTriangle]];
 }
 
+// The first <Cornice> that takes the model where the terminal's rule placed it, or none.
+const CorniceRule *BuildingGenerator::corniceOf(const Terminal &terminal) const {
+    auto rules = corniceModels_.find(terminal.model);
+    if (rules == corniceModels_.end()) return nullptr;
+    for (const CorniceRule *rule : rules->second) {
+        if (rule->rules.empty()) return rule;
+        const std::string &placedBy = grammar_.rules().rules.at(terminal.rule).predecessor;
+        if (std::find(rule->rules.begin(), rule->rules.end(), placedBy) != rule->rules.end()) return rule;
+    }
+    return nullptr;
+}
+
+// The rules' <Cornice> places swept (rule_cornices.h) into the building's mesh, before it is
+// welded; their consoles are set when the building is added.
+void BuildingGenerator::addCornices(const std::vector<CornicePlace> &places, const std::vector<StartShape> &facades,
+                                    Mesh &baked, MadeBuilding &made) const {
+    if (places.empty()) return;
+    CorniceRun swept = sweepRuleCornices(places, facades);
+    baked.append(swept.mesh, Transform());
+    for (ConsoleSet &set : swept.consoles) made.consoles.push_back(std::move(set));
+}
+
 // The first <Masonry> that covers the model on that facade, or none.
 const MasonryRule *BuildingGenerator::masonryOf(uint32_t model, const std::string &facade) const {
     auto rules = masonryModels_.find(model);
@@ -140,7 +192,7 @@ void BuildingGenerator::addMasonryPiece(const Asset &model, const Transform &mod
         Vec3f onFacade = modelToFacade.applyPoint(model.mesh.positions[v]);
         baked.uvs[first + v] = {onFacade.x, onFacade.y};
     }
-    MaterialId material = key.materials[model.mesh.triangleMaterials.empty() ? 0 : model.mesh.triangleMaterials[0]];
+    MaterialId material = firstMaterial(model, key);
     for (uint32_t t = firstTriangle; t < baked.triangleCount(); ++t) baked.triangleMaterials[t] = material;
     // One masonry wall a facade and rule, its stones laid over the whole facade: pieces apart on
     // it continue one bond.
@@ -232,8 +284,9 @@ void BuildingGenerator::addPlainWall(const BuildingContext &building, const Star
                  keyFor(wall, building.materials), baked);
 }
 
-void BuildingGenerator::emitFacade(const BuildingContext &building, const StartShape &start, float alongPerimeter,
-                                   Mesh &baked, MadeBuilding &made, std::vector<std::string> &warnings) const {
+void BuildingGenerator::emitFacade(const BuildingContext &building, const StartShape &start, size_t facade,
+                                   float alongPerimeter, Mesh &baked, MadeBuilding &made,
+                                   std::vector<CornicePlace> &cornices, std::vector<std::string> &warnings) const {
     std::vector<Terminal> &terminals = threadBuffers().terminals;
     terminals.clear();
     if (grammar_.findRule(start.symbol)) {
@@ -265,6 +318,10 @@ void BuildingGenerator::emitFacade(const BuildingContext &building, const StartS
             else addWallPiece(model, modelToFacadeFrame, start.facadeToWorld, alongPerimeter, terminal, key, baked);
             continue;
         }
+        if (const CorniceRule *cornice = corniceOf(terminal)) {
+            cornices.push_back(placeOf(terminal, *cornice, facade, firstMaterial(model, key)));
+            continue;
+        }
         made.instances.push_back({start.facadeToWorld * modelToFacadeFrame, key});
         ++made.stats.instances;
     }
@@ -277,11 +334,14 @@ BuildingGenerator::MadeBuilding BuildingGenerator::make(const BuildingSpec &spec
     made.id = spec.id;
     BuildingContext building = contextFor(spec.id, spec.objectId, spec.settings);
     Mesh &baked = startBakedMesh();
-    for (const StartShape &start : makeStartShapes(spec.footprint, building.heights.building)) {
-        float along = spec.footprint.perimeterBefore(start.edge);
-        if (spec.coarse) addPlainWall(building, start, along, baked);
-        else emitFacade(building, start, along, baked, made, warnings);
+    std::vector<StartShape> facades = makeStartShapes(spec.footprint, building.heights.building);
+    std::vector<CornicePlace> cornices;
+    for (size_t f = 0; f < facades.size(); ++f) {
+        float along = spec.footprint.perimeterBefore(facades[f].edge);
+        if (spec.coarse) addPlainWall(building, facades[f], along, baked);
+        else emitFacade(building, facades[f], f, along, baked, made, cornices, warnings);
     }
+    addCornices(cornices, facades, baked, made);
     addRoof(spec, building, baked, made, warnings);
     bakeMasonry(building, baked, made, warnings);
     made.stats.bakedTriangles = baked.triangleCount();
@@ -297,6 +357,11 @@ BuildingStats BuildingGenerator::add(MadeBuilding &&made, Mesh *merged) {
         instance.objectId = made.objectId;
         instance.buildingId = made.id;
         builder_.addInstance(instance);
+    }
+    for (const ConsoleSet &set : made.consoles) {
+        PrototypeId prototype = consolePrototypes_.get(set.objectFile, set);
+        for (const Transform &t : set.transforms)
+            builder_.addInstance({t, prototype, kNoMaterial, made.objectId, made.id, 0});
     }
     // A building has its mesh and record; a lone facade has no record, and a mesh only where
     // its rules baked walls.
@@ -322,7 +387,9 @@ BuildingStats BuildingGenerator::generateFacade(const FacadeSpec &spec, std::vec
     made.objectId = spec.objectId;
     made.id = spec.id;
     Mesh &baked = startBakedMesh();
-    emitFacade(building, start, 0, baked, made, warnings);
+    std::vector<CornicePlace> cornices;
+    emitFacade(building, start, 0, 0, baked, made, cornices, warnings);
+    addCornices(cornices, {start}, baked, made);
     bakeMasonry(building, baked, made, warnings);
     made.stats.bakedTriangles = baked.triangleCount();
     made.mesh = weldVertices(baked);

@@ -16,9 +16,11 @@
 
 #include "city/assets.h"
 #include "city/building_settings.h"
+#include "city/console_prototypes.h"
 #include "city/derivation.h"
 #include "city/footprint.h"
 #include "city/material_palette.h"
+#include "city/rule_cornices.h"
 #include "city/start_shapes.h"
 #include "core/error.h"
 #include "facade/facade_building.h"
@@ -92,9 +94,11 @@ class BuildingGenerator {
         std::vector<MasonryWall> masonry;
         std::vector<std::pair<uint32_t, const MasonryRule *>> masonryFacades;  // each wall's facade edge, rule
         std::optional<MasonryAtlas> masonryMaps;
+        std::vector<ConsoleSet> consoles;  // under the rules' <Cornice> sweeps, in the mesh
     };
 
-    // Throws InputError at a rule file's <Masonry> that names no wall model.
+    // Throws InputError at a rule file's <Masonry> that names no wall model, or <Cornice> that
+    // names one.
     BuildingGenerator(const Grammar &grammar, const AssetLibrary &assets, RenderSceneBuilder &builder, uint32_t seed,
                       const DerivationLimits &limits = {});
 
@@ -131,8 +135,12 @@ class BuildingGenerator {
         MaterialSet materials;
     };
     BuildingContext contextFor(uint32_t id, ObjectId objectId, const SettingsStack &settings) const;
-    void emitFacade(const BuildingContext &building, const StartShape &start, float alongPerimeter, Mesh &baked,
-                    MadeBuilding &made, std::vector<std::string> &warnings) const;
+    void emitFacade(const BuildingContext &building, const StartShape &start, size_t facade, float alongPerimeter,
+                    Mesh &baked, MadeBuilding &made, std::vector<CornicePlace> &cornices,
+                    std::vector<std::string> &warnings) const;
+    const CorniceRule *corniceOf(const Terminal &terminal) const;
+    void addCornices(const std::vector<CornicePlace> &places, const std::vector<StartShape> &facades, Mesh &baked,
+                     MadeBuilding &made) const;
     Terminal plainWallOf(const StartShape &start) const;
     void addPlainWall(const BuildingContext &building, const StartShape &start, float alongPerimeter,
                       Mesh &baked) const;
@@ -156,6 +164,8 @@ class BuildingGenerator {
     DerivationLimits limits_;
     uint32_t plainWall_;  // Wall0, for walls the rules have no start rule for
     std::unordered_map<uint32_t, std::vector<const MasonryRule *>> masonryModels_;  // the rules' <Masonry>
+    std::unordered_map<uint32_t, std::vector<const CorniceRule *>> corniceModels_;  // and <Cornice>
+    ConsolePrototypes consolePrototypes_;
     struct MasonryBaking {
         const Camera *camera;
         CameraRays rays;

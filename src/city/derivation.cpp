@@ -159,7 +159,7 @@ void Derivation::deriveSuccessor(uint32_t rule, const Grammar::Target &target, c
     child.zScale = successor.zScale != ZScale::NotSet ? successor.zScale : parent.zScale;
     if (target.isModel) {
         if (++shapes_ > limits_.maxShapes) failLimit(rule, fmt::format("makes more than {} shapes", limits_.maxShapes));
-        out_.push_back({target.index, child.toFacade, child.size, child.texture, child.uv, child.zScale});
+        out_.push_back({target.index, child.toFacade, child.size, child.texture, child.uv, child.zScale, rule});
         return;
     }
     deriveRule(target.index, child, depth + 1);

@@ -56,6 +56,7 @@ struct Terminal {
     const std::string *texture = nullptr;  // the inherited texture attribute, if any
     Vec2f uv{1.0f, 1.0f};
     ZScale zScale = ZScale::NotSet;
+    uint32_t rule = ~0u;  // the rule that placed it (index into the grammar's rules); ~0u: none
 };
 
 struct DerivationLimits {

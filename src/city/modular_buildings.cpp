@@ -15,7 +15,6 @@
 #include "core/input_file.h"
 #include "facade/building_description.h"
 #include "facade/facade_building.h"
-#include "io/mesh_import.h"
 
 namespace veduta {
 
@@ -180,7 +179,12 @@ ModularBuildingDesc footprintBuilding(const ModularLookDesc &look, const FileLoc
 
 ModularBuildings::ModularBuildings(const Camera &camera, RenderSceneBuilder &builder, AddImage addImage,
                                    MaterialAlbedo albedo) :
-    camera_(camera), rays_(camera), builder_(builder), addImage_(std::move(addImage)), albedo_(std::move(albedo)) {}
+    camera_(camera),
+    rays_(camera),
+    builder_(builder),
+    addImage_(std::move(addImage)),
+    albedo_(std::move(albedo)),
+    consoles_(builder) {}
 
 ModularBuildings::~ModularBuildings() = default;
 
@@ -255,7 +259,7 @@ void ModularBuildings::place(const ModularBuildingDesc &desc, Made made, std::ve
         addInstances(desc, it->second, set.transforms);
     }
     for (const ConsoleSet &set : building.consoles)
-        addInstances(desc, console(desc.style.parent_path() / set.objectFile, set), set.transforms);
+        addInstances(desc, consoles_.get(desc.style.parent_path() / set.objectFile, set), set.transforms);
     builder_.recordBuilding(recordOf(made.structure, building.mesh, desc.transform, desc.buildingId));
     builder_.addMesh(building.mesh, desc.transform, desc.objectId, desc.buildingId);
 }
@@ -276,21 +280,6 @@ ModularBuildings::LoadedStyle &ModularBuildings::style(const std::filesystem::pa
         it = styles_.emplace(file, std::move(loaded)).first;
     }
     return *it->second;
-}
-
-PrototypeId ModularBuildings::console(const std::filesystem::path &file, const ConsoleSet &set) {
-    auto [it, fresh] = consolePrototypes_.try_emplace({file.lexically_normal().string(), set.material}, 0);
-    if (fresh) {
-        Mesh model;
-        try {
-            model = importMesh(file);
-        } catch (const InputError &e) {
-            throw InputError(set.loc, e.what());
-        }
-        model.setMaterial(set.material);
-        it->second = builder_.addPrototype(std::move(model));
-    }
-    return it->second;
 }
 
 void ModularBuildings::addInstances(const ModularBuildingDesc &desc, PrototypeId prototype,

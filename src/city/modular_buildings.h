@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "city/console_prototypes.h"
 #include "description/scene_description.h"
 #include "facade/building_structure.h"
 #include "facade/facade_building.h"
@@ -72,7 +73,6 @@ class ModularBuildings {
 
     const BuildingStructure &structure(const std::filesystem::path &file);
     LoadedStyle &style(const std::filesystem::path &file);
-    PrototypeId console(const std::filesystem::path &file, const ConsoleSet &set);
     void addInstances(const ModularBuildingDesc &desc, PrototypeId prototype, const std::vector<Transform> &transforms);
 
     const Camera &camera_;
@@ -83,7 +83,7 @@ class ModularBuildings {
     std::map<std::filesystem::path, BuildingStructure> structures_;
     std::map<std::filesystem::path, std::unique_ptr<LoadedStyle>> styles_;
     std::map<const Mesh *, PrototypeId> openingPrototypes_;  // by the style's shared window models
-    std::map<std::pair<std::string, MaterialId>, PrototypeId> consolePrototypes_;
+    ConsolePrototypes consoles_;
 };
 
 }  // namespace veduta

@@ -188,6 +188,8 @@ class RuleSetReader {
                 includes.push_back(e);
             } else if (e.name() == "Masonry") {
                 readMasonry(e, baseDirectory);
+            } else if (e.name() == "Cornice") {
+                readCornice(e, baseDirectory);
             } else {
                 e.fail(fmt::format("unknown element <{}> in <Rulefile>", e.name()));
             }
@@ -263,6 +265,22 @@ class RuleSetReader {
         }
         e.checkLeaf();
         set_.masonry.push_back(std::move(rule));
+    }
+
+    // <Cornice model="…" rules="…" profile="file"/>, the file beside the rule file.
+    void readCornice(const XmlElement &e, const std::filesystem::path &baseDirectory) {
+        CorniceRule rule;
+        rule.loc = e.loc();
+        rule.model = e.string("model");
+        std::istringstream rules(e.string("rules", ""));
+        for (std::string name; rules >> name;) rule.rules.push_back(name);
+        std::filesystem::path file = e.string("profile");
+        if (file.is_relative()) file = baseDirectory / file;
+        rule.cornice = std::make_shared<const CorniceDescription>(
+            parseCorniceDescription(readDescription(e, "profile", file), file.string()));
+        rule.directory = file.parent_path();
+        e.checkLeaf();
+        set_.cornices.push_back(std::move(rule));
     }
 
     // A description file's text; one that cannot be read is said at the attribute naming it.
@@ -606,6 +624,13 @@ RuleSet RuleSetReader::finish() && {
                 }
             }
         }
+    }
+    for (const CorniceRule &cornice : set_.cornices) {
+        if (!isModel_(cornice.model))
+            throw InputError(cornice.loc, fmt::format("<Cornice model=\"{}\">: no such model", cornice.model));
+        for (const std::string &rule : cornice.rules)
+            if (!set_.find(rule))
+                throw InputError(cornice.loc, fmt::format("<Cornice rules=\"…\">: no rule derives '{}'", rule));
     }
     TerminationCheck(set_, isModel_).check();
     return std::move(set_);

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -14,6 +16,7 @@
 #include "core/vecmath.h"
 #include "description/settings_map.h"
 #include "facade/building_style.h"
+#include "facade/profile.h"
 
 namespace veduta {
 
@@ -90,10 +93,24 @@ struct MasonryRule {
     }
 };
 
+// <Cornice model="Cornice6Kranzleiste.wrl" rules="TopFloor SideFacade" profile="main.cornice"/>:
+// where those rules (all when not given) place that model, it is not set as an instance; the
+// places at one height are joined along the facade and round the building's corners and swept
+// with the profile's description (a cornice file, docs/facades.md), mitred, with its consoles.
+struct CorniceRule {
+    std::string model;
+    std::vector<std::string> rules;  // empty: wherever the model is placed
+    std::shared_ptr<const CorniceDescription> cornice;
+    std::filesystem::path directory;  // the cornice file's, where its consoles' files are found
+    FileLoc loc;
+};
+
 struct RuleSet {
     std::string name;  // Rulefile@name of the file that was read
     // In file order (an including file's own first): for a wall, the first that covers it.
     std::vector<MasonryRule> masonry;
+    // In file order, as masonry; for a model placed by a rule, the first that takes it.
+    std::vector<CorniceRule> cornices;
     std::vector<Rule> rules;
     std::unordered_map<std::string, uint32_t> ruleIndex;  // predecessor → index into rules
     // The rule files' <BuildingSettings>, defaults for properties the rules use; the first

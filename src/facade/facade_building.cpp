@@ -16,8 +16,8 @@
 #include "core/polygon_bounds.h"
 #include "facade/apron_ornament.h"
 #include "facade/casings.h"
-#include "facade/consoles.h"
 #include "facade/convex_pieces.h"
+#include "facade/cornice_run.h"
 #include "facade/floor_plan.h"
 #include "facade/plan_features.h"
 #include "facade/profile_sweep.h"
@@ -28,7 +28,6 @@ namespace veduta {
 
 namespace {
 
-constexpr double kArcStepDegrees = 10;
 // How far outside a wall a neighbour's roof is sought over an opening's sill (row 19).
 constexpr double kRoofProbe = 0.05;
 
@@ -462,53 +461,24 @@ class BuildingAssembly {
         if (!band || !band->cornice) return;
         SweepPath path = bandPath(facade, run);
         if (path.points.size() < (path.closed ? 3u : 2u)) return;
-        const CorniceDescription &cornice = *band->cornice;
-        ProfileOutline traced = traceProfile(cornice.profile, kArcStepDegrees);
-        double scale = heightScale(cornice.profile, traced, run.zTo - run.zFrom);
-        ProfileOutline outline = scaledOutline(traced, scale);
-        SweptCornice swept = sweepCornice(cornice, outline, path, {!path.closed, 1});
-        swept.mesh.setMaterial(material(style, StylePart::Cornice));
+        CorniceRun swept =
+            buildCorniceRun(*band->cornice, path, run.zTo - run.zFrom, material(style, StylePart::Cornice));
         result_.mesh.append(swept.mesh, Transform());
-        for (const Console &console : cornice.consoles) {
-            ConsoleSet set{console.objectFile, console.loc, material(style, StylePart::Cornice),
-                           placeConsoles(path, console, traced, scale)};
-            if (!set.transforms.empty()) result_.consoles.push_back(std::move(set));
-        }
+        for (ConsoleSet &set : swept.consoles) result_.consoles.push_back(std::move(set));
     }
 
     // The run's elements as a plan polyline, at the joints of their base walls.
     static SweepPath bandPath(const StoreyFacade &facade, const BandRun &run) {
-        SweepPath path;
-        path.baseHeight = run.zFrom;
-        path.closed = run.aroundTheOutline;
-        auto push = [&](Vec2d p) {
-            if (path.points.empty() || length(p - path.points.back()) > 1e-6) path.points.push_back(p);
-        };
+        std::vector<Vec2d> points;
         size_t n = facade.elements.size();
         for (size_t k = 0; k < run.count; ++k) {
             const FacadeElement &e = facade.elements[(run.first + k) % n];
             const BaseWall &wall = facade.baseWalls[e.baseWall];
             Vec2d direction = (wall.end - wall.start) * (1 / wall.length());
-            push(wall.start + direction * e.from);
-            push(wall.start + direction * e.to);
+            points.push_back(wall.start + direction * e.from);
+            points.push_back(wall.start + direction * e.to);
         }
-        if (path.closed && path.points.size() > 1 && length(path.points.front() - path.points.back()) <= 1e-6)
-            path.points.pop_back();
-        removeStraightPoints(path);
-        return path;
-    }
-
-    // Element joints along one straight wall are no corners: the sweep gets the turns only.
-    static void removeStraightPoints(SweepPath &path) {
-        std::vector<Vec2d> kept;
-        size_t n = path.points.size();
-        for (size_t i = 0; i < n; ++i) {
-            bool end = !path.closed && (i == 0 || i + 1 == n);
-            Vec2d prev = path.points[(i + n - 1) % n], next = path.points[(i + 1) % n], p = path.points[i];
-            Vec2d a = p - prev, b = next - p;
-            if (end || std::abs(cross(a, b)) > 1e-9 * length(a) * length(b) || dot(a, b) < 0) kept.push_back(p);
-        }
-        path.points = std::move(kept);
+        return sweepPathThrough(points, run.zFrom, run.aroundTheOutline, OutwardSide::Right);
     }
 
     // --- roofs ---------------------------------------------------------------------------

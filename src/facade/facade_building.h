@@ -38,6 +38,7 @@
 #include "core/vecmath.h"
 #include "facade/building_structure.h"
 #include "facade/building_style.h"
+#include "facade/cornice_run.h"
 #include "facade/masonry.h"
 #include "scene/mesh.h"
 
@@ -86,14 +87,6 @@ class WindowAssemblies {
     std::mutex mutex_;
     const BuildingStyle *style_ = nullptr;
     std::map<Key, WindowAssembly> built_;
-};
-
-// A console model set along a cornice: one instance per transform (consoles.h's unit box).
-struct ConsoleSet {
-    std::string objectFile;  // as the cornice description names it
-    FileLoc loc;
-    MaterialId material = kNoMaterial;
-    std::vector<Transform> transforms;
 };
 
 struct FacadeBuilding {
