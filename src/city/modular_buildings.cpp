@@ -42,15 +42,29 @@ void checkPrototype(const BuildingStructure &structure, const ModularBuildingDes
                                  desc.structure.string(), structure.modules.size()));
 }
 
-// The structure on the element's footprint, if it gives one, with the storeys the data asks for.
-BuildingStructure placedStructure(const BuildingStructure &structure, const ModularBuildingDesc &desc) {
+// The structure on the element's footprint, if it gives one, with the storeys the data asks for;
+// a count or height beyond kStructureStoreyLimit storeys is built at the limit and said in `notes`.
+BuildingStructure placedStructure(const BuildingStructure &structure, const ModularBuildingDesc &desc,
+                                  std::vector<std::string> &notes) {
     if (desc.footprint.empty()) return structure;
     std::vector<Vec2d> footprint;
     for (Vec2f p : desc.footprint) footprint.push_back({p.x, p.y});
     BuildingStructure placed = structureOnFootprint(structure.modules[0], footprint, desc.footprintLoc);
     const std::vector<double> &written = structure.modules[0].storeyHeights;
-    if (desc.storeys) refitStoreys(placed, std::clamp<size_t>(*desc.storeys, 1, kStructureStoreyLimit));
-    else if (desc.eaves) refitStoreys(placed, storeysNearest(written, *desc.eaves));
+    if (desc.storeys) {
+        if (*desc.storeys > kStructureStoreyLimit)
+            notes.push_back(fmt::format("the data counts {} storeys, more than a building may have; built with {}",
+                                        *desc.storeys, kStructureStoreyLimit));
+        refitStoreys(placed, std::clamp<size_t>(*desc.storeys, 1, kStructureStoreyLimit));
+    } else if (desc.eaves) {
+        size_t count = storeysNearest(written, *desc.eaves);
+        if (count == kStructureStoreyLimit)
+            notes.push_back(
+                fmt::format("eaves {:.1f} m high would take more storeys than a building may have; "
+                            "built with {}",
+                            *desc.eaves, kStructureStoreyLimit));
+        refitStoreys(placed, count);
+    }
     return placed;
 }
 
@@ -224,8 +238,9 @@ ModularBuildings::Made ModularBuildings::make(const ModularBuildingDesc &desc, u
                                               const BuildingStructure &structure, LoadedStyle &style) const {
     Made made;
     checkPrototype(structure, desc);
+    std::vector<std::string> notes;
     try {
-        made.structure = placedStructure(structure, desc);
+        made.structure = placedStructure(structure, desc, notes);
     } catch (const InputError &e) {
         if (!desc.fromData) throw;
         made.leftOut = e.what();
@@ -236,9 +251,11 @@ ModularBuildings::Made ModularBuildings::make(const ModularBuildingDesc &desc, u
     };
     if (desc.coarse && pickedAsCoarse(*desc.coarse, camera_, made.structure, desc.transform)) {
         made.building.mesh = coarseBlock(made.structure, style.style, material);
+        made.building.notes = std::move(notes);
         return made;
     }
     made.building = buildFacadeBuilding(made.structure, style.style, material, seed, desc.buildingId, style.windows);
+    made.building.notes.insert(made.building.notes.begin(), notes.begin(), notes.end());
     // A relief alone (an apron's) shows its material's albedo; the atlas replaces the material's.
     for (MasonryWall &wall : made.building.masonry)
         if (wall.masonry.relief && wall.masonry.stones.empty())

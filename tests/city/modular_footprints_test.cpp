@@ -274,6 +274,49 @@ TEST(ModularFootprints, AnUnusableFootprintFromDataIsLeftOutAndCounted) {
     EXPECT_EQ(test::inputErrorOf([&] { strict.add({descs[0]}, {1}, run, warnings); }).rfind("data:3:1: ", 0), 0u);
 }
 
+// Data that counts more storeys than a building may have (kStructureStoreyLimit), or gives eaves
+// that high, is built at the limit and says so; nothing is clamped unsaid.
+TEST(ModularFootprints, StoreysBeyondTheLimitAreBuiltAtItAndSaid) {
+    RenderSceneBuilder builder;
+    for (const Style &style : townhouseStyle("ochre.style").styles)
+        for (const std::optional<std::string> &name : style.materials)
+            if (name && builder.findMaterial(*name) == kNoMaterial)
+                builder.addMaterial(Material::lambertian(*name, {0.5f, 0.5f, 0.5f}));
+    Camera camera;
+    camera.position = {-900, -900, 400};
+    camera.lookAt = {0, 0, 300};
+    ModularBuildings modular(camera, builder, [](Image) { return TextureId(0); });
+    ModularLookDesc look{
+        kTownhouse / "townhouse.structure", kTownhouse / "ochre.style", {"look.xml", 1, 1}, {"look.xml", 1, 2}};
+    const std::vector<Vec2f> box{{0, 0}, {12, 0}, {12, 10}, {0, 10}};
+    std::vector<ModularBuildingDesc> descs{footprintBuilding(look, {"data", 3, 1}, box, std::nullopt, 0),
+                                           footprintBuilding(look, {"data", 4, 1}, box, std::nullopt, 0),
+                                           footprintBuilding(look, {"data", 5, 1}, box, std::nullopt, 0)};
+    descs[0].storeys = 500;
+    descs[1].eaves = 5000.0;
+    descs[2].storeys = kStructureStoreyLimit;
+    for (size_t i = 0; i < descs.size(); ++i) descs[i].transform = Transform::translate({40.0f * float(i), 0, 0});
+    std::vector<std::string> warnings;
+    auto run = [](const FileLoc &, const std::function<void()> &add) { add(); };
+    modular.add(descs, {1, 2, 3}, run, warnings);
+    auto said = [&](const std::string &start, const std::string &text) {
+        return std::count_if(warnings.begin(), warnings.end(), [&](const std::string &w) {
+            return w.starts_with(start) && w.find(text) != std::string::npos;
+        });
+    };
+    EXPECT_EQ(said("data:3:1: ", "the data counts 500 storeys, more than a building may have; built with 200"), 1)
+        << ::testing::PrintToString(warnings);
+    EXPECT_EQ(said("data:4:1: ", "eaves 5000.0 m high would take more storeys than a building may have"), 1)
+        << ::testing::PrintToString(warnings);
+    EXPECT_EQ(said("data:5:1: ", "storeys"), 0) << ::testing::PrintToString(warnings);  // at the limit: as asked
+    RenderScene scene = std::move(builder).build();
+    ASSERT_EQ(scene.buildings.size(), 3u);
+    for (const BuildingRecord &b : scene.buildings) {
+        EXPECT_GT(b.eaves, 500.0f);  // 200 storeys of about 3.6 m
+        EXPECT_EQ(b.eaves, scene.buildings[2].eaves);
+    }
+}
+
 // The ALK sample of LV Sachsen: every Folie 011 footprint, as others drew it, either stands as a
 // town house of modules or is refused with an InputError that says why, never a crash; nearly all
 // stand.
