@@ -238,20 +238,28 @@ TEST(ModularFootprints, CityGmlBuildingsStandOnTheirTwinsFootprints) {
     EXPECT_GT(house.ridge, house.eaves + 1);
 }
 
-// A footprint from data that no partition fits is left out and counted in one warning; the same
-// footprint given in a scene is an error at its attribute.
-TEST(ModularFootprints, AnUnusableFootprintFromDataIsLeftOutAndCounted) {
-    RenderSceneBuilder builder;
+// The ochre town house's materials, plain grey, and its look as a data element would give it.
+void addOchreMaterials(RenderSceneBuilder &builder) {
     for (const Style &style : townhouseStyle("ochre.style").styles)
         for (const std::optional<std::string> &name : style.materials)
             if (name && builder.findMaterial(*name) == kNoMaterial)
                 builder.addMaterial(Material::lambertian(*name, {0.5f, 0.5f, 0.5f}));
+}
+
+ModularLookDesc ochreLook() {
+    return {kTownhouse / "townhouse.structure", kTownhouse / "ochre.style", {"look.xml", 1, 1}, {"look.xml", 1, 2}};
+}
+
+// A footprint from data that no partition fits is left out and counted in one warning; the same
+// footprint given in a scene is an error at its attribute.
+TEST(ModularFootprints, AnUnusableFootprintFromDataIsLeftOutAndCounted) {
+    RenderSceneBuilder builder;
+    addOchreMaterials(builder);
     Camera camera;
     camera.position = {-40, -40, 20};
     camera.lookAt = {0, 0, 5};
     ModularBuildings modular(camera, builder, [](Image) { return TextureId(0); });
-    ModularLookDesc look{
-        kTownhouse / "townhouse.structure", kTownhouse / "ochre.style", {"look.xml", 1, 1}, {"look.xml", 1, 2}};
+    const ModularLookDesc look = ochreLook();
     const std::vector<Vec2f> bowTie{{0, 0}, {10, 10}, {10, 0}, {0, 10}}, box{{0, 0}, {12, 0}, {12, 10}, {0, 10}};
     std::vector<ModularBuildingDesc> descs{footprintBuilding(look, {"data", 3, 1}, bowTie, std::nullopt, 0),
                                            footprintBuilding(look, {"data", 4, 1}, box, std::nullopt, 0),
@@ -278,16 +286,12 @@ TEST(ModularFootprints, AnUnusableFootprintFromDataIsLeftOutAndCounted) {
 // that high, is built at the limit and says so; nothing is clamped unsaid.
 TEST(ModularFootprints, StoreysBeyondTheLimitAreBuiltAtItAndSaid) {
     RenderSceneBuilder builder;
-    for (const Style &style : townhouseStyle("ochre.style").styles)
-        for (const std::optional<std::string> &name : style.materials)
-            if (name && builder.findMaterial(*name) == kNoMaterial)
-                builder.addMaterial(Material::lambertian(*name, {0.5f, 0.5f, 0.5f}));
+    addOchreMaterials(builder);
     Camera camera;
     camera.position = {-900, -900, 400};
     camera.lookAt = {0, 0, 300};
     ModularBuildings modular(camera, builder, [](Image) { return TextureId(0); });
-    ModularLookDesc look{
-        kTownhouse / "townhouse.structure", kTownhouse / "ochre.style", {"look.xml", 1, 1}, {"look.xml", 1, 2}};
+    const ModularLookDesc look = ochreLook();
     const std::vector<Vec2f> box{{0, 0}, {12, 0}, {12, 10}, {0, 10}};
     std::vector<ModularBuildingDesc> descs{footprintBuilding(look, {"data", 3, 1}, box, std::nullopt, 0),
                                            footprintBuilding(look, {"data", 4, 1}, box, std::nullopt, 0),
