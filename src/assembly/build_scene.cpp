@@ -108,8 +108,11 @@ class SceneAssembler {
         }
         GroundHeight ground = landscape ? landscape->ground : GroundHeight();
         if (slgLand) slgLand->ground = ground;
-        // Where baked masonry's maps go (rule files' <Masonry>, <modular_building>).
-        AddImage masonryMaps = [&](Image image) { return texture(std::move(image)); };
+        // Where masonry's maps go (rule files' <Masonry>, <modular_building>): baked images, or the
+        // shaders' procedural maps.
+        MasonryOutput masonryMaps{
+            d_.proceduralMasonry, [&](Image image) { return texture(std::move(image)); },
+            [&](std::shared_ptr<const ProceduralTexture> t) { return textures().add(std::move(t)); }};
         for (const BuildingGroupDesc &group : d_.buildingGroups) {
             within(group.loc, "<buildings>", [&] {
                 generateBuildings(group, seedOf(group.seed), ground, builder_, warnings_, &camera, masonryMaps);

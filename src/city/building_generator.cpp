@@ -102,8 +102,8 @@ BuildingGenerator::BuildingGenerator(const Grammar &grammar, const AssetLibrary 
     }
 }
 
-void BuildingGenerator::bakeMasonryWith(const Camera &camera, AddImage addImage) {
-    masonryBaking_.emplace(MasonryBaking{&camera, CameraRays(camera), std::move(addImage)});
+void BuildingGenerator::bakeMasonryWith(const Camera &camera, MasonryOutput masonry) {
+    masonryBaking_.emplace(MasonryBaking{&camera, CameraRays(camera), std::move(masonry)});
 }
 
 PrototypeId BuildingGenerator::prototypeFor(const PrototypeKey &key) {
@@ -229,6 +229,10 @@ void BuildingGenerator::bakeMasonry(const BuildingContext &building, Mesh &baked
         // The rule's place in the file, stable where its address is not.
         auto place = uint32_t(rule - grammar_.rules().masonry.data());
         wall.masonry = layStyleMasonry(rule->style, wall.face, seed_, hashValues({building.id, edge, place}));
+    }
+    if (masonryBaking_->output.procedural) {
+        made.masonryShader = shadeMasonry(baked, made.masonry);
+        return;
     }
     made.masonryMaps = bakeMasonryMaps(baked, made.masonry, Transform(), masonryBaking_->rays, *masonryBaking_->camera);
     for (MasonryWall &wall : made.masonry) wall.masonry.stones = {};
@@ -366,8 +370,11 @@ BuildingStats BuildingGenerator::add(MadeBuilding &&made, Mesh *merged) {
     // A building has its mesh and record; a lone facade has no record, and a mesh only where
     // its rules baked walls.
     if (made.masonryMaps)
-        addMasonryMaps(made.mesh, made.masonry, std::move(*made.masonryMaps), builder_, masonryBaking_->addImage,
+        addMasonryMaps(made.mesh, made.masonry, std::move(*made.masonryMaps), builder_, masonryBaking_->output.addImage,
                        made.id);
+    if (made.masonryShader)
+        addMasonryShader(made.mesh, made.masonry, std::move(made.masonryShader), builder_,
+                         masonryBaking_->output.addProcedural, made.id);
     bool building = made.record.has_value();
     if (building) builder_.recordBuilding(std::move(*made.record));
     if (merged) merged->append(made.mesh, Transform());

@@ -19,6 +19,7 @@
 #include "city/console_prototypes.h"
 #include "city/derivation.h"
 #include "city/footprint.h"
+#include "city/masonry_maps.h"
 #include "city/material_palette.h"
 #include "city/rule_cornices.h"
 #include "city/start_shapes.h"
@@ -93,7 +94,8 @@ class BuildingGenerator {
         // The walls of the rules' <Masonry> models (their stones dropped once baked) and their atlas.
         std::vector<MasonryWall> masonry;
         std::vector<std::pair<uint32_t, const MasonryRule *>> masonryFacades;  // each wall's facade edge, rule
-        std::optional<MasonryAtlas> masonryMaps;
+        std::optional<MasonryAtlas> masonryMaps;                               // baked
+        std::shared_ptr<const MasonryShader> masonryShader;                    // or shaded
         std::vector<ConsoleSet> consoles;  // under the rules' <Cornice> sweeps, in the mesh
     };
 
@@ -102,10 +104,10 @@ class BuildingGenerator {
     BuildingGenerator(const Grammar &grammar, const AssetLibrary &assets, RenderSceneBuilder &builder, uint32_t seed,
                       const DerivationLimits &limits = {});
 
-    // What baking the rules' <Masonry> needs: the camera its texels are matched to, and where the
-    // maps go. Without it (a library caller), those walls keep their model's texture, and the
-    // first building says so.
-    void bakeMasonryWith(const Camera &camera, AddImage addImage);
+    // What the rules' <Masonry> needs: the camera its texels are matched to, and where the
+    // masonry goes, baked or shaded. Without it (a library caller), those walls keep their
+    // model's texture, and the first building says so.
+    void bakeMasonryWith(const Camera &camera, MasonryOutput masonry);
 
     // Emits one building into the builder: add(make(building)). Warnings are appended as
     // "file:line:col: message"; problems in the rules or settings throw InputError.
@@ -169,7 +171,7 @@ class BuildingGenerator {
     struct MasonryBaking {
         const Camera *camera;
         CameraRays rays;
-        AddImage addImage;
+        MasonryOutput output;
     };
     std::optional<MasonryBaking> masonryBaking_;
     mutable std::atomic<bool> masonryUnbakedSaid_ = false;

@@ -47,7 +47,7 @@ ModelEffort effortOf(const BuildingGroupDesc &group) {
 
 void generateGroup(const BuildingGroupDesc &group, uint32_t seed, const GroundHeight &ground,
                    RenderSceneBuilder &builder, std::vector<std::string> &warnings, const Camera *camera,
-                   const AddImage &masonryMaps) {
+                   const MasonryOutput &masonryMaps) {
     if (!std::filesystem::is_regular_file(group.rules))
         throw InputError(group.rulesLoc, fmt::format("cannot read the rule file {}", group.rules.string()));
     BuildingRules loaded(group.rules);
@@ -87,7 +87,7 @@ void generateGroup(const BuildingGroupDesc &group, uint32_t seed, const GroundHe
 
 void generateBuildings(const BuildingGroupDesc &group, uint32_t seed, const GroundHeight &ground,
                        RenderSceneBuilder &builder, std::vector<std::string> &out, const Camera *camera,
-                       const AddImage &masonryMaps) {
+                       const MasonryOutput &masonryMaps) {
     std::vector<std::string> warnings;
     try {
         generateGroup(group, seed, ground, builder, warnings, camera, masonryMaps);

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "city/masonry_maps.h"
 #include "description/scene_description.h"
 #include "geo/ground_height.h"
 #include "scene/camera.h"
@@ -21,6 +22,6 @@ namespace veduta {
 // `masonryMaps`; without them, those walls keep their model's texture (a warning says so).
 void generateBuildings(const BuildingGroupDesc &group, uint32_t seed, const GroundHeight &ground,
                        RenderSceneBuilder &builder, std::vector<std::string> &warnings, const Camera *camera = nullptr,
-                       const AddImage &masonryMaps = {});
+                       const MasonryOutput &masonryMaps = {});
 
 }  // namespace veduta

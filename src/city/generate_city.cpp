@@ -609,7 +609,7 @@ std::vector<Vec3f> groundJunctions(const CityData &data, const LandscapeGround *
 
 uint32_t generateCity(const CityDesc &city, const SceneCity &read, uint32_t seed, const LandscapeGround *landscape,
                       RenderSceneBuilder &builder, std::vector<std::string> &out, const Camera &camera,
-                      const AddImage &masonryMaps, ModularBuildings *modular) {
+                      const MasonryOutput &masonryMaps, ModularBuildings *modular) {
     VEDUTA_CHECK(!city.modular || modular, "a city with a modular look has its modular buildings");
     return withWarnings(out, [&](std::vector<std::string> &warnings) {
         const ModularLookDesc *look = city.modular ? &*city.modular : nullptr;

@@ -11,6 +11,7 @@
 #include "city/city_data.h"
 #include "city/footprint.h"
 #include "city/futuristic_city.h"
+#include "city/masonry_maps.h"
 #include "city/modular_buildings.h"
 #include "city/street_geometry.h"
 #include "city/street_index.h"
@@ -68,13 +69,13 @@ SceneCity readCity(const CityDesc &city, const std::optional<Georeference> &geor
 struct BuildingDetail {
     std::optional<Camera> camera;
     CoarseRule coarse;
-    AddImage masonryMaps = {};
+    MasonryOutput masonryMaps = {};
     const ModularLookDesc *look = nullptr;
     ModularBuildings *modular = nullptr;
 };
 uint32_t generateCity(const CityDesc &city, const SceneCity &read, uint32_t seed, const LandscapeGround *landscape,
                       RenderSceneBuilder &builder, std::vector<std::string> &warnings, const Camera &camera,
-                      const AddImage &masonryMaps = {}, ModularBuildings *modular = nullptr);
+                      const MasonryOutput &masonryMaps = {}, ModularBuildings *modular = nullptr);
 // The same for a city made in memory (as the benchmark does); errors about the city as a
 // whole (no rule file) have no place in a file.
 uint32_t generateCity(const CityData &data, uint32_t seed, ObjectId objectId, RenderSceneBuilder &builder,

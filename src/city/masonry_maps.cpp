@@ -191,18 +191,19 @@ std::optional<MasonryAtlas> bakeMasonryMaps(Mesh &mesh, const std::vector<Masonr
     return atlas;
 }
 
-void addMasonryMaps(Mesh &mesh, const std::vector<MasonryWall> &walls, MasonryAtlas atlas, RenderSceneBuilder &builder,
-                    const AddImage &addImage, uint32_t buildingId) {
-    TextureId diffuse = addImage(std::move(atlas.diffuse));
-    TextureId normal = addImage(std::move(atlas.normal));
-    TextureId specular = addImage(std::move(atlas.specular));
+namespace {
+
+// Gives each wall's triangles a copy of its material (named "… (building N masonry)") that reads
+// the maps; texture coordinates are the maps' own (textureSize 1).
+void giveWallsMaps(Mesh &mesh, const std::vector<MasonryWall> &walls, TextureId diffuse, TextureId normal,
+                   TextureId specular, RenderSceneBuilder &builder, uint32_t buildingId) {
     std::map<MaterialId, MaterialId> mapped;
     for (const MasonryWall &wall : walls) {
         auto [it, fresh] = mapped.try_emplace(wall.material, kNoMaterial);
         if (fresh) {
             Material m = builder.materials().at(wall.material == kNoMaterial ? 0 : wall.material);
             m.name = fmt::format("{} (building {} masonry)", m.name, buildingId);
-            m.diffuse = Vec3f(1.0f);  // the atlas holds the colours
+            m.diffuse = Vec3f(1.0f);  // the maps hold the colours
             m.diffuseMap = diffuse;
             m.normalMap = normal;
             m.specularMap = specular;
@@ -212,6 +213,40 @@ void addMasonryMaps(Mesh &mesh, const std::vector<MasonryWall> &walls, MasonryAt
         }
         for (uint32_t t : wall.triangles) mesh.triangleMaterials[t] = it->second;
     }
+}
+
+}  // namespace
+
+void addMasonryMaps(Mesh &mesh, const std::vector<MasonryWall> &walls, MasonryAtlas atlas, RenderSceneBuilder &builder,
+                    const AddImage &addImage, uint32_t buildingId) {
+    TextureId diffuse = addImage(std::move(atlas.diffuse));
+    TextureId normal = addImage(std::move(atlas.normal));
+    TextureId specular = addImage(std::move(atlas.specular));
+    giveWallsMaps(mesh, walls, diffuse, normal, specular, builder, buildingId);
+}
+
+std::shared_ptr<const MasonryShader> shadeMasonry(Mesh &mesh, std::vector<MasonryWall> &walls) {
+    if (walls.empty()) return nullptr;
+    std::vector<ShadedWall> shaded;
+    for (MasonryWall &wall : walls) shaded.push_back({std::move(wall.masonry), wall.face});
+    auto shader = std::make_shared<const MasonryShader>(std::move(shaded));
+    for (size_t w = 0; w < walls.size(); ++w) {
+        // Walls share no vertex (as the atlas's tiles): each vertex is moved once.
+        std::set<uint32_t> vertices;
+        for (uint32_t t : walls[w].triangles)
+            vertices.insert(&mesh.indices[3 * size_t(t)], &mesh.indices[3 * size_t(t) + 3]);
+        for (uint32_t v : vertices) mesh.uvs[v] = shader->uvOf(w, {mesh.uvs[v].x, mesh.uvs[v].y});
+        walls[w].masonry = {};
+    }
+    return shader;
+}
+
+void addMasonryShader(Mesh &mesh, const std::vector<MasonryWall> &walls, std::shared_ptr<const MasonryShader> shader,
+                      RenderSceneBuilder &builder, const AddProcedural &addProcedural, uint32_t buildingId) {
+    TextureId diffuse = addProcedural(std::make_shared<MasonryTexture>(shader, MasonryMap::Diffuse));
+    TextureId normal = addProcedural(std::make_shared<MasonryTexture>(shader, MasonryMap::Normal));
+    TextureId specular = addProcedural(std::make_shared<MasonryTexture>(shader, MasonryMap::Specular));
+    giveWallsMaps(mesh, walls, diffuse, normal, specular, builder, buildingId);
 }
 
 }  // namespace veduta

@@ -15,11 +15,13 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "facade/facade_building.h"
 #include "facade/masonry_atlas.h"
+#include "facade/masonry_shader.h"
 #include "scene/camera.h"
 #include "scene/mesh.h"
 #include "scene/render_scene.h"
@@ -35,6 +37,17 @@ inline constexpr size_t kBuildingMasonryTexels = size_t(1) << 21;
 // The finest texel asked for, metres: finer than a brick's chamfer shows nothing more.
 inline constexpr double kFinestMasonryTexel = 0.002;
 
+// Where a generator's masonry goes (docs/facades.md, "Baked or shaded procedurally"): baked into an
+// atlas whose maps go through `addImage`, or, `procedural`, kept as stones for a MasonryShader
+// whose maps go through `addProcedural`.
+struct MasonryOutput {
+    bool procedural = false;
+    AddImage addImage;
+    AddProcedural addProcedural;
+
+    explicit operator bool() const { return procedural ? bool(addProcedural) : bool(addImage); }
+};
+
 // The atlas of `walls` (triangles of `mesh`, whose object-to-world transform is `toWorld`), with
 // the walls' texture coordinates moved from wall metres onto it; nothing when there are no walls.
 // Touches no scene: buildings may be baked in parallel.
@@ -45,5 +58,14 @@ std::optional<MasonryAtlas> bakeMasonryMaps(Mesh &mesh, const std::vector<Masonr
 // "… (building N masonry)") that reads them.
 void addMasonryMaps(Mesh &mesh, const std::vector<MasonryWall> &walls, MasonryAtlas atlas, RenderSceneBuilder &builder,
                     const AddImage &addImage, uint32_t buildingId);
+
+// The walls' masonry as one shader, their stones moved into it and their triangles' texture
+// coordinates into its space; nothing when there are no walls. Touches no scene.
+std::shared_ptr<const MasonryShader> shadeMasonry(Mesh &mesh, std::vector<MasonryWall> &walls);
+
+// Registers the shader's maps and gives the walls' triangles their material copies, as
+// addMasonryMaps does.
+void addMasonryShader(Mesh &mesh, const std::vector<MasonryWall> &walls, std::shared_ptr<const MasonryShader> shader,
+                      RenderSceneBuilder &builder, const AddProcedural &addProcedural, uint32_t buildingId);
 
 }  // namespace veduta

@@ -154,7 +154,8 @@ struct ModularBuildings::Made {
     std::string leftOut;  // a footprint from data that no partition fits: why
     BuildingStructure structure;
     FacadeBuilding building;
-    std::optional<MasonryAtlas> atlas;
+    std::optional<MasonryAtlas> atlas;            // baked
+    std::shared_ptr<const MasonryShader> shader;  // or shaded
 };
 
 // Footprints from data left out, counted: a district's worth of them is one warning, not thousands.
@@ -191,12 +192,12 @@ ModularBuildingDesc footprintBuilding(const ModularLookDesc &look, const FileLoc
     return desc;
 }
 
-ModularBuildings::ModularBuildings(const Camera &camera, RenderSceneBuilder &builder, AddImage addImage,
+ModularBuildings::ModularBuildings(const Camera &camera, RenderSceneBuilder &builder, MasonryOutput masonry,
                                    MaterialAlbedo albedo) :
     camera_(camera),
     rays_(camera),
     builder_(builder),
-    addImage_(std::move(addImage)),
+    masonry_(std::move(masonry)),
     albedo_(std::move(albedo)),
     consoles_(builder) {}
 
@@ -261,7 +262,8 @@ ModularBuildings::Made ModularBuildings::make(const ModularBuildingDesc &desc, u
         if (wall.masonry.relief && wall.masonry.stones.empty())
             wall.masonry.mortarColour =
                 albedo_ ? albedo_(wall.material) : builder_.materials().at(wall.material).diffuse;
-    made.atlas = bakeMasonryMaps(made.building.mesh, made.building.masonry, desc.transform, rays_, camera_);
+    if (masonry_.procedural) made.shader = shadeMasonry(made.building.mesh, made.building.masonry);
+    else made.atlas = bakeMasonryMaps(made.building.mesh, made.building.masonry, desc.transform, rays_, camera_);
     return made;
 }
 
@@ -269,7 +271,11 @@ void ModularBuildings::place(const ModularBuildingDesc &desc, Made made, std::ve
     FacadeBuilding &building = made.building;
     for (const std::string &note : building.notes) warnings.push_back(desc.loc.toString() + ": " + note);
     if (made.atlas)
-        addMasonryMaps(building.mesh, building.masonry, std::move(*made.atlas), builder_, addImage_, desc.buildingId);
+        addMasonryMaps(building.mesh, building.masonry, std::move(*made.atlas), builder_, masonry_.addImage,
+                       desc.buildingId);
+    if (made.shader)
+        addMasonryShader(building.mesh, building.masonry, std::move(made.shader), builder_, masonry_.addProcedural,
+                         desc.buildingId);
     for (const OpeningSet &set : building.openingSets) {
         auto [it, fresh] = openingPrototypes_.try_emplace(set.model.get(), 0);
         if (fresh) it->second = builder_.addPrototype(*set.model);

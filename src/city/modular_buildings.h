@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "city/console_prototypes.h"
+#include "city/masonry_maps.h"
 #include "description/scene_description.h"
 #include "facade/building_structure.h"
 #include "facade/facade_building.h"
@@ -42,8 +43,9 @@ class ModularBuildings {
     // material's. Without one, the material's colour.
     using MaterialAlbedo = std::function<Vec3f(MaterialId)>;
 
-    // `camera` and `builder` outlive this; `addImage` registers the baked atlases.
-    ModularBuildings(const Camera &camera, RenderSceneBuilder &builder, AddImage addImage, MaterialAlbedo albedo = {});
+    // `camera` and `builder` outlive this; `masonry` takes the walls' masonry, baked or shaded.
+    ModularBuildings(const Camera &camera, RenderSceneBuilder &builder, MasonryOutput masonry,
+                     MaterialAlbedo albedo = {});
     ~ModularBuildings();
     ModularBuildings(const ModularBuildings &) = delete;
     ModularBuildings &operator=(const ModularBuildings &) = delete;
@@ -78,7 +80,7 @@ class ModularBuildings {
     const Camera &camera_;
     CameraRays rays_;
     RenderSceneBuilder &builder_;
-    AddImage addImage_;
+    MasonryOutput masonry_;
     MaterialAlbedo albedo_;
     std::map<std::filesystem::path, BuildingStructure> structures_;
     std::map<std::filesystem::path, std::unique_ptr<LoadedStyle>> styles_;

@@ -109,20 +109,6 @@ std::vector<float> distancesFromStoneEdges(const IdRaster &raster) {
     return distance;
 }
 
-// The relief's height at a wall point: bilinear between its cells' centres, held at its edge cells,
-// 0 outside it.
-double reliefAt(const MasonryRelief &relief, Vec2d p) {
-    const Image &image = *relief.heights;
-    double column = (p.x - relief.origin.x) / relief.cellSize;
-    double fromTop = image.height - (p.y - relief.origin.y) / relief.cellSize;
-    if (column < 0 || fromTop < 0 || column > image.width || fromTop > image.height) return 0;
-    double x = std::clamp(column - 0.5, 0.0, image.width - 1.0), y = std::clamp(fromTop - 0.5, 0.0, image.height - 1.0);
-    int x0 = int(x), y0 = int(y), x1 = std::min(x0 + 1, image.width - 1), y1 = std::min(y0 + 1, image.height - 1);
-    double fx = x - x0, fy = y - y0;
-    auto at = [&](int cx, int cy) { return double(image.pixels[size_t(cy) * size_t(image.width) + size_t(cx)]); };
-    return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x1, y0)) + fy * ((1 - fx) * at(x0, y1) + fx * at(x1, y1));
-}
-
 // How far each texel stands out of the mortar, in metres: a stone's depth, falling to the mortar
 // over the bevel at its edges, and the relief's height where it has one.
 std::vector<double> heights(const IdRaster &raster, const Masonry &masonry, double bevel) {
@@ -140,7 +126,7 @@ std::vector<double> heights(const IdRaster &raster, const Masonry &masonry, doub
     if (masonry.relief)
         for (int row = 0; row < raster.height; ++row)
             for (int x = 0; x < raster.width; ++x)
-                height[size_t(row) * size_t(raster.width) + size_t(x)] += reliefAt(
+                height[size_t(row) * size_t(raster.width) + size_t(x)] += reliefHeightAt(
                     *masonry.relief,
                     {raster.origin.x + (x + 0.5) * raster.texelSize, raster.top() - (row + 0.5) * raster.texelSize});
     return height;
@@ -164,6 +150,18 @@ void writeNormals(const IdRaster &raster, const std::vector<double> &height, Ima
 }
 
 }  // namespace
+
+double reliefHeightAt(const MasonryRelief &relief, Vec2d p) {
+    const Image &image = *relief.heights;
+    double column = (p.x - relief.origin.x) / relief.cellSize;
+    double fromTop = image.height - (p.y - relief.origin.y) / relief.cellSize;
+    if (column < 0 || fromTop < 0 || column > image.width || fromTop > image.height) return 0;
+    double x = std::clamp(column - 0.5, 0.0, image.width - 1.0), y = std::clamp(fromTop - 0.5, 0.0, image.height - 1.0);
+    int x0 = int(x), y0 = int(y), x1 = std::min(x0 + 1, image.width - 1), y1 = std::min(y0 + 1, image.height - 1);
+    double fx = x - x0, fy = y - y0;
+    auto at = [&](int cx, int cy) { return double(image.pixels[size_t(cy) * size_t(image.width) + size_t(cx)]); };
+    return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x1, y0)) + fy * ((1 - fx) * at(x0, y1) + fx * at(x1, y1));
+}
 
 MasonryTextures bakeMasonry(const Masonry &masonry, const WallFace &face, double texelSize, const MasonryLook &look,
                             size_t maxTexels) {

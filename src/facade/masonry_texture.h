@@ -28,6 +28,10 @@ struct MasonryTextures {
     Image specular;  // one channel
 };
 
+// The relief's height at a wall point: bilinear between its cells' centres, held at its edge cells,
+// 0 outside it.
+double reliefHeightAt(const MasonryRelief &relief, Vec2d p);
+
 // The textures of `masonry` laid on `face` at `texelSize` metres per texel. A texel takes what
 // lies under its centre: an opening, a stone, or else the mortar. Throws std::invalid_argument
 // when the face would need more than `maxTexels` texels (the caller picks a coarser size).

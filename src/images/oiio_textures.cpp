@@ -54,6 +54,15 @@ TextureId OiioTextures::add(Image image) {
     return id;
 }
 
+TextureId OiioTextures::add(std::shared_ptr<const ProceduralTexture> texture) {
+    Entry entry;
+    entry.channels = texture->channels();
+    entry.texture = "procedural:" + texture->fingerprint();
+    entry.procedural = std::move(texture);
+    std::lock_guard lock(addMutex_);
+    return append(std::move(entry));
+}
+
 // Adds the entry with its mean: a footprint far wider than the texture reads the coarsest level.
 TextureId OiioTextures::append(Entry entry) {
     constexpr float kWholeTexture = 1e6f;
@@ -84,7 +93,8 @@ OiioTextures::Entry OiioTextures::open(const std::filesystem::path &texture, con
 
 void OiioTextures::lookup(TextureId id, Vec2f uv, float footprint, float *out, int count) const {
     const Entry &entry = entries_[id];
-    if (footprint >= 1 && count <= int(entry.mean.size())) {
+    // A procedural texture's (u, v) and footprint are its own: it filters for itself.
+    if (footprint >= 1 && count <= int(entry.mean.size()) && !entry.procedural) {
         std::copy_n(entry.mean.begin(), std::min(count, entry.channels), out);
         return;
     }
@@ -92,6 +102,10 @@ void OiioTextures::lookup(TextureId id, Vec2f uv, float footprint, float *out, i
 }
 
 void OiioTextures::filtered(const Entry &entry, Vec2f uv, float footprint, float *out, int count) const {
+    if (entry.procedural) {
+        entry.procedural->lookup(uv, footprint, out, count);
+        return;
+    }
     if (entry.resident) {
         entry.resident->lookup(uv, footprint, out, count);
         return;

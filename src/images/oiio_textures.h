@@ -7,7 +7,7 @@
 // filtered there; larger ones (orthophotos) stream through OpenImageIO's tile cache. An image
 // made in memory is held whole, whatever its size, while the resident textures stay within
 // kResidentBytes, and otherwise written to the cache as a texture of its own (named by its content)
-// and streamed.
+// and streamed. A procedural texture answers its lookups itself.
 #pragma once
 
 #include <array>
@@ -44,6 +44,7 @@ class OiioTextures final : public Textures {
     TextureId add(const std::filesystem::path &file, const std::string &colorSpace) override;
     // Equal images share an id.
     TextureId add(Image image) override;
+    TextureId add(std::shared_ptr<const ProceduralTexture> texture) override;
     int channels(TextureId id) const override { return entries_.at(id).channels; }
     // The cached texture's name, which is a hash of the file's path, size, time and colour space.
     std::string fingerprint(TextureId id) const override { return entries_.at(id).texture; }
@@ -56,6 +57,7 @@ class OiioTextures final : public Textures {
         std::string texture;
         std::array<float, 4> mean{};  // the first four channels' means
         std::optional<ResidentTexture> resident;
+        std::shared_ptr<const ProceduralTexture> procedural;
     };
 
     Entry open(const std::filesystem::path &texture, const std::filesystem::path &file);

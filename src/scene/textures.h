@@ -1,12 +1,13 @@
-// Filtered, mip-mapped texture lookups. Generators register image files, or images they made
-// (baked masonry), here while building a RenderScene; the renderer and the preview only look up. The implementation is
-// OpenImageIO's TextureSystem, behind this interface in the image plugin (src/images/), so that programs that never
-// touch a texture do not load OpenImageIO.
+// Filtered, mip-mapped texture lookups. Generators register image files, images they made
+// (baked masonry) or textures they compute (procedural masonry) here while building a RenderScene; the renderer and the
+// preview only look up. The implementation is OpenImageIO's TextureSystem, behind this interface in the image plugin
+// (src/images/), so that programs that never touch a texture do not load OpenImageIO.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <string>
 
 #include "core/image.h"
@@ -16,6 +17,18 @@ namespace veduta {
 
 using TextureId = uint32_t;
 inline constexpr TextureId kNoTexture = ~0u;
+
+// A texture computed where it is looked up instead of read from an image: a generator's
+// procedural masonry (facade/masonry_shader.h). It defines its own (u, v) and footprint units.
+class ProceduralTexture {
+  public:
+    virtual ~ProceduralTexture() = default;
+    virtual int channels() const = 0;
+    // Changes when the values would.
+    virtual std::string fingerprint() const = 0;
+    // Writes min(channels, count) values at (u, v), filtered over `footprint`. Thread-safe.
+    virtual void lookup(Vec2f uv, float footprint, float *out, int count) const = 0;
+};
 
 class Textures {
   public:
@@ -29,6 +42,8 @@ class Textures {
     // Makes an image made in memory ready for lookups: linear values, one to four channels, rows
     // from the top as in Image. No file is written while it fits the registry's memory.
     virtual TextureId add(Image image) = 0;
+    // Makes a procedural texture ready for lookups, which it answers itself.
+    virtual TextureId add(std::shared_ptr<const ProceduralTexture> texture) = 0;
     virtual int channels(TextureId id) const = 0;
     // Changes when the texel values would: the file, its size and time, the colour space.
     virtual std::string fingerprint(TextureId id) const = 0;
@@ -45,5 +60,6 @@ class Textures {
 // read), or an image it made.
 using AddTexture = std::function<TextureId(const std::filesystem::path &image)>;
 using AddImage = std::function<TextureId(Image image)>;
+using AddProcedural = std::function<TextureId(std::shared_ptr<const ProceduralTexture> texture)>;
 
 }  // namespace veduta

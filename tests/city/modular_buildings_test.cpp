@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <tbb/global_control.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +14,11 @@
 
 #include "assembly/build_scene.h"
 #include "city/modular_buildings.h"
+#include "core/rgba_image.h"
+#include "film/passes.h"
 #include "input_error.h"
+#include "render/bvh.h"
+#include "render/renderer.h"
 #include "test_paths.h"
 
 namespace veduta {
@@ -62,6 +67,46 @@ TEST(ModularBuildings, ThePalaceInBrickShowsItsBakedMasonry) {
         }
     }
     EXPECT_GT(shown, 100u);
+}
+
+// <render masonry="procedural">: the palace's brick shaded where it is looked up. Its walls read
+// the shader's maps, and the palace seen whole shows the colour the baked atlas gives it: the
+// same stones and mortar, averaged by the pixels instead of the atlas's texels.
+TEST(ModularBuildings, ThePalaceInBrickShadedProcedurallyShowsTheBakedColour) {
+    auto palace = [](const char *masonry) {
+        return build(fmt::format(R"(<render spp="16" max_depth="3" masonry="{}"/>
+            <modular_building structure="palace/palace.structure" style="palace/brick.style" building="7"/>)",
+                                 masonry));
+    };
+    RenderScene baked = palace("baked"), shaded = palace("procedural");
+    const Material *masonry = findMaterial(shaded, "(building 7 masonry)");
+    ASSERT_NE(masonry, nullptr);
+    EXPECT_EQ(shaded.textures->fingerprint(masonry->diffuseMap).rfind("procedural:masonry ", 0), 0u)
+        << shaded.textures->fingerprint(masonry->diffuseMap);
+    EXPECT_EQ(shaded.textures->channels(masonry->diffuseMap), 3);
+    auto image = [](const RenderScene &scene) {
+        tbb::task_arena arena(2);
+        return arena.execute([&] {
+            Bvh bvh(scene);
+            return combinedImage(render(scene, bvh));
+        });
+    };
+    RgbaImage a = image(baked), b = image(shaded);
+    Vec3f meanA(0.0f), meanB(0.0f);
+    for (size_t i = 0; i + 3 < a.pixels().size(); i += 4) {
+        meanA += Vec3f(a.pixels()[i], a.pixels()[i + 1], a.pixels()[i + 2]);
+        meanB += Vec3f(b.pixels()[i], b.pixels()[i + 1], b.pixels()[i + 2]);
+    }
+    std::printf("palace in brick, mean colour baked %.4f %.4f %.4f, procedural %.4f %.4f %.4f\n", meanA.x, meanA.y,
+                meanA.z, meanB.x, meanB.y, meanB.z);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(meanB[c], meanA[c], 0.03f * meanA[c]) << c;
+    EXPECT_NE(a.pixels(), b.pixels());  // the maps do differ
+}
+
+TEST(ModularBuildings, AnUnknownMasonryIsSaidAtItsAttribute) {
+    std::string message = test::inputErrorOf([] { build(R"(<render masonry="stone"/>)"); });
+    EXPECT_NE(message.find("test.xml:"), std::string::npos) << message;
+    EXPECT_NE(message.find("unknown masonry 'stone' (baked, procedural)"), std::string::npos) << message;
 }
 
 // Texture-coordinate units per metre of the masonry triangles facing +x and -x (the palace's

@@ -258,7 +258,7 @@ TEST(ModularFootprints, AnUnusableFootprintFromDataIsLeftOutAndCounted) {
     Camera camera;
     camera.position = {-40, -40, 20};
     camera.lookAt = {0, 0, 5};
-    ModularBuildings modular(camera, builder, [](Image) { return TextureId(0); });
+    ModularBuildings modular(camera, builder, {false, [](Image) { return TextureId(0); }, {}});
     const ModularLookDesc look = ochreLook();
     const std::vector<Vec2f> bowTie{{0, 0}, {10, 10}, {10, 0}, {0, 10}}, box{{0, 0}, {12, 0}, {12, 10}, {0, 10}};
     std::vector<ModularBuildingDesc> descs{footprintBuilding(look, {"data", 3, 1}, bowTie, std::nullopt, 0),
@@ -278,7 +278,7 @@ TEST(ModularFootprints, AnUnusableFootprintFromDataIsLeftOutAndCounted) {
     descs[0].fromData = false;
     RenderSceneBuilder again;
     for (const Material &m : scene.materials) again.addMaterial(m);
-    ModularBuildings strict(camera, again, [](Image) { return TextureId(0); });
+    ModularBuildings strict(camera, again, {false, [](Image) { return TextureId(0); }, {}});
     EXPECT_EQ(test::inputErrorOf([&] { strict.add({descs[0]}, {1}, run, warnings); }).rfind("data:3:1: ", 0), 0u);
 }
 
@@ -290,7 +290,7 @@ TEST(ModularFootprints, StoreysBeyondTheLimitAreBuiltAtItAndSaid) {
     Camera camera;
     camera.position = {-900, -900, 400};
     camera.lookAt = {0, 0, 300};
-    ModularBuildings modular(camera, builder, [](Image) { return TextureId(0); });
+    ModularBuildings modular(camera, builder, {false, [](Image) { return TextureId(0); }, {}});
     const ModularLookDesc look = ochreLook();
     const std::vector<Vec2f> box{{0, 0}, {12, 0}, {12, 10}, {0, 10}};
     std::vector<ModularBuildingDesc> descs{footprintBuilding(look, {"data", 3, 1}, box, std::nullopt, 0),

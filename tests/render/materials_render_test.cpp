@@ -26,6 +26,7 @@ class ProceduralTextures : public Textures {
         channels_(channels), value_(std::move(value)) {}
     TextureId add(const std::filesystem::path &, const std::string &) override { return 0; }
     TextureId add(Image) override { return 0; }
+    TextureId add(std::shared_ptr<const ProceduralTexture>) override { return 0; }
     int channels(TextureId) const override { return channels_; }
     std::string fingerprint(TextureId) const override { return "procedural"; }
     void lookup(TextureId, Vec2f uv, float, float *out, int count) const override {
