@@ -1,11 +1,11 @@
 // Deliver 4 of issue 22 asks to bake masonry or shade it procedurally, "measure which". The same
 // brick wall (gruenderzeit_front.h) three ways, one thread each:
 //   * BM_BakeBrickWall: baked once to diffuse, normal and specular images at 1 cm a texel
-//     (texels/s), what veduta does;
+//     (texels/s), <render masonry="baked">;
 //   * BM_LookUpBakedBrickWall: what each shaded point then costs the renderer, three filtered
 //     lookups of those images in the texture registry (points/s);
-//   * BM_ShadeBrickWallProcedurally: what each shaded point would cost a procedural shader
-//     (points/s).
+//   * BM_ShadeBrickWallProcedurally: what each shaded point costs veduta's procedural shader
+//     (<render masonry="procedural">, points/s).
 // A still pays the bake once per texel (about one a pixel, masonry_maps.h) and the lookup or the
 // procedural shading at every sample that hits a wall (pixels × spp × bounces); the closing note
 // of issue 22 sets these rates against the street's texels and samples.
@@ -13,14 +13,13 @@
 //   build/release/bench/bench_masonry_shading --benchmark_repetitions=5
 #include <benchmark/benchmark.h>
 
-#include <algorithm>
-#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <vector>
 
 #include "facade/brick_bond.h"
+#include "facade/masonry_shader.h"
 #include "facade/masonry_texture.h"
 #include "gruenderzeit_front.h"
 #include "io/image_library.h"
@@ -96,91 +95,17 @@ void BM_LookUpBakedBrickWall(benchmark::State &state) {
 }
 BENCHMARK(BM_LookUpBakedBrickWall)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
-// Shading procedurally: what a shader would do at each point it shades on the wall, with the
-// stones laid beforehand. It finds the stone under the point through a grid of the stones' boxes
-// (cells of one brick's size), and the stone's nearest edge: within the bevel, the colour fades
-// to the mortar's and the normal tilts toward that edge (the bake's chamfer bevel). A lower
-// bound for a real shader: no specular, no relief, no filtering of joints finer than a pixel.
-class StoneGrid {
-  public:
-    StoneGrid(const Masonry &masonry, const WallFace &face, double cell) : masonry_(masonry), cell_(cell) {
-        for (Vec2d p : face.outline) {
-            low_ = {std::min(low_.x, p.x), std::min(low_.y, p.y)};
-            high_ = {std::max(high_.x, p.x), std::max(high_.y, p.y)};
-        }
-        columns_ = int(std::ceil((high_.x - low_.x) / cell)) + 1;
-        rows_ = int(std::ceil((high_.y - low_.y) / cell)) + 1;
-        cells_.resize(size_t(columns_) * size_t(rows_));
-        for (uint32_t s = 0; s < masonry.stones.size(); ++s) {
-            Vec2d a{INFINITY, INFINITY}, b{-INFINITY, -INFINITY};
-            for (Vec2d p : masonry.stones[s].outline) {
-                a = {std::min(a.x, p.x), std::min(a.y, p.y)};
-                b = {std::max(b.x, p.x), std::max(b.y, p.y)};
-            }
-            for (int y = row(a.y); y <= row(b.y); ++y)
-                for (int x = column(a.x); x <= column(b.x); ++x)
-                    cells_[size_t(y) * size_t(columns_) + size_t(x)].push_back(s);
-        }
-    }
-
-    struct Shaded {
-        Vec3f colour;
-        Vec3f normal{0, 0, 1};
-    };
-
-    Shaded shade(Vec2d p, double bevel) const {
-        for (uint32_t s : cells_[size_t(row(p.y)) * size_t(columns_) + size_t(column(p.x))]) {
-            const Stone &stone = masonry_.stones[s];
-            Edge edge = nearestEdge(stone.outline, p);
-            if (edge.distance < 0) continue;
-            if (edge.distance >= bevel) return {stone.colour};
-            float t = float(edge.distance / bevel);
-            Vec3f colour = masonry_.mortarColour + (stone.colour - masonry_.mortarColour) * t;
-            return {colour, normalize(Vec3f(float(edge.outward.x), float(edge.outward.y), 1.0f + t))};
-        }
-        return {masonry_.mortarColour};
-    }
-
-  private:
-    int column(double x) const { return std::clamp(int((x - low_.x) / cell_), 0, columns_ - 1); }
-    int row(double y) const { return std::clamp(int((y - low_.y) / cell_), 0, rows_ - 1); }
-
-    struct Edge {
-        double distance = INFINITY;  // −1: outside the stone
-        Vec2d outward;
-    };
-
-    // The nearest edge of the convex counter-clockwise `outline` to `p` inside it.
-    static Edge nearestEdge(const std::vector<Vec2d> &outline, Vec2d p) {
-        Edge nearest;
-        for (size_t i = 0; i < outline.size(); ++i) {
-            Vec2d a = outline[i], b = outline[(i + 1) % outline.size()];
-            Vec2d d = b - a;
-            double side = cross(d, p - a);
-            if (side < 0) return {-1, {}};
-            double distance = side / length(d);
-            if (distance < nearest.distance) nearest = {distance, Vec2d{d.y, -d.x} * (1 / length(d))};
-        }
-        return nearest;
-    }
-
-    const Masonry &masonry_;
-    double cell_;
-    Vec2d low_{INFINITY, INFINITY}, high_{-INFINITY, -INFINITY};
-    int columns_ = 0, rows_ = 0;
-    std::vector<std::vector<uint32_t>> cells_;
-};
-
+// Shading procedurally: veduta's MasonryShader (facade/masonry_shader.h), at a footprint under a
+// stone so that every point is shaded, not a wall's mean.
 void BM_ShadeBrickWallProcedurally(benchmark::State &state) {
     WallFace front = gruenderzeitFront();
-    Masonry bricks = layBrickBond(parseBrickBond(kFigure5_7, "figure-5.7"), front, {0.125, 1871, 1});
-    StoneGrid grid(bricks, front, 0.25);
+    MasonryShader shader({{frontBricks(), front}});
     std::vector<Vec2d> points = shadedPoints(state.range(0) != 0);
     float sum = 0;
     for (auto _ : state)
         for (Vec2d p : points) {
-            StoneGrid::Shaded shaded = grid.shade(p, 0.004);
-            sum += shaded.colour.x + shaded.normal.x;
+            MasonrySample sample = shader.shade(shader.uvOf(0, p), float(kTexel));
+            sum += sample.colour.x + sample.normal.x + sample.specular;
         }
     benchmark::DoNotOptimize(sum);
     countPoints(state, points.size());
