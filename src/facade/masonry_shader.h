@@ -1,8 +1,9 @@
 // Masonry shaded where the renderer looks it up, instead of baked to images (masonry_texture.h):
-// the other way digest-001 §2.5's Deliver allows, and the cheaper one as bench/masonry_shading.cpp
-// measures it (a shaded point costs less than the three filtered lookups of baked maps, and
-// nothing is baked). The stones stay as laid; each lookup finds the stone under its point through
-// a grid of the stones' boxes and shades it as bakeMasonry would a texel there:
+// the other way issue 22's Deliver 4 allows (digest-001 §2.5). Measured (docs/facades.md), a
+// shaded point costs less than the three filtered lookups of baked maps and nothing is baked, so a
+// scene builds faster and holds less, while a whole render takes as long. The stones stay as laid;
+// each lookup finds the stone under its point through a grid of the stones' boxes and shades it as
+// bakeMasonry would a texel there:
 // * diffuse: the stone's colour, else the mortar's;
 // * normal: a stone's edge falls to the mortar over the look's bevel (its depth over the bevel, the
 //   slope toward the nearest edge), the relief's slope added;
@@ -50,8 +51,8 @@ class MasonryShader {
 
     // Where wall `wall`'s point lies in the texture.
     Vec2f uvOf(size_t wall, Vec2d point) const;
-    // The masonry at `uv`, filtered over `footprint` metres. Outside every wall: the mortar of
-    // the nearest wall in v, flat.
+    // The masonry at `uv`, filtered over `footprint` metres. A point beside every stone of its
+    // wall (or outside the wall) is mortar.
     MasonrySample shade(Vec2f uv, float footprint) const;
     // Changes when a stone, the mortar, a relief or the look would.
     const std::string &fingerprint() const { return fingerprint_; }
