@@ -11,6 +11,7 @@
 #include "core/check.h"
 #include "core/hash.h"
 #include "core/polygon_area.h"
+#include "core/word_hasher.h"
 #include "facade/module_partition.h"
 
 namespace veduta {
@@ -98,28 +99,7 @@ void validateStructure(const BuildingStructure &structure) {
 
 namespace {
 
-// Feeds numbers and strings into one 64-bit state, in order.
-class StructureHasher {
-  public:
-    void add(uint64_t v) { h_ = mix64(h_ ^ mix64(v + 0x9e3779b97f4a7c15ull)); }
-    void add(int v) { add(uint64_t(int64_t(v))); }
-    // -0 and 0 are one number.
-    void add(double v) { add(std::bit_cast<uint64_t>(v == 0 ? 0.0 : v)); }
-    void add(const std::string &s) {
-        add(s.size());
-        add(uint64_t(hashString(s)));
-    }
-    void add(Vec2d p) {
-        add(p.x);
-        add(p.y);
-    }
-    uint64_t value() const { return h_; }
-
-  private:
-    uint64_t h_ = 0x243f6a8885a308d3ull;
-};
-
-void addRoof(StructureHasher &h, const RoofStructure &r) {
+void addRoof(WordHasher &h, const RoofStructure &r) {
     h.add(int(r.kind));
     const GeneralRoofParameters &g = r.general;
     for (double v : {double(g.edgeI), double(g.edgeJ), g.c, g.d, g.a, g.b, g.height, r.parapet.height, r.parapet.width})
@@ -157,7 +137,7 @@ size_t storeysNearest(const std::vector<double> &written, double eaves) {
 }
 
 uint64_t structureHash(const BuildingStructure &structure) {
-    StructureHasher h;
+    WordHasher h;
     h.add(structure.modules.size());
     for (const ModuleStructure &m : structure.modules) {
         h.add(m.name);

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <cstring>
 #include <stdexcept>
 
 #include <fmt/format.h>
+
+#include "core/polygon_area.h"
+#include "core/word_hasher.h"
 
 namespace veduta {
 namespace {
@@ -15,12 +17,6 @@ namespace {
 constexpr double kMaxCells = double(1 << 22);
 // A footprint of one stone starts to blend toward the wall's mean, one of this many reaches it.
 constexpr double kStonesToMean = 4;
-
-double polygonArea(const std::vector<Vec2d> &polygon) {
-    double twice = 0;
-    for (size_t i = 0; i < polygon.size(); ++i) twice += cross(polygon[i], polygon[(i + 1) % polygon.size()]);
-    return std::abs(twice) / 2;
-}
 
 // Whether `p` lies inside `polygon` (even-odd), and its distance to the nearest edge with that
 // edge's outward normal (to the right of a counter-clockwise edge).
@@ -47,25 +43,6 @@ Inside insideOf(const std::vector<Vec2d> &polygon, Vec2d p) {
     return result;
 }
 
-class Fingerprint {
-  public:
-    void add(double value) {
-        uint64_t bits;
-        std::memcpy(&bits, &value, sizeof bits);
-        for (int i = 0; i < 8; ++i) hash_ = (hash_ ^ ((bits >> (8 * i)) & 0xff)) * 0x100000001b3ull;
-    }
-    void add(Vec2d p) { add(p.x), add(p.y); }
-    void add(Vec3f c) { add(c.x), add(c.y), add(c.z); }
-    void add(const std::vector<Vec2d> &polygon) {
-        add(double(polygon.size()));
-        for (Vec2d p : polygon) add(p);
-    }
-    std::string text() const { return fmt::format("{:016x}", hash_); }
-
-  private:
-    uint64_t hash_ = 0xcbf29ce484222325ull;
-};
-
 }  // namespace
 
 MasonryShader::Wall MasonryShader::prepare(ShadedWall shaded, const MasonryLook &look) {
@@ -86,7 +63,7 @@ MasonryShader::Wall MasonryShader::prepare(ShadedWall shaded, const MasonryLook 
         for (Vec2d p : stone.outline)
             a = {std::min(a.x, p.x), std::min(a.y, p.y)}, b = {std::max(b.x, p.x), std::max(b.y, p.y)};
         boxes += (b.x - a.x) * (b.y - a.y);
-        double area = polygonArea(stone.outline);
+        double area = std::abs(signedArea(stone.outline));
         stoneArea += area;
         stoneColour += stone.colour * float(area);
     }
@@ -108,8 +85,8 @@ MasonryShader::Wall MasonryShader::prepare(ShadedWall shaded, const MasonryLook 
                 wall.stonesByCell[size_t(y) * size_t(wall.columns) + size_t(x)].push_back(s);
     }
     // The means over the wall less its openings: stones by their area, the rest mortar.
-    double area = polygonArea(face.outline);
-    for (const std::vector<Vec2d> &opening : face.openings) area -= polygonArea(opening);
+    double area = std::abs(signedArea(face.outline));
+    for (const std::vector<Vec2d> &opening : face.openings) area -= std::abs(signedArea(opening));
     double mortarArea = std::max(0.0, area - stoneArea), total = std::max(area, stoneArea);
     const Vec3f &mortar = shaded.masonry.mortarColour;
     if (total > 0) {
@@ -126,21 +103,26 @@ MasonryShader::Wall MasonryShader::prepare(ShadedWall shaded, const MasonryLook 
 MasonryShader::MasonryShader(std::vector<ShadedWall> walls, const MasonryLook &look) : look_(look) {
     static std::atomic<uint64_t> shaders{0};
     serial_ = ++shaders;
-    Fingerprint print;
-    print.add(look.stoneSpecular), print.add(look.mortarSpecular), print.add(look.bevel);
+    WordHasher print;
+    auto addPolygon = [&](const std::vector<Vec2d> &polygon) {
+        print.add(uint64_t(polygon.size()));
+        for (Vec2d p : polygon) print.add(p);
+    };
+    auto addColour = [&](Vec3f c) { print.add(Vec2d{c.x, c.y}), print.add(double(c.z)); };
+    print.add(double(look.stoneSpecular)), print.add(double(look.mortarSpecular)), print.add(look.bevel);
     for (const ShadedWall &w : walls) {
-        print.add(w.face.outline);
-        for (const auto &opening : w.face.openings) print.add(opening);
-        print.add(w.masonry.mortarColour), print.add(w.masonry.mortarThickness);
+        addPolygon(w.face.outline);
+        for (const auto &opening : w.face.openings) addPolygon(opening);
+        addColour(w.masonry.mortarColour), print.add(w.masonry.mortarThickness);
         for (const Stone &stone : w.masonry.stones)
-            print.add(stone.outline), print.add(stone.colour), print.add(stone.depth);
+            addPolygon(stone.outline), addColour(stone.colour), print.add(stone.depth);
         if (w.masonry.relief) {
             const MasonryRelief &relief = *w.masonry.relief;
             print.add(relief.origin), print.add(relief.cellSize);
             for (float h : relief.heights->pixels) print.add(double(h));
         }
     }
-    fingerprint_ = print.text();
+    fingerprint_ = fmt::format("{:016x}", print.value());
     for (ShadedWall &w : walls) walls_.push_back(prepare(std::move(w), look));
     if (walls_.empty()) return;
     lowest_ = walls_[0].low.y;
