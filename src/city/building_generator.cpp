@@ -210,8 +210,9 @@ void BuildingGenerator::addMasonryPiece(const Asset &model, const Transform &mod
     for (uint32_t t = firstTriangle; t < baked.triangleCount(); ++t) wall.triangles.push_back(t);
 }
 
-// Lays each masonry wall's stones and bakes the building's atlas, before the mesh is welded (the
-// atlas's coordinates keep the tiles' vertices apart); the stones are dropped once baked.
+// Gives each masonry wall its recipe and bakes the building's atlas (laying the stones) or hands
+// the recipes to a shader, before the mesh is welded (the atlas's coordinates keep the tiles'
+// vertices apart); the stones are dropped once baked.
 void BuildingGenerator::bakeMasonry(const BuildingContext &building, Mesh &baked, MadeBuilding &made,
                                     std::vector<std::string> &warnings) const {
     if (made.masonry.empty()) return;
@@ -228,7 +229,7 @@ void BuildingGenerator::bakeMasonry(const BuildingContext &building, Mesh &baked
         MasonryWall &wall = made.masonry[w];
         // The rule's place in the file, stable where its address is not.
         auto place = uint32_t(rule - grammar_.rules().masonry.data());
-        wall.masonry = layStyleMasonry(rule->style, wall.face, seed_, hashValues({building.id, edge, place}));
+        wall.recipe = styleMasonryRecipe(rule->style, wall.face, seed_, hashValues({building.id, edge, place}));
     }
     if (masonryBaking_->output.procedural) {
         made.masonryShader = shadeMasonry(baked, made.masonry);

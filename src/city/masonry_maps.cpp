@@ -164,8 +164,11 @@ std::optional<double> seenTexel(const Mesh &mesh, const MasonryTile &tile, const
 
 }  // namespace
 
-std::optional<MasonryAtlas> bakeMasonryMaps(Mesh &mesh, const std::vector<MasonryWall> &walls, const Transform &toWorld,
+std::optional<MasonryAtlas> bakeMasonryMaps(Mesh &mesh, std::vector<MasonryWall> &walls, const Transform &toWorld,
                                             const CameraRays &rays, const Camera &camera) {
+    for (MasonryWall &wall : walls) {
+        if (wall.recipe.lay) wall.masonry = std::exchange(wall.recipe, {}).lay();
+    }
     std::vector<MasonryTile> tiles;
     for (size_t w = 0; w < walls.size(); ++w) tileWall(mesh, walls[w], w, tiles);
     if (tiles.empty()) return std::nullopt;
@@ -228,7 +231,7 @@ void addMasonryMaps(Mesh &mesh, const std::vector<MasonryWall> &walls, MasonryAt
 std::shared_ptr<const MasonryShader> shadeMasonry(Mesh &mesh, std::vector<MasonryWall> &walls) {
     if (walls.empty()) return nullptr;
     std::vector<ShadedWall> shaded;
-    for (MasonryWall &wall : walls) shaded.push_back({std::move(wall.masonry), wall.face});
+    for (MasonryWall &wall : walls) shaded.push_back({std::move(wall.masonry), wall.face, std::move(wall.recipe)});
     auto shader = std::make_shared<const MasonryShader>(std::move(shaded));
     for (size_t w = 0; w < walls.size(); ++w) {
         // Walls share no vertex (as the atlas's tiles): each vertex is moved once.
@@ -237,6 +240,7 @@ std::shared_ptr<const MasonryShader> shadeMasonry(Mesh &mesh, std::vector<Masonr
             vertices.insert(&mesh.indices[3 * size_t(t)], &mesh.indices[3 * size_t(t) + 3]);
         for (uint32_t v : vertices) mesh.uvs[v] = shader->uvOf(w, {mesh.uvs[v].x, mesh.uvs[v].y});
         walls[w].masonry = {};
+        walls[w].recipe = {};
     }
     return shader;
 }

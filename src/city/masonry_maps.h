@@ -50,8 +50,8 @@ struct MasonryOutput {
 
 // The atlas of `walls` (triangles of `mesh`, whose object-to-world transform is `toWorld`), with
 // the walls' texture coordinates moved from wall metres onto it; nothing when there are no walls.
-// Touches no scene: buildings may be baked in parallel.
-std::optional<MasonryAtlas> bakeMasonryMaps(Mesh &mesh, const std::vector<MasonryWall> &walls, const Transform &toWorld,
+// Lays the walls from their recipes first. Touches no scene: buildings may be baked in parallel.
+std::optional<MasonryAtlas> bakeMasonryMaps(Mesh &mesh, std::vector<MasonryWall> &walls, const Transform &toWorld,
                                             const CameraRays &rays, const Camera &camera);
 
 // Registers the atlas's maps and gives each wall's triangles a copy of its material (named
@@ -59,8 +59,8 @@ std::optional<MasonryAtlas> bakeMasonryMaps(Mesh &mesh, const std::vector<Masonr
 void addMasonryMaps(Mesh &mesh, const std::vector<MasonryWall> &walls, MasonryAtlas atlas, RenderSceneBuilder &builder,
                     const AddImage &addImage, uint32_t buildingId);
 
-// The walls' masonry as one shader, their stones moved into it and their triangles' texture
-// coordinates into its space; nothing when there are no walls. Touches no scene.
+// The walls' masonry as one shader, their recipes (or stones) moved into it and their triangles'
+// texture coordinates into its space; nothing when there are no walls. Touches no scene.
 std::shared_ptr<const MasonryShader> shadeMasonry(Mesh &mesh, std::vector<MasonryWall> &walls);
 
 // Registers the shader's maps and gives the walls' triangles their material copies, as

@@ -259,7 +259,7 @@ ModularBuildings::Made ModularBuildings::make(const ModularBuildingDesc &desc, u
     made.building.notes.insert(made.building.notes.begin(), notes.begin(), notes.end());
     // A relief alone (an apron's) shows its material's albedo; the atlas replaces the material's.
     for (MasonryWall &wall : made.building.masonry)
-        if (wall.masonry.relief && wall.masonry.stones.empty())
+        if (wall.masonry.relief && !wall.recipe.lay)
             wall.masonry.mortarColour =
                 albedo_ ? albedo_(wall.material) : builder_.materials().at(wall.material).diffuse;
     if (masonry_.procedural) made.shader = shadeMasonry(made.building.mesh, made.building.masonry);

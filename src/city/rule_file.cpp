@@ -250,6 +250,7 @@ class RuleSetReader {
         std::string text = readDescription(e, given, file);
         MasonryStyle &style = rule.style;
         style.loc = rule.loc;
+        style.source = descriptionHash(text);
         if (std::string_view(given) == "cyclopean") {
             style.kind = MasonryStyle::Kind::Cyclopean;
             style.cyclopean = std::make_shared<const CyclopeanMasonry>(parseCyclopeanMasonry(text, file.string()));

@@ -8,6 +8,7 @@
 
 #include "core/check.h"
 #include "core/hash.h"
+#include "core/polygon_bounds.h"
 #include "core/random_streams.h"
 #include "facade/convex_pieces.h"
 #include "facade/description_text.h"
@@ -99,25 +100,34 @@ AshlarMasonry parseAshlarMasonry(std::string_view text, const std::string &file)
     return ashlar;
 }
 
-Masonry layAshlar(const AshlarMasonry &ashlar, const WallFace &wall, const MasonryPlacement &placement) {
-    double scale = placement.metresPerUnit;
+void checkAshlar(const AshlarMasonry &ashlar, const WallFace &wall, double metresPerUnit) {
+    double scale = metresPerUnit;
     VEDUTA_CHECK(std::isfinite(scale) && scale > 0, fmt::format("metres per unit {}", scale));
     const StoneSize &least = ashlar.minSize, &most = ashlar.maxSize;
-    double mortar = ashlar.mortarThickness * scale;
-    double minLength = least.length * scale, maxLength = most.length * scale;
-    double minWidth = kAshlarMinPieceFraction * std::min(least.length, least.height) * scale;
     checkScaledSizes(wall, std::min(least.length, least.height) * scale,
                      std::max({most.length, most.height, most.depth, ashlar.mortarThickness}) * scale, ashlar.loc);
-    WallMask mask(wall, mortar, std::min(least.length, least.height) * scale);
+    VEDUTA_CHECK(wall.outline.size() >= 3, "a wall face with fewer than three corners");
     // The most stones the walk below can try, counting a short rest at both ends of every run and
     // the runs an opening can make in a course.
-    Vec2d size = mask.high() - mask.low();
+    auto [low, high] = polygonBounds(wall.outline);
+    Vec2d size = high - low;
+    double mortar = ashlar.mortarThickness * scale;
     double courses = size.y / (least.height * scale + mortar) + 1;
-    double perCourse = size.x / (minLength + mortar) + 2 + 4 * double(wall.openings.size());
+    double perCourse = size.x / (least.length * scale + mortar) + 2 + 4 * double(wall.openings.size());
     if (courses * perCourse > double(kBrickLimit))
         throw InputError(ashlar.loc,
                          fmt::format("the ashlar would lay more than {} stones on a wall of {} × {} m", kBrickLimit,
                                      size.x, size.y));
+}
+
+Masonry layAshlar(const AshlarMasonry &ashlar, const WallFace &wall, const MasonryPlacement &placement) {
+    checkAshlar(ashlar, wall, placement.metresPerUnit);
+    double scale = placement.metresPerUnit;
+    const StoneSize &least = ashlar.minSize, &most = ashlar.maxSize;
+    double mortar = ashlar.mortarThickness * scale;
+    double minLength = least.length * scale, maxLength = most.length * scale;
+    double minWidth = kAshlarMinPieceFraction * std::min(least.length, least.height) * scale;
+    WallMask mask(wall, mortar, std::min(least.length, least.height) * scale);
     Masonry masonry{{}, ColourRange{ashlar.mortarColour, ashlar.mortarColour}.at(0), mortar};
     uint32_t tag = streamTag(RandomStream::MasonryAshlar);
 

@@ -50,10 +50,14 @@ inline constexpr double kAshlarMinPieceFraction = 0.5;
 // maximum or a colour outside 0..255.
 AshlarMasonry parseAshlarMasonry(std::string_view text, const std::string &file);
 
+// Throws what layAshlar would before it lays a stone: an InputError at the AshlarMasonry block when
+// the wall could take more than kBrickLimit stones or the scaled sizes do not suit the wall
+// (checkScaledSizes). A wall checked can be laid later without an error to report.
+void checkAshlar(const AshlarMasonry &ashlar, const WallFace &wall, double metresPerUnit);
+
 // The stones of `ashlar` laid on `wall` (see above): whole stones axis-parallel rectangles within
-// [min, max]; cut stones convex and no narrower than the minimum piece width. Throws InputError at
-// the AshlarMasonry block, before laying, when the wall could take more than kBrickLimit stones or
-// the scaled sizes do not suit the wall (checkScaledSizes).
+// [min, max]; cut stones convex and no narrower than the minimum piece width. Checks first
+// (checkAshlar).
 Masonry layAshlar(const AshlarMasonry &ashlar, const WallFace &wall, const MasonryPlacement &placement);
 
 }  // namespace veduta

@@ -9,6 +9,7 @@
 
 #include "core/check.h"
 #include "core/hash.h"
+#include "core/polygon_bounds.h"
 #include "core/random_streams.h"
 #include "facade/convex_pieces.h"
 #include "facade/wall_mask.h"
@@ -270,17 +271,29 @@ BrickBond parseBrickBond(std::string_view text, const std::string &file) {
     return bond;
 }
 
-Masonry layBrickBond(const BrickBond &bond, const WallFace &wall, const MasonryPlacement &placement) {
-    double scale = placement.metresPerUnit;
+namespace {
+
+double lowestCourse(const BrickBond &bond) {
+    double lowest = bond.courses.front().height;
+    for (const BondCourse &course : bond.courses) lowest = std::min(lowest, course.height);
+    return lowest;
+}
+
+// How far a tall brick reaches below its course's bottom, units.
+double longestHang(const BrickBond &bond) {
+    double hang = 0;
+    for (const BondCourse &course : bond.courses)
+        for (const BondUnit &unit : course.units) hang = std::max(hang, unit.height - course.height);
+    return hang;
+}
+
+}  // namespace
+
+void checkBrickBond(const BrickBond &bond, const WallFace &wall, double metresPerUnit) {
+    double scale = metresPerUnit;
     VEDUTA_CHECK(std::isfinite(scale) && scale > 0, fmt::format("metres per unit {}", scale));
-    double mortar = bond.mortarThickness * scale;
-    double lowestCourse = bond.courses.front().height, longestHang = 0;
-    for (const BondCourse &course : bond.courses) {
-        lowestCourse = std::min(lowestCourse, course.height);
-        for (const BondUnit &unit : course.units) longestHang = std::max(longestHang, unit.height - course.height);
-    }
     // Every size the walk adds or multiplies, scaled: the bricks, gaps, offsets and mortar.
-    double least = lowestCourse, largest = bond.mortarThickness;
+    double least = lowestCourse(bond), largest = bond.mortarThickness;
     for (const BrickKind &brick : bond.bricks) {
         least = std::min(least, brick.size.length);
         largest = std::max({largest, brick.size.length, brick.size.height, brick.size.depth});
@@ -290,11 +303,12 @@ Masonry layBrickBond(const BrickBond &bond, const WallFace &wall, const MasonryP
         for (const BondUnit &unit : course.units) largest = std::max(largest, unit.height);
     }
     checkScaledSizes(wall, least * scale, largest * scale, bond.loc);
-    WallMask mask(wall, mortar, lowestCourse * scale);
+    VEDUTA_CHECK(wall.outline.size() >= 3, "a wall face with fewer than three corners");
     // The most bricks the walk below can try: the courses up the wall and those above it whose tall
     // bricks reach down into it, each with its repetitions over the width and two more.
-    Vec2d size = mask.high() - mask.low();
-    double courses = (size.y + longestHang * scale) / ((lowestCourse + bond.mortarThickness) * scale) + 2;
+    auto [low, high] = polygonBounds(wall.outline);
+    Vec2d size = high - low;
+    double courses = (size.y + longestHang(bond) * scale) / ((lowestCourse(bond) + bond.mortarThickness) * scale) + 2;
     double perCourse = 0;
     for (const BondCourse &course : bond.courses)
         perCourse = std::max(perCourse, (size.x / (course.length * scale) + 2) * double(course.units.size()));
@@ -302,13 +316,20 @@ Masonry layBrickBond(const BrickBond &bond, const WallFace &wall, const MasonryP
         throw InputError(
             bond.loc,
             fmt::format("the bond would lay more than {} bricks on a wall of {} × {} m", kBrickLimit, size.x, size.y));
+}
+
+Masonry layBrickBond(const BrickBond &bond, const WallFace &wall, const MasonryPlacement &placement) {
+    checkBrickBond(bond, wall, placement.metresPerUnit);
+    double scale = placement.metresPerUnit, mortar = bond.mortarThickness * scale;
+    double hang = longestHang(bond) * scale;
+    WallMask mask(wall, mortar, lowestCourse(bond) * scale);
     Masonry masonry{{}, ColourRange{bond.mortarColour, bond.mortarColour}.at(0), mortar};
 
     size_t count = bond.courses.size();
     double bottom = mask.low().y;
     // Courses from the wall's bottom up, the list in reverse; the courses just above the wall
     // still reach into it with their tall bricks.
-    for (uint32_t c = 0; bottom - longestHang * scale < mask.high().y; ++c) {
+    for (uint32_t c = 0; bottom - hang < mask.high().y; ++c) {
         const BondCourse &course = bond.courses[count - 1 - c % count];
         double top = bottom + course.height * scale, period = course.length * scale;
         double start = mask.low().x - period + std::fmod(course.offset * scale, period);

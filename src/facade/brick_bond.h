@@ -130,12 +130,16 @@ inline constexpr size_t kBrickLimit = size_t(1) << 20;
 // a tall brick with no gap under it.
 BrickBond parseBrickBond(std::string_view text, const std::string &file);
 
+// Throws what layBrickBond would before it lays a brick: an InputError at the BrickMasonry block
+// when the wall could take more than kBrickLimit bricks or the scaled sizes do not suit the wall
+// (checkScaledSizes). A wall checked can be laid later without an error to report.
+void checkBrickBond(const BrickBond &bond, const WallFace &wall, double metresPerUnit);
+
 // The bond laid on `wall` (L1050–1054): bricks wholly in the free region kept, those wholly out
 // dropped, the rest cut exactly to the wall minus its openings grown by the mortar; a cut brick
 // may be non-convex or fall into pieces, each a Stone; pieces of a billionth of their brick's area
-// (rounding slivers where a brick meets an opening's joint) are dropped. Throws InputError at the
-// BrickMasonry block, before laying, when the wall could take more than kBrickLimit bricks or the
-// scaled sizes do not suit the wall (checkScaledSizes).
+// (rounding slivers where a brick meets an opening's joint) are dropped. Checks first
+// (checkBrickBond).
 Masonry layBrickBond(const BrickBond &bond, const WallFace &wall, const MasonryPlacement &placement);
 
 }  // namespace veduta

@@ -301,6 +301,7 @@ class NamedFiles {
     std::shared_ptr<const CorniceDescription> cornice(const DescriptionField &name) {
         return parsed(cornices_, name, parseCorniceDescription);
     }
+    uint64_t hash(const DescriptionField &name) { return descriptionHash(text(name)); }
 
   private:
     template <typename T>
@@ -345,12 +346,14 @@ MasonryStyle readMasonry(const DescriptionItem &item, NamedFiles &files) {
     } else if (kind == "bricks" || kind == "ashlar") {
         item.expectFieldCount(4, 4, fmt::format("{} masonry (masonry, {}, \"file\", metres per unit)", kind, kind));
         item.string(2, "the description's file");
+        masonry.source = files.hash(item.fields[2]);
         masonry.metresPerUnit = positiveNumber(item, 3, "metres per unit", kBuildingSizeLimit);
         if (kind == "bricks") masonry.kind = MasonryStyle::Kind::Bricks, masonry.bricks = files.bond(item.fields[2]);
         else masonry.kind = MasonryStyle::Kind::Ashlar, masonry.ashlar = files.ashlar(item.fields[2]);
     } else if (kind == "cyclopean") {
         item.expectFieldCount(3, 3, "cyclopean masonry (masonry, cyclopean, \"file\")");
         item.string(2, "the description's file");
+        masonry.source = files.hash(item.fields[2]);
         masonry.kind = MasonryStyle::Kind::Cyclopean;
         masonry.cyclopean = files.cyclopean(item.fields[2]);
     } else {

@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "core/word_hasher.h"
+
 namespace veduta {
 
 Masonry layStyleMasonry(const MasonryStyle &style, const WallFace &wall, uint32_t seed, uint32_t wallId) {
@@ -15,6 +17,25 @@ Masonry layStyleMasonry(const MasonryStyle &style, const WallFace &wall, uint32_
     case MasonryStyle::Kind::Plain: break;
     }
     return {};
+}
+
+uint64_t descriptionHash(std::string_view text) {
+    WordHasher hash;
+    hash.add(std::string(text));
+    return hash.value();
+}
+
+MasonryRecipe styleMasonryRecipe(const MasonryStyle &style, const WallFace &wall, uint32_t seed, uint32_t wallId) {
+    switch (style.kind) {
+    case MasonryStyle::Kind::Bricks: checkBrickBond(*style.bricks, wall, style.metresPerUnit); break;
+    case MasonryStyle::Kind::Ashlar: checkAshlar(*style.ashlar, wall, style.metresPerUnit); break;
+    case MasonryStyle::Kind::Cyclopean: checkCyclopean(wall, *style.cyclopean); break;
+    case MasonryStyle::Kind::Plain: break;
+    }
+    WordHasher hash;
+    hash.add(int(style.kind)), hash.add(style.source), hash.add(style.metresPerUnit);
+    hash.add(uint64_t(seed)), hash.add(uint64_t(wallId));
+    return {[style, wall, seed, wallId] { return layStyleMasonry(style, wall, seed, wallId); }, hash.value()};
 }
 
 const char *stylePartName(StylePart part) {

@@ -45,12 +45,20 @@ struct MasonryStyle {
     std::shared_ptr<const AshlarMasonry> ashlar;
     std::shared_ptr<const CyclopeanMasonry> cyclopean;
     double metresPerUnit = 1;  // bricks and ashlar: the description's unit in metres
+    uint64_t source = 0;       // descriptionHash of the description's text
     FileLoc loc;
 };
+
+// A hash of a masonry description's text: with the kind and scale it says which stones are laid.
+uint64_t descriptionHash(std::string_view text);
 
 // The stones `style` lays on `wall` (bricks, ashlar or cyclopean; none for plain), each wall's own
 // by `wallId`, every random choice from `seed` and that id.
 Masonry layStyleMasonry(const MasonryStyle &style, const WallFace &wall, uint32_t seed, uint32_t wallId);
+
+// Checks now what layStyleMasonry would report (an InputError at the description) and returns the
+// recipe that lays the same stones later.
+MasonryRecipe styleMasonryRecipe(const MasonryStyle &style, const WallFace &wall, uint32_t seed, uint32_t wallId);
 
 // Brüstungsfeld: a panel under a window's casing, standing `depth` proud of the wall, `height` high
 // (metres), its face an ornament grown into it (ornament_growth.h, §2.7) and baked as relief into

@@ -251,6 +251,12 @@ CyclopeanLayout layOutCyclopean(const WallRegion &region, const CyclopeanMasonry
     return layout;
 }
 
+void checkCyclopean(const WallFace &wall, const CyclopeanMasonry &description) {
+    checkDescription(description);
+    WallRegion region(wall);
+    if (region.area() > 0) targetCount(region, description, meanRadius(region, description));
+}
+
 Masonry cyclopeanMasonry(const WallFace &wall, const CyclopeanMasonry &description, uint32_t seed, uint32_t wallId) {
     WallRegion region(wall);
     CyclopeanLayout layout = layOutCyclopean(region, description, seed, wallId);

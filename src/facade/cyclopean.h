@@ -117,6 +117,10 @@ struct CyclopeanLayout {
 CyclopeanLayout layOutCyclopean(const WallRegion &region, const CyclopeanMasonry &description, uint32_t seed,
                                 uint32_t wallId);
 
+// Throws what cyclopeanMasonry would before it lays a stone (layOutCyclopean's InputError). A wall
+// checked can be laid later without an error to report.
+void checkCyclopean(const WallFace &wall, const CyclopeanMasonry &description);
+
 // The masonry of one wall face: its stones, seeded from `seed` and the wall's stable `wallId`.
 Masonry cyclopeanMasonry(const WallFace &wall, const CyclopeanMasonry &description, uint32_t seed, uint32_t wallId);
 

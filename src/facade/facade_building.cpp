@@ -103,7 +103,7 @@ class BuildingAssembly {
         buildRoofs();
         for (size_t s = 0; s < structure_.storeyCount(); ++s)
             for (StoreyPlan &plan : storeyPlans(int(s))) buildStorey(plan, int(s));
-        layMasonry();
+        describeMasonry();
         appendRoofs();
         for (const auto &[reason, count] : dropped_)
             result_.notes.push_back(fmt::format("{} opening{} left out: {}", count, count == 1 ? "" : "s", reason));
@@ -290,8 +290,31 @@ class BuildingAssembly {
                 build.holes.push_back(std::move(*hole));
             }
         }
-        std::vector<Vec2d> rectangle = {{x0, bottom}, {x1, bottom}, {x1, bottom + height}, {x0, bottom + height}};
-        appendWall(convexPieces(rectangle, holes), face.frame, build);
+        std::vector<std::vector<Vec2d>> pieces = elementPieces({x1 - x0, height}, holes, {x0, bottom});
+        appendWall(pieces, face.frame, build);
+    }
+
+    // The convex pieces of a wall element of `size` with its `holes`, its lower left corner at
+    // `corner`. Worked out from the corner (a building repeats its elements, and their
+    // triangulations cost more than the rest of its walls) and moved there.
+    std::vector<std::vector<Vec2d>> elementPieces(Vec2d size, const std::vector<std::vector<Vec2d>> &holes,
+                                                  Vec2d corner) {
+        std::vector<double> key{size.x, size.y};
+        std::vector<std::vector<Vec2d>> fromCorner;
+        for (const std::vector<Vec2d> &hole : holes) {
+            std::vector<Vec2d> &ring = fromCorner.emplace_back();
+            key.push_back(double(hole.size()));
+            for (Vec2d p : hole) {
+                ring.push_back(p - corner);
+                key.insert(key.end(), {ring.back().x, ring.back().y});
+            }
+        }
+        auto [at, fresh] = elementPieces_.try_emplace(std::move(key));
+        if (fresh) at->second = convexPieces({{0, 0}, {size.x, 0}, size, {0, size.y}}, fromCorner);
+        std::vector<std::vector<Vec2d>> pieces = at->second;
+        for (std::vector<Vec2d> &piece : pieces)
+            for (Vec2d &p : piece) p = p + corner;
+        return pieces;
     }
 
     Vec3f worldOf(const FaceFrame &frame, Vec2d p) const { return at(frame.origin + frame.along * p.x, p.y); }
@@ -527,7 +550,7 @@ class BuildingAssembly {
 
     // --- masonry -------------------------------------------------------------------------
 
-    void layMasonry() {
+    void describeMasonry() {
         for (const FaceKey &key : faceOrder_) {
             if (!key.masonry) continue;
             FaceBuild &build = faces_[key];
@@ -538,7 +561,7 @@ class BuildingAssembly {
             uint32_t wallId =
                 hashValues({buildingId_, uint32_t(key.module), uint32_t(key.edge), uint32_t(key.reversed)});
             // resolveStyle gives plastered walls no masonry: these all lay stones.
-            wall.masonry = layStyleMasonry(*key.masonry, wall.face, seed_, wallId);
+            wall.recipe = styleMasonryRecipe(*key.masonry, wall.face, seed_, wallId);
             wall.material = build.material;
             wall.triangles = std::move(build.triangles);
             result_.masonry.push_back(std::move(wall));
@@ -560,6 +583,7 @@ class BuildingAssembly {
     WindowAssemblies &windows_;
     std::map<WindowAssemblies::Key, OpeningModel> openingModels_;
     size_t elementCount_ = 0;
+    std::map<std::vector<double>, std::vector<std::vector<Vec2d>>> elementPieces_;
 };
 
 }  // namespace

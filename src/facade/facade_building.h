@@ -21,7 +21,9 @@
 // * A band run is swept with the cornice of its first element's band; bands of other styles
 //   that meet it at the same heights are one run (findBands), so they share that cornice.
 // * Masonry is laid per wall face: one module edge (or PP edge) and one resolved masonry style,
-//   over all storeys that show it, so that courses run on from storey to storey.
+//   over all storeys that show it, so that courses run on from storey to storey. The building
+//   checks each wall's masonry and hands out its recipe; the stones are laid by whoever needs them
+//   (a bake, or a shader when a ray first meets the wall).
 // * Gable walls above the eaves are the roof's interface faces, in the style's roof-side material.
 #pragma once
 
@@ -44,11 +46,14 @@
 
 namespace veduta {
 
-// One wall face's masonry, to be baked: the face in its own coordinates (x metres along the wall
-// from `origin`, y = world z), its openings cut out, and the triangles of the building's mesh
-// that show it, whose texture coordinates are those wall coordinates.
+// One wall face's masonry, to be baked or shaded: the face in its own coordinates (x metres along
+// the wall from `origin`, y = world z), its openings cut out, and the triangles of the building's
+// mesh that show it, whose texture coordinates are those wall coordinates.
 struct MasonryWall {
     WallFace face;
+    // Stones are laid from `recipe` when they are needed (layMasonryWalls, a MasonryShader); until
+    // then `masonry` is empty. A wall of a relief alone has no recipe.
+    MasonryRecipe recipe;
     Masonry masonry;
     MaterialId material = kNoMaterial;  // the wall material the baked maps belong to
     std::vector<uint32_t> triangles;

@@ -5,6 +5,8 @@
 // triangle count): these polygons are baked to images, while the wall's mesh stays coarse.
 #pragma once
 
+#include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -41,6 +43,16 @@ struct Masonry {
     Vec3f mortarColour;
     double mortarThickness = 0;  // metres
     std::optional<MasonryRelief> relief = {};
+};
+
+// A wall's masonry before it is laid: what lays it, and a hash of all it lays from besides the face
+// (the description's text and scale, the seed, the wall's identity). Its errors were reported when
+// it was made (checkStyleMasonry), so that the laying can wait until the stones are needed: a bake
+// lays every wall, a MasonryShader a wall when a lookup first reaches it, so that walls nobody sees
+// (party walls, the backs of a row) are never laid.
+struct MasonryRecipe {
+    std::function<Masonry()> lay;
+    uint64_t hash = 0;
 };
 
 }  // namespace veduta

@@ -3,11 +3,15 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <map>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
 
 #include <fmt/format.h>
 
 #include "core/polygon_area.h"
+#include "core/polygon_bounds.h"
 #include "core/word_hasher.h"
 
 namespace veduta {
@@ -45,59 +49,49 @@ Inside insideOf(const std::vector<Vec2d> &polygon, Vec2d p) {
 
 }  // namespace
 
-MasonryShader::Wall MasonryShader::prepare(ShadedWall shaded, const MasonryLook &look) {
-    const WallFace &face = shaded.face;
-    if (face.outline.size() < 3) throw std::invalid_argument("a wall face with fewer than three corners");
-    Wall wall;
-    wall.low = wall.high = face.outline[0];
-    for (Vec2d p : face.outline) {
-        wall.low = {std::min(wall.low.x, p.x), std::min(wall.low.y, p.y)};
-        wall.high = {std::max(wall.high.x, p.x), std::max(wall.high.y, p.y)};
-    }
+MasonryShader::Laid MasonryShader::prepare(const Wall &wall, Masonry masonry, const MasonryLook &look) {
+    const WallFace &face = wall.given.face;
+    Laid laid;
     Vec2d extent{std::max(wall.high.x - wall.low.x, 1e-6), std::max(wall.high.y - wall.low.y, 1e-6)};
     // Cells about a stone's box: a lookup tests a stone or two.
     double boxes = 0, stoneArea = 0;
     Vec3f stoneColour(0.0f);
-    for (const Stone &stone : shaded.masonry.stones) {
-        Vec2d a = stone.outline[0], b = stone.outline[0];
-        for (Vec2d p : stone.outline)
-            a = {std::min(a.x, p.x), std::min(a.y, p.y)}, b = {std::max(b.x, p.x), std::max(b.y, p.y)};
+    for (const Stone &stone : masonry.stones) {
+        auto [a, b] = polygonBounds(stone.outline);
         boxes += (b.x - a.x) * (b.y - a.y);
         double area = std::abs(signedArea(stone.outline));
         stoneArea += area;
         stoneColour += stone.colour * float(area);
     }
-    const size_t stones = shaded.masonry.stones.size();
-    wall.stoneSize = stones ? std::max(std::sqrt(boxes / double(stones)), 1e-3) : std::max(extent.x, extent.y);
-    wall.cell = std::max(wall.stoneSize, std::sqrt(extent.x * extent.y / kMaxCells));
-    wall.columns = std::max(1, int(std::ceil(extent.x / wall.cell)));
-    wall.rows = std::max(1, int(std::ceil(extent.y / wall.cell)));
-    wall.stonesByCell.resize(size_t(wall.columns) * size_t(wall.rows));
-    auto column = [&](double x) { return std::clamp(int((x - wall.low.x) / wall.cell), 0, wall.columns - 1); };
-    auto row = [&](double y) { return std::clamp(int((y - wall.low.y) / wall.cell), 0, wall.rows - 1); };
+    const size_t stones = masonry.stones.size();
+    laid.stoneSize = stones ? std::max(std::sqrt(boxes / double(stones)), 1e-3) : std::max(extent.x, extent.y);
+    laid.cell = std::max(laid.stoneSize, std::sqrt(extent.x * extent.y / kMaxCells));
+    laid.columns = std::max(1, int(std::ceil(extent.x / laid.cell)));
+    laid.rows = std::max(1, int(std::ceil(extent.y / laid.cell)));
+    laid.stonesByCell.resize(size_t(laid.columns) * size_t(laid.rows));
+    auto column = [&](double x) { return std::clamp(int((x - wall.low.x) / laid.cell), 0, laid.columns - 1); };
+    auto row = [&](double y) { return std::clamp(int((y - wall.low.y) / laid.cell), 0, laid.rows - 1); };
     for (uint32_t s = 0; s < stones; ++s) {
-        const std::vector<Vec2d> &outline = shaded.masonry.stones[s].outline;
-        Vec2d a = outline[0], b = outline[0];
-        for (Vec2d p : outline)
-            a = {std::min(a.x, p.x), std::min(a.y, p.y)}, b = {std::max(b.x, p.x), std::max(b.y, p.y)};
+        auto [a, b] = polygonBounds(masonry.stones[s].outline);
         for (int y = row(a.y); y <= row(b.y); ++y)
             for (int x = column(a.x); x <= column(b.x); ++x)
-                wall.stonesByCell[size_t(y) * size_t(wall.columns) + size_t(x)].push_back(s);
+                laid.stonesByCell[size_t(y) * size_t(laid.columns) + size_t(x)].push_back(s);
     }
     // The means over the wall less its openings: stones by their area, the rest mortar.
     double area = std::abs(signedArea(face.outline));
     for (const std::vector<Vec2d> &opening : face.openings) area -= std::abs(signedArea(opening));
     double mortarArea = std::max(0.0, area - stoneArea), total = std::max(area, stoneArea);
-    const Vec3f &mortar = shaded.masonry.mortarColour;
+    const Vec3f &mortar = masonry.mortarColour;
+    laid.area = total;
     if (total > 0) {
-        wall.mean.colour = (stoneColour + mortar * float(mortarArea)) * float(1 / total);
-        wall.mean.specular = float((stoneArea * look.stoneSpecular + mortarArea * look.mortarSpecular) / total);
+        laid.mean.colour = (stoneColour + mortar * float(mortarArea)) * float(1 / total);
+        laid.mean.specular = float((stoneArea * look.stoneSpecular + mortarArea * look.mortarSpecular) / total);
     } else {
-        wall.mean.colour = mortar;
-        wall.mean.specular = look.mortarSpecular;
+        laid.mean.colour = mortar;
+        laid.mean.specular = look.mortarSpecular;
     }
-    wall.masonry = std::move(shaded.masonry);
-    return wall;
+    laid.masonry = std::move(masonry);
+    return laid;
 }
 
 MasonryShader::MasonryShader(std::vector<ShadedWall> walls, const MasonryLook &look) : look_(look) {
@@ -110,38 +104,81 @@ MasonryShader::MasonryShader(std::vector<ShadedWall> walls, const MasonryLook &l
     };
     auto addColour = [&](Vec3f c) { print.add(Vec2d{c.x, c.y}), print.add(double(c.z)); };
     print.add(double(look.stoneSpecular)), print.add(double(look.mortarSpecular)), print.add(look.bevel);
+    std::map<const Image *, uint64_t> reliefHashes;
     for (const ShadedWall &w : walls) {
         addPolygon(w.face.outline);
         for (const auto &opening : w.face.openings) addPolygon(opening);
+        print.add(w.recipe.lay ? w.recipe.hash : 0);
         addColour(w.masonry.mortarColour), print.add(w.masonry.mortarThickness);
         for (const Stone &stone : w.masonry.stones)
             addPolygon(stone.outline), addColour(stone.colour), print.add(stone.depth);
         if (w.masonry.relief) {
             const MasonryRelief &relief = *w.masonry.relief;
             print.add(relief.origin), print.add(relief.cellSize);
-            for (float h : relief.heights->pixels) print.add(double(h));
+            // The aprons of one window style share their heights: each image is hashed once.
+            auto [at, fresh] = reliefHashes.try_emplace(relief.heights.get(), 0);
+            if (fresh) {
+                WordHasher heights;
+                heights.add(relief.heights->width), heights.add(relief.heights->height);
+                for (float h : relief.heights->pixels) heights.add(double(h));
+                at->second = heights.value();
+            }
+            print.add(at->second);
         }
     }
     fingerprint_ = fmt::format("{:016x}", print.value());
-    for (ShadedWall &w : walls) walls_.push_back(prepare(std::move(w), look));
+    for (ShadedWall &given : walls) {
+        if (given.face.outline.size() < 3) throw std::invalid_argument("a wall face with fewer than three corners");
+        auto wall = std::make_unique<Wall>();
+        std::tie(wall->low, wall->high) = polygonBounds(given.face.outline);
+        wall->given = std::move(given);
+        walls_.push_back(std::move(wall));
+    }
     if (walls_.empty()) return;
-    lowest_ = walls_[0].low.y;
-    double highest = walls_[0].high.y;
-    for (const Wall &w : walls_) lowest_ = std::min(lowest_, w.low.y), highest = std::max(highest, w.high.y);
+    lowest_ = walls_[0]->low.y;
+    double highest = walls_[0]->high.y;
+    for (const auto &w : walls_) lowest_ = std::min(lowest_, w->low.y), highest = std::max(highest, w->high.y);
     pitch_ = std::ceil(highest - lowest_) + 1;
+    wholeTexture_ = pitch_ * double(walls_.size());
+    for (const auto &w : walls_) wholeTexture_ = std::max(wholeTexture_, w->high.x - w->low.x);
+}
+
+const MasonrySample &MasonryShader::wholeMean() const {
+    std::call_once(wholeMeanOnce_, [&] {
+        double area = 0, specular = 0;
+        Vec3f colour(0.0f);
+        for (const auto &w : walls_) {
+            const Laid &wall = laid(*w);
+            area += wall.area;
+            colour += wall.mean.colour * float(wall.area);
+            specular += wall.mean.specular * wall.area;
+        }
+        if (area > 0) wholeMean_ = {colour * float(1 / area), {0, 0, 1}, float(specular / area)};
+        else wholeMean_ = laid(*walls_[0]).mean;
+    });
+    return wholeMean_;
+}
+
+const MasonryShader::Laid &MasonryShader::laid(Wall &wall) const {
+    std::call_once(wall.once, [&] {
+        MasonryRecipe recipe = std::exchange(wall.given.recipe, {});
+        wall.laid = prepare(wall, recipe.lay ? recipe.lay() : std::move(wall.given.masonry), look_);
+    });
+    return wall.laid;
 }
 
 Vec2f MasonryShader::uvOf(size_t wall, Vec2d point) const {
     return {float(point.x), float(point.y - lowest_ + double(wall) * pitch_)};
 }
 
-MasonrySample MasonryShader::pointSample(const Wall &wall, Vec2d p, double footprint) const {
-    MasonrySample sample{wall.masonry.mortarColour, {0, 0, 1}, look_.mortarSpecular};
+MasonrySample MasonryShader::pointSample(const Wall &wall, const Laid &laid, Vec2d p, double footprint) const {
+    const Masonry &masonry = laid.masonry;
+    MasonrySample sample{masonry.mortarColour, {0, 0, 1}, look_.mortarSpecular};
     Vec2d slope{0, 0};  // the height's gradient, metres per metre
-    int column = std::clamp(int((p.x - wall.low.x) / wall.cell), 0, wall.columns - 1);
-    int row = std::clamp(int((p.y - wall.low.y) / wall.cell), 0, wall.rows - 1);
-    for (uint32_t s : wall.stonesByCell[size_t(row) * size_t(wall.columns) + size_t(column)]) {
-        const Stone &stone = wall.masonry.stones[s];
+    int column = std::clamp(int((p.x - wall.low.x) / laid.cell), 0, laid.columns - 1);
+    int row = std::clamp(int((p.y - wall.low.y) / laid.cell), 0, laid.rows - 1);
+    for (uint32_t s : laid.stonesByCell[size_t(row) * size_t(laid.columns) + size_t(column)]) {
+        const Stone &stone = masonry.stones[s];
         Inside inside = insideOf(stone.outline, p);
         if (!inside.inside) continue;
         sample.colour = stone.colour;
@@ -152,8 +189,8 @@ MasonrySample MasonryShader::pointSample(const Wall &wall, Vec2d p, double footp
         if (bevel > 0 && inside.distance < bevel) slope = inside.outward * (-stone.depth / bevel);
         break;
     }
-    if (wall.masonry.relief) {
-        const MasonryRelief &relief = *wall.masonry.relief;
+    if (masonry.relief) {
+        const MasonryRelief &relief = *masonry.relief;
         double h = std::max(relief.cellSize, footprint) / 2;
         slope = slope +
             Vec2d{reliefHeightAt(relief, p + Vec2d{h, 0}) - reliefHeightAt(relief, p - Vec2d{h, 0}),
@@ -166,17 +203,19 @@ MasonrySample MasonryShader::pointSample(const Wall &wall, Vec2d p, double footp
 
 MasonrySample MasonryShader::shade(Vec2f uv, float footprint) const {
     if (walls_.empty()) return {};
+    if (footprint >= wholeTexture_) return wholeMean();
     int w = std::clamp(int(std::floor(double(uv.y) / pitch_)), 0, int(walls_.size()) - 1);
-    const Wall &wall = walls_[size_t(w)];
+    Wall &wall = *walls_[size_t(w)];
+    const Laid &laid = this->laid(wall);
     Vec2d p{uv.x, double(uv.y) - double(w) * pitch_ + lowest_};
-    double toMean = std::clamp((footprint - wall.stoneSize) / ((kStonesToMean - 1) * wall.stoneSize), 0.0, 1.0);
-    if (toMean >= 1) return wall.mean;
-    MasonrySample point = pointSample(wall, p, footprint);
+    double toMean = std::clamp((footprint - laid.stoneSize) / ((kStonesToMean - 1) * laid.stoneSize), 0.0, 1.0);
+    if (toMean >= 1) return laid.mean;
+    MasonrySample point = pointSample(wall, laid, p, footprint);
     if (toMean <= 0) return point;
     auto t = float(toMean);
-    return {point.colour + (wall.mean.colour - point.colour) * t,
-            normalize(point.normal + (wall.mean.normal - point.normal) * t),
-            point.specular + (wall.mean.specular - point.specular) * t};
+    return {point.colour + (laid.mean.colour - point.colour) * t,
+            normalize(point.normal + (laid.mean.normal - point.normal) * t),
+            point.specular + (laid.mean.specular - point.specular) * t};
 }
 
 std::string MasonryTexture::fingerprint() const {

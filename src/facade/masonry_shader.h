@@ -1,9 +1,10 @@
 // Masonry shaded where the renderer looks it up, instead of baked to images (masonry_texture.h):
 // the other way issue 22's Deliver 4 allows (digest-001 §2.5). Measured (docs/facades.md), a
 // shaded point costs less than the three filtered lookups of baked maps and nothing is baked, so a
-// scene builds faster and holds less, while a whole render takes as long. The stones stay as laid;
-// each lookup finds the stone under its point through a grid of the stones' boxes and shades it as
-// bakeMasonry would a texel there:
+// scene builds faster and holds less, while a whole render takes as long. A wall given as a recipe
+// is laid when a lookup first reaches it (once, whichever thread asks; the stones are the same
+// whenever they are laid), so a wall no ray meets costs nothing. Each lookup finds the stone under
+// its point through a grid of the stones' boxes and shades it as bakeMasonry would a texel there:
 // * diffuse: the stone's colour, else the mortar's;
 // * normal: a stone's edge falls to the mortar over the look's bevel (its depth over the bevel, the
 //   slope toward the nearest edge), the relief's slope added;
@@ -23,6 +24,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -33,9 +35,11 @@
 
 namespace veduta {
 
+// A wall's masonry as laid, or, while `recipe.lay` is set, empty: the recipe lays it.
 struct ShadedWall {
     Masonry masonry;
     WallFace face;
+    MasonryRecipe recipe = {};
 };
 
 struct MasonrySample {
@@ -52,7 +56,8 @@ class MasonryShader {
     // Where wall `wall`'s point lies in the texture.
     Vec2f uvOf(size_t wall, Vec2d point) const;
     // The masonry at `uv`, filtered over `footprint` metres. A point beside every stone of its
-    // wall (or outside the wall) is mortar.
+    // wall (or outside the wall) is mortar. A footprint over the whole texture (all its walls)
+    // gives the mean of all walls, by their areas.
     MasonrySample shade(Vec2f uv, float footprint) const;
     // Changes when a stone, the mortar, a relief or the look would.
     const std::string &fingerprint() const { return fingerprint_; }
@@ -60,22 +65,36 @@ class MasonryShader {
     uint64_t serial() const { return serial_; }
 
   private:
-    struct Wall {
+    // A wall's stones sorted for lookups, with their means.
+    struct Laid {
         Masonry masonry;
-        Vec2d low, high;
         double stoneSize = 0;  // the side of a mean stone's box
         double cell = 0;
         int columns = 0, rows = 0;
         std::vector<std::vector<uint32_t>> stonesByCell;
         MasonrySample mean;
+        double area = 0;  // of the wall less its openings, or of its stones where they cover more
+    };
+    struct Wall {
+        ShadedWall given;  // until laid
+        Vec2d low, high;
+        std::once_flag once;
+        Laid laid;
     };
 
-    static Wall prepare(ShadedWall shaded, const MasonryLook &look);
-    MasonrySample pointSample(const Wall &wall, Vec2d p, double footprint) const;
+    static Laid prepare(const Wall &wall, Masonry masonry, const MasonryLook &look);
+    const Laid &laid(Wall &wall) const;
+    const MasonrySample &wholeMean() const;
+    MasonrySample pointSample(const Wall &wall, const Laid &laid, Vec2d p, double footprint) const;
 
-    std::vector<Wall> walls_;
+    // Pointers: a wall's once_flag does not move. The walls are laid in const lookups (each once,
+    // under its flag).
+    std::vector<std::unique_ptr<Wall>> walls_;
     MasonryLook look_;
     double lowest_ = 0, pitch_ = 1;
+    double wholeTexture_ = 0;  // the footprint that spans every wall
+    mutable std::once_flag wholeMeanOnce_;
+    mutable MasonrySample wholeMean_;
     std::string fingerprint_;
     uint64_t serial_ = 0;
 };

@@ -64,9 +64,13 @@ TextureId OiioTextures::add(std::shared_ptr<const ProceduralTexture> texture) {
 }
 
 // Adds the entry with its mean: a footprint far wider than the texture reads the coarsest level.
+// A procedural texture filters for itself (lookup) and is not asked now: it may compute its values
+// only when they are first looked up.
 TextureId OiioTextures::append(Entry entry) {
     constexpr float kWholeTexture = 1e6f;
-    filtered(entry, {0.5f, 0.5f}, kWholeTexture, entry.mean.data(), std::min(entry.channels, int(entry.mean.size())));
+    if (!entry.procedural)
+        filtered(entry, {0.5f, 0.5f}, kWholeTexture, entry.mean.data(),
+                 std::min(entry.channels, int(entry.mean.size())));
     entries_.push_back(std::move(entry));
     return TextureId(entries_.size() - 1);
 }

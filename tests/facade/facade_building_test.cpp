@@ -82,9 +82,12 @@ FacadeBuilding build(const BuildingStructure &s, const BuildingStyle &style, Mat
     return buildFacadeBuilding(s, style, materials.byName(), 7, 1);
 }
 
+// The wall's stones, laid from its recipe.
+std::vector<Stone> laidStones(const MasonryWall &w) { return w.recipe.lay ? w.recipe.lay().stones : w.masonry.stones; }
+
 size_t stoneCount(const FacadeBuilding &b) {
     size_t n = 0;
-    for (const MasonryWall &w : b.masonry) n += w.masonry.stones.size();
+    for (const MasonryWall &w : b.masonry) n += laidStones(w).size();
     return n;
 }
 
@@ -113,6 +116,19 @@ TEST(FacadeBuilding, TheTriangleCountDoesNotDependOnTheBricks) {
     FacadeBuilding small = build(s, oneStyle(style("a", MasonryStyle::Kind::Bricks, 0.04)), m);
     EXPECT_GT(stoneCount(small), 5 * stoneCount(large));
     EXPECT_EQ(small.mesh.triangleCount(), large.mesh.triangleCount());
+}
+
+TEST(FacadeBuilding, MasonryTooFineForItsWallsIsRefusedWhenTheBuildingIsBuiltNotWhenItIsLaid) {
+    // A shader lays the stones only when a ray first meets the wall, inside the render: what the
+    // laying would refuse must be said while the building is built, at the description.
+    Materials m;
+    try {
+        build(houseWithWing(), oneStyle(style("fine", MasonryStyle::Kind::Bricks, 0.001)), m);
+        FAIL() << "a bond of 0.25 mm bricks was accepted";
+    } catch (const InputError &e) {
+        EXPECT_NE(std::string(e.what()).find("fig5_7:"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("would lay more than"), std::string::npos) << e.what();
+    }
 }
 
 TEST(FacadeBuilding, WindowsUnderTheLowerWingsRoofAreDroppedWithTheReason) {
@@ -191,9 +207,11 @@ TEST(FacadeBuilding, TheSameInputBuildsTheSameBuilding) {
     EXPECT_EQ(a.mesh.indices, b.mesh.indices);
     ASSERT_EQ(a.masonry.size(), b.masonry.size());
     for (size_t w = 0; w < a.masonry.size(); ++w) {
-        ASSERT_EQ(a.masonry[w].masonry.stones.size(), b.masonry[w].masonry.stones.size());
-        for (size_t k = 0; k < a.masonry[w].masonry.stones.size(); ++k)
-            EXPECT_EQ(a.masonry[w].masonry.stones[k].outline, b.masonry[w].masonry.stones[k].outline);
+        EXPECT_EQ(a.masonry[w].recipe.hash, b.masonry[w].recipe.hash);
+        std::vector<Stone> first = laidStones(a.masonry[w]), second = laidStones(b.masonry[w]);
+        ASSERT_FALSE(first.empty());
+        ASSERT_EQ(first.size(), second.size());
+        for (size_t k = 0; k < first.size(); ++k) EXPECT_EQ(first[k].outline, second[k].outline);
     }
 }
 

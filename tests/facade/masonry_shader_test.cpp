@@ -5,9 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <thread>
+#include <vector>
 
 #include "facade/brick_bond.h"
 #include "io/image_library.h"
@@ -115,14 +118,77 @@ TEST(MasonryShader, WallsStackedInTheTextureKeepTheirOwnMasonry) {
     EXPECT_NE(both.fingerprint(), first.fingerprint());
 }
 
+TEST(MasonryShader, AFootprintOverTheWholeTextureGivesTheMeanOfAllWallsByArea) {
+    // What the preview colours a building's masonry with (preview.cpp's previewAlbedo).
+    BrickWall a, b;
+    b.masonry.mortarColour = {0.9f, 0.1f, 0.1f};
+    b.masonry.stones.clear();
+    b.face.outline = rectangle(0, 0, 12, 4);  // twice a's area less the opening, and the opening
+    MasonryShader both({{a.masonry, a.face}, {b.masonry, b.face}});
+    Vec3f meanA = both.shade(both.uvOf(0, {1, 1}), 1.0f).colour, meanB = both.shade(both.uvOf(1, {1, 1}), 1.0f).colour;
+    EXPECT_EQ(meanB, Vec3f(0.9f, 0.1f, 0.1f));
+    double areaA = 6 * 4 - 1.2 * 2, areaB = 12 * 4 - 1.2 * 2;
+    Vec3f expected = (meanA * float(areaA) + meanB * float(areaB)) * float(1 / (areaA + areaB));
+    MasonrySample whole = both.shade({0.5f, 0.5f}, 1e6f);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(whole.colour[k], expected[k], 1e-5f) << k;
+    EXPECT_EQ(whole.normal, Vec3f(0, 0, 1));
+    // Under the whole texture, a wide footprint still gives its own wall's mean.
+    EXPECT_EQ(both.shade(both.uvOf(0, {1, 1}), 5.0f).colour, meanA);
+}
+
+TEST(MasonryShader, AWallGivenAsARecipeIsLaidWhenALookupFirstReachesItOnceForAllThreads) {
+    BrickWall wall;
+    std::atomic<int> laid[2] = {0, 0};
+    auto recipe = [&](int w, uint64_t hash) {
+        return MasonryRecipe{[&laid, &wall, w] {
+                                 ++laid[w];
+                                 return wall.masonry;
+                             },
+                             hash};
+    };
+    MasonryShader given({{wall.masonry, wall.face}, {wall.masonry, wall.face}});
+    MasonryShader shader({{{}, wall.face, recipe(0, 1)}, {{}, wall.face, recipe(1, 2)}});
+    EXPECT_EQ(laid[0] + laid[1], 0);
+    // Many threads reach the second wall at once: it is laid once, and every one of them sees it
+    // as the wall given laid.
+    std::vector<std::thread> threads;
+    std::atomic<int> differing{0};
+    for (int t = 0; t < 8; ++t)
+        threads.emplace_back([&, t] {
+            for (int k = 0; k < 200; ++k) {
+                Vec2d p{0.01 + 0.0297 * (k + t), 0.02 + 0.0193 * (k * t % 200)};
+                for (float footprint : {1e-5f, 0.01f, 0.3f})
+                    differing += shader.shade(shader.uvOf(1, p), footprint).colour !=
+                        given.shade(given.uvOf(1, p), footprint).colour;
+            }
+        });
+    for (std::thread &thread : threads) thread.join();
+    EXPECT_EQ(laid[0], 0);
+    EXPECT_EQ(laid[1], 1);
+    EXPECT_EQ(differing, 0);
+    // The recipe's hash stands for the stones it will lay.
+    MasonryShader same({{{}, wall.face, recipe(0, 1)}, {{}, wall.face, recipe(1, 2)}});
+    MasonryShader other({{{}, wall.face, recipe(0, 1)}, {{}, wall.face, recipe(1, 3)}});
+    EXPECT_EQ(same.fingerprint(), shader.fingerprint());
+    EXPECT_NE(other.fingerprint(), shader.fingerprint());
+    EXPECT_NE(given.fingerprint(), shader.fingerprint());
+}
+
 TEST(MasonryShader, TheTextureRegistryAnswersWithTheShadersMaps) {
     BrickWall wall;
-    auto shader = std::make_shared<const MasonryShader>(std::vector<ShadedWall>{{wall.masonry, wall.face}});
+    int laid = 0;
+    MasonryRecipe recipe{[&] {
+                             ++laid;
+                             return wall.masonry;
+                         },
+                         1};
+    auto shader = std::make_shared<const MasonryShader>(std::vector<ShadedWall>{{{}, wall.face, recipe}});
     std::shared_ptr<Textures> textures =
         imageLibrary().makeTextures(std::filesystem::temp_directory_path() / "veduta-masonry-shader-test");
     TextureId diffuse = textures->add(std::make_shared<MasonryTexture>(shader, MasonryMap::Diffuse));
     TextureId normal = textures->add(std::make_shared<MasonryTexture>(shader, MasonryMap::Normal));
     TextureId specular = textures->add(std::make_shared<MasonryTexture>(shader, MasonryMap::Specular));
+    EXPECT_EQ(laid, 0) << "registering the maps laid the wall";
     EXPECT_EQ(textures->channels(diffuse), 3);
     EXPECT_EQ(textures->channels(specular), 1);
     EXPECT_NE(textures->fingerprint(diffuse), textures->fingerprint(normal));
