@@ -322,9 +322,9 @@ struct SceneDescription {
     uint32_t seed = 0;
     std::optional<uint32_t> renderSeed;  // <render seed>: the sampler's; unset: the scene's
     RenderSettings settings;             // its seed is the resolved one only in the RenderScene
-    // <render masonry="procedural">: Finkenzeller's masonry shaded where it is looked up instead of
-    // baked to images (docs/facades.md, "Baked or shaded procedurally").
-    bool proceduralMasonry = false;
+    // <render masonry>: Finkenzeller's masonry shaded where it is looked up (procedural, the
+    // default) or baked to images (docs/facades.md, "Baked or shaded procedurally").
+    bool proceduralMasonry = true;
     std::vector<MaterialDesc> materials;
     std::vector<GeometryDesc> geometry;
     std::vector<PrototypeDesc> prototypes;

@@ -372,7 +372,7 @@ class SceneFileReader {
         } else if (sampling != "mis") {
             e.failAt("light_sampling", fmt::format("unknown light sampling '{}' (mis, bsdf, light)", sampling));
         }
-        std::string masonry = e.string("masonry", "baked");
+        std::string masonry = e.string("masonry", "procedural");
         if (masonry != "baked" && masonry != "procedural")
             e.failAt("masonry", fmt::format("unknown masonry '{}' (baked, procedural)", masonry));
         scene_.proceduralMasonry = masonry == "procedural";

@@ -1,5 +1,5 @@
 // <modular_building> in scene files: Finkenzeller's palace from its structure and style files,
-// its masonry baked into an atlas the walls show.
+// its masonry shaded procedurally or baked into an atlas the walls show.
 #include <gtest/gtest.h>
 
 #include <tbb/global_control.h>
@@ -39,9 +39,9 @@ const Material *findMaterial(const RenderScene &scene, const std::string &part) 
 
 TEST(ModularBuildings, ThePalaceInBrickShowsItsBakedMasonry) {
     std::vector<std::string> warnings;
-    RenderScene scene =
-        build(R"(<modular_building structure="palace/palace.structure" style="palace/brick.style" building="7"/>)",
-              &warnings);
+    RenderScene scene = build(R"(<render masonry="baked"/>
+            <modular_building structure="palace/palace.structure" style="palace/brick.style" building="7"/>)",
+                              &warnings);
     ASSERT_EQ(scene.buildings.size(), 1u);
     EXPECT_EQ(scene.buildings[0].id, 7u);
     EXPECT_NEAR(scene.buildings[0].eaves, 21.3f, 1e-4f);
@@ -138,7 +138,7 @@ std::pair<double, double> masonryDensities(const RenderScene &scene, const Mater
 // point 30 m off, at 640 pixels over 39.6°: about 2 cm).
 TEST(ModularBuildings, AWallTheCameraSeesFromBehindTakesTheCoarsestTexel) {
     std::string xml = R"(<scene version="1"><camera position="45 8 10" look_at="14 8 10" resolution="640 360"/>
-        <materials file="../materials/palace.xml"/>
+        <render masonry="baked"/><materials file="../materials/palace.xml"/>
         <modular_building structure="palace/palace.structure" style="palace/brick.style" building="7"/></scene>)";
     RenderScene scene = buildRenderScene(readSceneText(xml, "test.xml", test::sourceFile("scenes")));
     const Material *masonry = findMaterial(scene, "(building 7 masonry)");

@@ -1,5 +1,6 @@
 // Finkenzeller's masonry from rule files (<Masonry>, docs/facades.md): read with the rules, laid on
-// the walls a wall model builds on the facades it names, baked at the camera's texels.
+// the walls a wall model builds on the facades it names, shaded procedurally or baked at the
+// camera's texels.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -84,17 +85,21 @@ TEST(RuleMasonry, TheGeneratorRefusesAModelThatIsNoWall) {
     }
 }
 
-std::string street(const std::string &rules) {
+// The street, its <render masonry> as given (none: the default).
+std::string street(const std::string &rules, const std::string &masonry = "") {
     return fmt::format(R"(<scene version="1"><camera position="7 -25 6" look_at="7 6 8" resolution="320 180"/>
+        {}
         <buildings rules="{}" seed="3">
           <building footprint="0 0 14 0 14 12 0 12" street="0"/>
           <building footprint="30 0 44 0 44 12 30 12" street="0"/>
         </buildings></scene>)",
+                       masonry.empty() ? "" : fmt::format("<render masonry=\"{}\"/>", masonry),
                        test::sourceFile(rules));
 }
 
-// The masonry materials of a scene, and the triangles that show them.
-size_t masonryTriangles(const RenderScene &scene) {
+// The masonry materials of a scene, and the triangles that show them; baked, their texture
+// coordinates lie in the atlas.
+size_t masonryTriangles(const RenderScene &scene, bool inAtlas = false) {
     size_t count = 0;
     for (const BakedMesh &baked : scene.meshes)
         for (size_t t = 0; t < baked.mesh.triangleCount(); ++t) {
@@ -102,7 +107,8 @@ size_t masonryTriangles(const RenderScene &scene) {
             if (m.name.find("masonry)") == std::string::npos) continue;
             EXPECT_NE(m.diffuseMap, kNoTexture);
             EXPECT_NE(m.normalMap, kNoTexture);
-            for (int k = 0; k < 3; ++k) {
+            EXPECT_EQ(scene.textures->fingerprint(m.diffuseMap).starts_with("procedural:"), !inAtlas);
+            for (int k = 0; inAtlas && k < 3; ++k) {
                 Vec2f uv = baked.mesh.uvs[baked.mesh.indices[3 * t + size_t(k)]];
                 EXPECT_TRUE(uv.x >= 0 && uv.x <= 1 && uv.y >= 0 && uv.y <= 1) << uv.x << " " << uv.y;
             }
@@ -120,8 +126,13 @@ TEST(RuleMasonry, TheBrickRulesLayMasonryOnTheSidesAndNowhereElse) {
     std::vector<std::string> warnings;
     RenderScene brick = buildRenderScene(
         readSceneText(street("rules/gruenderzeit/FacadeStructureBrick.xml"), "test.xml", test::testData()), &warnings);
-    EXPECT_GT(masonryTriangles(brick), 0u);
     ASSERT_TRUE(brick.textures);
+    size_t shaded = masonryTriangles(brick);
+    EXPECT_GT(shaded, 0u);
+    // Baked into an atlas instead, the same walls show it.
+    RenderScene atlas = buildRenderScene(
+        readSceneText(street("rules/gruenderzeit/FacadeStructureBrick.xml", "baked"), "test.xml", test::testData()));
+    EXPECT_EQ(masonryTriangles(atlas, true), shaded);
     RenderScene plain =
         buildRenderScene(readSceneText(street("rules/gruenderzeit/FacadeStructure.xml"), "test.xml", test::testData()));
     EXPECT_EQ(masonryTriangles(plain), 0u);
