@@ -4,7 +4,6 @@
 #include <cmath>
 #include <map>
 #include <numeric>
-#include <set>
 #include <utility>
 
 #include <fmt/format.h>
@@ -14,6 +13,17 @@
 namespace veduta {
 
 namespace {
+
+// The vertices of the triangles, each once, in increasing order.
+std::vector<uint32_t> verticesOf(const Mesh &mesh, const std::vector<uint32_t> &triangles) {
+    std::vector<uint32_t> vertices;
+    vertices.reserve(3 * triangles.size());
+    for (uint32_t t : triangles)
+        vertices.insert(vertices.end(), &mesh.indices[3 * size_t(t)], &mesh.indices[3 * size_t(t) + 3]);
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    return vertices;
+}
 
 // A part of a masonry wall baked as a region of its own: some of the wall's triangles (whole
 // pieces: no vertex is shared with another tile), the face the bake covers (the rectangle of
@@ -186,10 +196,8 @@ std::optional<MasonryAtlas> bakeMasonryMaps(Mesh &mesh, std::vector<MasonryWall>
     MasonryAtlas atlas = bakeMasonryAtlas(regions, finest, {}, kBuildingMasonryTexels);
     for (size_t r = 0; r < tiles.size(); ++r) {
         // Tiles share no vertex, and a tile's triangles share theirs: each vertex is mapped once.
-        std::set<uint32_t> vertices;
-        for (uint32_t t : tiles[r].triangles)
-            vertices.insert(&mesh.indices[3 * size_t(t)], &mesh.indices[3 * size_t(t) + 3]);
-        for (uint32_t v : vertices) mesh.uvs[v] = atlas.uvOf(r, {mesh.uvs[v].x, mesh.uvs[v].y});
+        for (uint32_t v : verticesOf(mesh, tiles[r].triangles))
+            mesh.uvs[v] = atlas.uvOf(r, {mesh.uvs[v].x, mesh.uvs[v].y});
     }
     return atlas;
 }
@@ -235,10 +243,8 @@ std::shared_ptr<const MasonryShader> shadeMasonry(Mesh &mesh, std::vector<Masonr
     auto shader = std::make_shared<const MasonryShader>(std::move(shaded));
     for (size_t w = 0; w < walls.size(); ++w) {
         // Walls share no vertex (as the atlas's tiles): each vertex is moved once.
-        std::set<uint32_t> vertices;
-        for (uint32_t t : walls[w].triangles)
-            vertices.insert(&mesh.indices[3 * size_t(t)], &mesh.indices[3 * size_t(t) + 3]);
-        for (uint32_t v : vertices) mesh.uvs[v] = shader->uvOf(w, {mesh.uvs[v].x, mesh.uvs[v].y});
+        for (uint32_t v : verticesOf(mesh, walls[w].triangles))
+            mesh.uvs[v] = shader->uvOf(w, {mesh.uvs[v].x, mesh.uvs[v].y});
         walls[w].masonry = {};
         walls[w].recipe = {};
     }

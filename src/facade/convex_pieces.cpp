@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <iterator>
 #include <list>
+#include <optional>
 
 namespace veduta {
 namespace {
@@ -48,6 +49,43 @@ std::vector<Vec2d> doubles(const Points &points) {
     return result;
 }
 
+// A wall element's common case, without a triangulation: `outer` an axis-parallel rectangle
+// around one convex `hole` (both cleaned) that lies strictly inside it. The pieces are the bands
+// left and right of the hole's box and below and above it, and in the box, for each hole edge, the
+// triangle to the box corner its outside faces: the edges facing one corner run monotonically
+// round it, so their fan fills what lies between them and the corner. All corners are the input
+// points: nothing is rounded. Nothing when the case does not apply.
+std::optional<std::vector<std::vector<Vec2d>>> framePieces(const std::vector<Point> &outer, std::vector<Point> hole) {
+    if (outer.size() != 4) return std::nullopt;
+    for (size_t i = 0; i < 4; ++i) {
+        const Point &a = outer[i], &b = outer[(i + 1) % 4];
+        if ((a.x() == b.x()) == (a.y() == b.y())) return std::nullopt;  // an edge not axis-parallel
+    }
+    CGAL::Bbox_2 frame = CGAL::bbox_2(outer.begin(), outer.end());
+    if (!CGAL::is_convex_2(hole.begin(), hole.end(), Kernel())) return std::nullopt;
+    if (CGAL::orientation_2(hole.begin(), hole.end(), Kernel()) == CGAL::CLOCKWISE)
+        std::reverse(hole.begin(), hole.end());
+    CGAL::Bbox_2 box = CGAL::bbox_2(hole.begin(), hole.end());
+    if (!(frame.xmin() < box.xmin() && box.xmax() < frame.xmax() && frame.ymin() < box.ymin() &&
+          box.ymax() < frame.ymax()))
+        return std::nullopt;
+    auto rectangle = [](double x0, double y0, double x1, double y1) {
+        return std::vector<Vec2d>{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+    };
+    std::vector<std::vector<Vec2d>> pieces{rectangle(frame.xmin(), frame.ymin(), box.xmin(), frame.ymax()),
+                                           rectangle(box.xmax(), frame.ymin(), frame.xmax(), frame.ymax()),
+                                           rectangle(box.xmin(), frame.ymin(), box.xmax(), box.ymin()),
+                                           rectangle(box.xmin(), box.ymax(), box.xmax(), frame.ymax())};
+    for (size_t i = 0; i < hole.size(); ++i) {
+        const Point &a = hole[i], &b = hole[(i + 1) % hole.size()];
+        // The edge's outside lies to its right: (dy, −dx).
+        double outX = b.y() - a.y(), outY = a.x() - b.x();
+        Point corner(outX >= 0 ? box.xmax() : box.xmin(), outY >= 0 ? box.ymax() : box.ymin());
+        if (CGAL::orientation(corner, b, a) == CGAL::LEFT_TURN) pieces.push_back(doubles(std::vector{corner, b, a}));
+    }
+    return pieces;
+}
+
 }  // namespace
 
 std::vector<std::vector<Vec2d>> convexPieces(const std::vector<Vec2d> &outline,
@@ -68,6 +106,9 @@ std::vector<std::vector<Vec2d>> convexPieces(const std::vector<Vec2d> &outline,
         CGAL::optimal_convex_partition_2(points.begin(), points.end(), std::back_inserter(convex));
         for (const auto &part : convex) pieces.push_back(doubles(part.container()));
         return pieces;
+    }
+    if (holeRings.size() == 1) {
+        if (auto framed = framePieces(points, holeRings[0])) return *framed;
     }
     // Holes, or a ring that touches or crosses itself: the constrained triangulation takes every
     // edge as it comes and keeps the triangles inside by the parity of the rings around them.

@@ -34,7 +34,9 @@ std::vector<Vec2d> roundedRing(const Polygon &polygon) {
 
 // The region bounded by `outline` (counter-clockwise) less its `holes` as convex, counter-clockwise
 // pieces: the outline itself when it is convex and has no hole, CGAL's fewest convex pieces when
-// it is simple, else triangles. Repeated and collinear vertices are dropped first (exact tests).
+// it is simple, an axis-parallel rectangle around one convex hole strictly inside it as the bands
+// around the hole's box and triangles fanned from the box's corners to the hole's edges (a wall
+// element around its opening), else triangles. Repeated and collinear vertices are dropped first (exact tests).
 // Rings cut exactly and rounded to double may touch themselves at a vertex (two grown openings
 // meeting at a corner, an opening touching the wall's edge) or, by rounding, cross; the optimal
 // partition must not see those (a CGAL precondition), the triangulation takes them. Empty when

@@ -290,31 +290,8 @@ class BuildingAssembly {
                 build.holes.push_back(std::move(*hole));
             }
         }
-        std::vector<std::vector<Vec2d>> pieces = elementPieces({x1 - x0, height}, holes, {x0, bottom});
-        appendWall(pieces, face.frame, build);
-    }
-
-    // The convex pieces of a wall element of `size` with its `holes`, its lower left corner at
-    // `corner`. Worked out from the corner (a building repeats its elements, and their
-    // triangulations cost more than the rest of its walls) and moved there.
-    std::vector<std::vector<Vec2d>> elementPieces(Vec2d size, const std::vector<std::vector<Vec2d>> &holes,
-                                                  Vec2d corner) {
-        std::vector<double> key{size.x, size.y};
-        std::vector<std::vector<Vec2d>> fromCorner;
-        for (const std::vector<Vec2d> &hole : holes) {
-            std::vector<Vec2d> &ring = fromCorner.emplace_back();
-            key.push_back(double(hole.size()));
-            for (Vec2d p : hole) {
-                ring.push_back(p - corner);
-                key.insert(key.end(), {ring.back().x, ring.back().y});
-            }
-        }
-        auto [at, fresh] = elementPieces_.try_emplace(std::move(key));
-        if (fresh) at->second = convexPieces({{0, 0}, {size.x, 0}, size, {0, size.y}}, fromCorner);
-        std::vector<std::vector<Vec2d>> pieces = at->second;
-        for (std::vector<Vec2d> &piece : pieces)
-            for (Vec2d &p : piece) p = p + corner;
-        return pieces;
+        std::vector<Vec2d> rectangle = {{x0, bottom}, {x1, bottom}, {x1, bottom + height}, {x0, bottom + height}};
+        appendWall(convexPieces(rectangle, holes), face.frame, build);
     }
 
     Vec3f worldOf(const FaceFrame &frame, Vec2d p) const { return at(frame.origin + frame.along * p.x, p.y); }
@@ -583,7 +560,6 @@ class BuildingAssembly {
     WindowAssemblies &windows_;
     std::map<WindowAssemblies::Key, OpeningModel> openingModels_;
     size_t elementCount_ = 0;
-    std::map<std::vector<double>, std::vector<std::vector<Vec2d>>> elementPieces_;
 };
 
 }  // namespace

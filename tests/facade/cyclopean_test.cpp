@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -145,6 +146,48 @@ TEST(ConvexPieces, SplitsConcaveAndHoledPiecesIntoConvexOnes) {
     ASSERT_EQ(square.size(), 1u);
     EXPECT_EQ(square[0].size(), 4u);
     EXPECT_TRUE(convexPieces({{0, 0}, {1, 0}, {2, 0}}).empty());
+}
+
+// A wall element around its opening, an arched window whose jambs carry extra collinear points
+// (as casings give them): the bands around the window's box and fans from its corners, which
+// cover the element less the window once, every corner an input point.
+TEST(ConvexPieces, AWallElementAroundAConvexOpeningIsItsBandsAndCornerFans) {
+    std::vector<Vec2d> arch{{1, 0.8}, {1.6, 0.8}, {2.2, 0.8}, {2.2, 1.5}, {2.2, 2.2}};
+    for (int k = 1; k < 12; ++k) {
+        double angle = M_PI * k / 12;
+        arch.push_back({1.6 + 0.6 * std::cos(angle), 2.2 + 0.6 * std::sin(angle)});
+    }
+    arch.insert(arch.end(), {{1, 2.2}, {1, 1.5}});
+    for (bool clockwise : {false, true}) {
+        std::vector<Vec2d> hole = arch;
+        if (clockwise) std::reverse(hole.begin(), hole.end());
+        std::vector<std::vector<Vec2d>> parts = convexPieces(rectangle(0, 0, 4, 3.5), {hole});
+        // Four bands and a triangle for each of the arch's twelve edges (a triangulation: 19).
+        EXPECT_EQ(parts.size(), 16u);
+        double total = 0;
+        for (const auto &part : parts) {
+            EXPECT_TRUE(polygon(part).is_convex());
+            EXPECT_GT(ringArea(part), 0);
+            total += ringArea(part);
+            for (Vec2d p : part) {
+                bool x =
+                    p.x == 0 || p.x == 4 || std::any_of(arch.begin(), arch.end(), [&](Vec2d q) { return q.x == p.x; });
+                bool y = p.y == 0 || p.y == 3.5 ||
+                    std::any_of(arch.begin(), arch.end(), [&](Vec2d q) { return q.y == p.y; });
+                EXPECT_TRUE(x && y) << p.x << " " << p.y;
+            }
+        }
+        EXPECT_NEAR(total, 4 * 3.5 - ringArea(arch), 1e-12);
+        // Every point of the element less the window lies in exactly one piece.
+        Polygon window = polygon(arch);
+        for (double x = 0.013; x < 4; x += 0.05)
+            for (double y = 0.017; y < 3.5; y += 0.05) {
+                Kernel::Point_2 p(x, y);
+                int in = 0;
+                for (const auto &part : parts) in += polygon(part).bounded_side(p) == CGAL::ON_BOUNDED_SIDE;
+                EXPECT_EQ(in, window.bounded_side(p) == CGAL::ON_UNBOUNDED_SIDE ? 1 : 0) << x << " " << y;
+            }
+    }
 }
 
 TEST(CyclopeanLayout, ClipsEveryCellConvexAroundDoorAndWindow) {
