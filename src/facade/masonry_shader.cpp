@@ -161,8 +161,10 @@ const MasonrySample &MasonryShader::wholeMean() const {
 
 const MasonryShader::Laid &MasonryShader::laid(Wall &wall) const {
     std::call_once(wall.once, [&] {
-        MasonryRecipe recipe = std::exchange(wall.given.recipe, {});
-        wall.laid = prepare(wall, recipe.lay ? recipe.lay() : std::move(wall.given.masonry), look_);
+        // A recipe that throws (an internal error) leaves the wall to be laid by the next lookup.
+        Masonry masonry = wall.given.recipe.lay ? wall.given.recipe.lay() : std::move(wall.given.masonry);
+        wall.given.recipe = {};
+        wall.laid = prepare(wall, std::move(masonry), look_);
     });
     return wall.laid;
 }
