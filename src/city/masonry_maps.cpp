@@ -177,7 +177,7 @@ std::optional<double> seenTexel(const Mesh &mesh, const MasonryTile &tile, const
 std::optional<MasonryAtlas> bakeMasonryMaps(Mesh &mesh, std::vector<MasonryWall> &walls, const Transform &toWorld,
                                             const CameraRays &rays, const Camera &camera) {
     for (MasonryWall &wall : walls) {
-        if (wall.recipe.lay) wall.masonry = std::exchange(wall.recipe, {}).lay();
+        if (wall.recipe.lay) wall.masonry = std::exchange(wall.recipe, {}).lay(wall.face);
     }
     std::vector<MasonryTile> tiles;
     for (size_t w = 0; w < walls.size(); ++w) tileWall(mesh, walls[w], w, tiles);

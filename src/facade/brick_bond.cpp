@@ -293,7 +293,8 @@ void checkBrickBond(const BrickBond &bond, const WallFace &wall, double metresPe
     double scale = metresPerUnit;
     VEDUTA_CHECK(std::isfinite(scale) && scale > 0, fmt::format("metres per unit {}", scale));
     // Every size the walk adds or multiplies, scaled: the bricks, gaps, offsets and mortar.
-    double least = lowestCourse(bond), largest = bond.mortarThickness;
+    const double lowest = lowestCourse(bond);
+    double least = lowest, largest = bond.mortarThickness;
     for (const BrickKind &brick : bond.bricks) {
         least = std::min(least, brick.size.length);
         largest = std::max({largest, brick.size.length, brick.size.height, brick.size.depth});
@@ -308,7 +309,7 @@ void checkBrickBond(const BrickBond &bond, const WallFace &wall, double metresPe
     // bricks reach down into it, each with its repetitions over the width and two more.
     auto [low, high] = polygonBounds(wall.outline);
     Vec2d size = high - low;
-    double courses = (size.y + longestHang(bond) * scale) / ((lowestCourse(bond) + bond.mortarThickness) * scale) + 2;
+    double courses = (size.y + longestHang(bond) * scale) / ((lowest + bond.mortarThickness) * scale) + 2;
     double perCourse = 0;
     for (const BondCourse &course : bond.courses)
         perCourse = std::max(perCourse, (size.x / (course.length * scale) + 2) * double(course.units.size()));

@@ -35,7 +35,8 @@ MasonryRecipe styleMasonryRecipe(const MasonryStyle &style, const WallFace &wall
     WordHasher hash;
     hash.add(int(style.kind)), hash.add(style.source), hash.add(style.metresPerUnit);
     hash.add(uint64_t(seed)), hash.add(uint64_t(wallId));
-    return {[style, wall, seed, wallId] { return layStyleMasonry(style, wall, seed, wallId); }, hash.value()};
+    return {[style, seed, wallId](const WallFace &face) { return layStyleMasonry(style, face, seed, wallId); },
+            hash.value()};
 }
 
 const char *stylePartName(StylePart part) {

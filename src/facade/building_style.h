@@ -56,8 +56,8 @@ uint64_t descriptionHash(std::string_view text);
 // by `wallId`, every random choice from `seed` and that id.
 Masonry layStyleMasonry(const MasonryStyle &style, const WallFace &wall, uint32_t seed, uint32_t wallId);
 
-// Checks now what layStyleMasonry would report (an InputError at the description) and returns the
-// recipe that lays the same stones later.
+// Checks now what layStyleMasonry would report on `wall` (an InputError at the description) and
+// returns the recipe that lays the same stones on it later.
 MasonryRecipe styleMasonryRecipe(const MasonryStyle &style, const WallFace &wall, uint32_t seed, uint32_t wallId);
 
 // Brüstungsfeld: a panel under a window's casing, standing `depth` proud of the wall, `height` high

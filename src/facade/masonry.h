@@ -45,13 +45,14 @@ struct Masonry {
     std::optional<MasonryRelief> relief = {};
 };
 
-// A wall's masonry before it is laid: what lays it, and a hash of all it lays from besides the face
-// (the description's text and scale, the seed, the wall's identity). Its errors were reported when
+// A wall's masonry before it is laid: what lays it on the wall's face (which the holder keeps), and
+// a hash of all it lays from besides the face (the description's text and scale, the seed, the
+// wall's identity). Its errors were reported when
 // it was made (checkStyleMasonry), so that the laying can wait until the stones are needed: a bake
 // lays every wall, a MasonryShader a wall when a lookup first reaches it, so that walls nobody sees
 // (party walls, the backs of a row) are never laid.
 struct MasonryRecipe {
-    std::function<Masonry()> lay;
+    std::function<Masonry(const WallFace &face)> lay;
     uint64_t hash = 0;
 };
 

@@ -162,7 +162,8 @@ const MasonrySample &MasonryShader::wholeMean() const {
 const MasonryShader::Laid &MasonryShader::laid(Wall &wall) const {
     std::call_once(wall.once, [&] {
         // A recipe that throws (an internal error) leaves the wall to be laid by the next lookup.
-        Masonry masonry = wall.given.recipe.lay ? wall.given.recipe.lay() : std::move(wall.given.masonry);
+        Masonry masonry =
+            wall.given.recipe.lay ? wall.given.recipe.lay(wall.given.face) : std::move(wall.given.masonry);
         wall.given.recipe = {};
         wall.laid = prepare(wall, std::move(masonry), look_);
     });

@@ -83,7 +83,9 @@ FacadeBuilding build(const BuildingStructure &s, const BuildingStyle &style, Mat
 }
 
 // The wall's stones, laid from its recipe.
-std::vector<Stone> laidStones(const MasonryWall &w) { return w.recipe.lay ? w.recipe.lay().stones : w.masonry.stones; }
+std::vector<Stone> laidStones(const MasonryWall &w) {
+    return w.recipe.lay ? w.recipe.lay(w.face).stones : w.masonry.stones;
+}
 
 size_t stoneCount(const FacadeBuilding &b) {
     size_t n = 0;

@@ -140,7 +140,7 @@ TEST(MasonryShader, AWallGivenAsARecipeIsLaidWhenALookupFirstReachesItOnceForAll
     BrickWall wall;
     std::atomic<int> laid[2] = {0, 0};
     auto recipe = [&](int w, uint64_t hash) {
-        return MasonryRecipe{[&laid, &wall, w] {
+        return MasonryRecipe{[&laid, &wall, w](const WallFace &) {
                                  ++laid[w];
                                  return wall.masonry;
                              },
@@ -177,7 +177,7 @@ TEST(MasonryShader, AWallGivenAsARecipeIsLaidWhenALookupFirstReachesItOnceForAll
 TEST(MasonryShader, TheTextureRegistryAnswersWithTheShadersMaps) {
     BrickWall wall;
     int laid = 0;
-    MasonryRecipe recipe{[&] {
+    MasonryRecipe recipe{[&](const WallFace &) {
                              ++laid;
                              return wall.masonry;
                          },
