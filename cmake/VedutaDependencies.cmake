@@ -30,6 +30,9 @@ find_package(ZLIB QUIET)  # CRC-32 of checkpoints
 veduta_require(ZLIB_FOUND zlib1g-dev)
 find_package(GeographicLib QUIET)
 veduta_require(GeographicLib_FOUND libgeographiclib-dev)
+# DHDN ↔ ETRS89 through the BeTA2007 grid (geodesy/datum_grid.h); proj-data brings the grid.
+find_package(PROJ QUIET CONFIG)
+veduta_require(PROJ_FOUND libproj-dev)
 set(CGAL_DATA_DIR "unused")  # silences CGAL's note about its data directory
 find_package(CGAL QUIET CONFIG)
 veduta_require(CGAL_FOUND libcgal-dev)

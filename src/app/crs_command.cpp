@@ -108,9 +108,19 @@ void convertStandardInput(const Crs &from, const Crs &to) {
     std::fflush(stdout);
 }
 
+void warnOfHelmertFallbacks(uint64_t fallbacksBefore) {
+    if (std::optional<std::string> fallback = helmertFallbackWarning(fallbacksBefore))
+        std::fprintf(stderr, "veduta: warning: %s\n", fallback->c_str());
+}
+
 int runCrs(const CrsArgs &args) {
     const Crs &from = parseCrs(args.from), &to = parseCrs(args.to);
-    if (args.coordinates.empty()) return runGuarded([&] { convertStandardInput(from, to); });
+    uint64_t fallbacksBefore = helmertFallbacks();
+    if (args.coordinates.empty()) {
+        int status = runGuarded([&] { convertStandardInput(from, to); });
+        warnOfHelmertFallbacks(fallbacksBefore);
+        return status;
+    }
     if (args.coordinates.size() > 3 || args.coordinates.size() < 2) {
         std::fprintf(stderr, "veduta: error: give X Y [Z], or none to read lines of standard input\n");
         return kExitBadUsage;
@@ -124,6 +134,7 @@ int runCrs(const CrsArgs &args) {
         std::fprintf(stderr, "veduta: error: coordinate argument %d: %s\n", e.column, e.what());
         return kExitBadUsage;
     }
+    warnOfHelmertFallbacks(fallbacksBefore);
     return kExitOk;
 }
 

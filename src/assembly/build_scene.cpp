@@ -392,7 +392,11 @@ void replaceEverySeed(SceneDescription &d, uint32_t seed) {
 
 RenderScene buildRenderScene(const SceneDescription &description, std::vector<std::string> *warnings) {
     std::vector<std::string> ignored;
-    return SceneAssembler(description, warnings ? *warnings : ignored).assemble();
+    std::vector<std::string> &told = warnings ? *warnings : ignored;
+    uint64_t fallbacksBefore = helmertFallbacks();
+    RenderScene scene = SceneAssembler(description, told).assemble();
+    if (std::optional<std::string> fallback = helmertFallbackWarning(fallbacksBefore)) told.push_back(*fallback);
+    return scene;
 }
 
 }  // namespace veduta

@@ -1,6 +1,7 @@
 #include "geodesy/crs.h"
 
 #include <array>
+#include <atomic>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -10,6 +11,8 @@
 #include <GeographicLib/Constants.hpp>
 #include <GeographicLib/Geocentric.hpp>
 #include <GeographicLib/TransverseMercator.hpp>
+
+#include "geodesy/datum_grid.h"
 
 namespace veduta {
 
@@ -164,6 +167,8 @@ bool startsWithIgnoringCase(std::string_view text, std::string_view prefix) {
 
 std::string_view direction(double offset) { return offset < 0 ? "west" : "east"; }
 
+std::atomic<uint64_t> helmertCount{0};
+
 }  // namespace
 
 std::span<const Crs> supportedCrss() { return kCatalogue; }
@@ -208,7 +213,33 @@ MapPoint forwardProjection(const Crs &crs, const GeographicPoint &point) {
 
 GeographicPoint changeDatum(Datum from, Datum to, const GeographicPoint &point) {
     if (from == to) return point;
+    std::optional<GeographicPoint> byGrid =
+        from == Datum::Dhdn ? beta2007DhdnToEtrs89(point) : beta2007Etrs89ToDhdn(point);
+    if (byGrid) return *byGrid;
+    helmertCount.fetch_add(1, std::memory_order_relaxed);
+    return changeDatumByHelmert(from, to, point);
+}
+
+GeographicPoint changeDatumByHelmert(Datum from, Datum to, const GeographicPoint &point) {
+    if (from == to) return point;
     return from == Datum::Dhdn ? dhdnToEtrs89(point) : etrs89ToDhdn(point);
+}
+
+uint64_t helmertFallbacks() { return helmertCount.load(std::memory_order_relaxed); }
+
+std::optional<std::string> helmertFallbackWarning(uint64_t fallbacksBefore) {
+    uint64_t count = helmertFallbacks() - fallbacksBefore;
+    if (count == 0) return std::nullopt;
+    if (!beta2007Installed()) {
+        return fmt::format(
+            "BETA2007.gsb was not found (Debian package proj-data), so {} point{} went between DHDN "
+            "and ETRS89 by the 7-parameter Helmert EPSG:1777, which is up to 3 m off",
+            count, count == 1 ? "" : "s");
+    }
+    return fmt::format(
+        "{} point{} outside the BeTA2007 grid went between DHDN and ETRS89 by the 7-parameter "
+        "Helmert EPSG:1777, which is up to 3 m off and jumps by as much at the grid's edge",
+        count, count == 1 ? "" : "s");
 }
 
 CrsCoordinate convert(const Crs &from, const Crs &to, const CrsCoordinate &point) {

@@ -1,12 +1,16 @@
 // The coordinate reference systems veduta reads (German Gauss-Krüger on DHDN, UTM on
 // ETRS89 and WGS 84, and their geographic CRSs) and conversions between any two of them,
 // in double. A conversion goes projected → geographic on the CRS's own datum → datum change
-// → target. The one datum change is DHDN ↔ ETRS89 by the 7-parameter Helmert
-// transformation EPSG:1777; ETRS89 and WGS 84 are taken as one datum (they differ by less
-// than 1 m in Germany). Heights pass through unchanged. See docs/coordinates.md.
+// → target. The one datum change is DHDN ↔ ETRS89, by the official NTv2 grid BeTA2007
+// (geodesy/datum_grid.h) and, outside it, by the 7-parameter Helmert transformation
+// EPSG:1777; ETRS89 and WGS 84 are taken as one datum (they differ by less than 1 m in
+// Germany). Heights pass through unchanged. See docs/coordinates.md.
 #pragma once
 
+#include <cstdint>
+#include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 
 #include "geodesy/map_point.h"
@@ -62,8 +66,18 @@ CrsCoordinate convert(const Crs &from, const Crs &to, const CrsCoordinate &point
 GeographicPoint inverseProjection(const Crs &crs, const MapPoint &point);
 MapPoint forwardProjection(const Crs &crs, const GeographicPoint &point);
 
-// The datum change of latitude and longitude alone (identity for from == to).
+// The datum change of latitude and longitude alone (identity for from == to): BeTA2007
+// where the grid covers the point and is installed, else changeDatumByHelmert, counted in
+// helmertFallbacks.
 GeographicPoint changeDatum(Datum from, Datum to, const GeographicPoint &point);
+// EPSG:1777's Helmert alone, good to about 3 m in Germany.
+GeographicPoint changeDatumByHelmert(Datum from, Datum to, const GeographicPoint &point);
+
+// How many datum changes in this process have fallen back to the Helmert: a scene builder
+// reads it before and after and says so in its warnings (helmertFallbackWarning, which is
+// std::nullopt when no point fell back since `fallbacksBefore`).
+uint64_t helmertFallbacks();
+std::optional<std::string> helmertFallbackWarning(uint64_t fallbacksBefore);
 
 // The meridian convergence γ at a point of a projected CRS: the angle from true north
 // clockwise to grid north, positive east of the central meridian in the northern
