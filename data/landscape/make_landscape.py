@@ -143,8 +143,8 @@ def main(folder):
     forest_track = [(600, 790), (560, 1000), (480, 1200), (420, 1450)]
     rail = [(0, 420), (500, 430), (1000, 400), (1500, 360), (2000, 330), (2400, 330)]
     traffic = [
-        line(3101, village_road, BRF="0065", OBJID="DEBWT001"),
-        line(3101, hill_road, BRF="0055", OBJID="DEBWT002"),
+        line(3101, village_road, WDM="1305", BRF="0065", OBJID="DEBWT001"),
+        line(3101, hill_road, WDM="1307", BRF="0055", OFM="Pflaster", OBJID="DEBWT002"),
         line(3102, forest_track, OBJID="DEBWT003"),
         line(3201, rail, GLS="1000", OBJID="DEBWT004"),
         line(4202, [(1230, 797), (1500, 770), (1790, 713)], OBJID="DEBWV009"),  # 10 m north of the road

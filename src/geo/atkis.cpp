@@ -58,12 +58,6 @@ constexpr std::array kTypes{
     TypeEntry{7000, "Gebiete"},
 };
 
-std::optional<std::string_view> attribute(const AtkisObject &object, const std::string &name) {
-    auto it = object.attributes.find(name);
-    if (it == object.attributes.end()) return std::nullopt;
-    return it->second;
-}
-
 std::string_view withoutBlanks(std::string_view text) {
     while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
     while (!text.empty() && text.back() == ' ') text.remove_suffix(1);
@@ -99,9 +93,7 @@ std::optional<double> widthAttribute(const AtkisObject &object, const std::strin
 // NAS's anzahlDerStreckengleise likewise. One when absent or unreadable.
 int trackCount(const AtkisObject &object) {
     for (const std::string &name : {std::string("GLS"), std::string("ANZAHLDERSTRECKENGLEISE")}) {
-        auto text = attribute(object, name);
-        if (!text) continue;
-        std::optional<long> value = number<long>(*text);
+        std::optional<long> value = attributeNumber(object, name);
         if (!value || *value <= 0) continue;
         long tracks = *value >= 1000 ? *value / 1000 : *value;
         return int(std::clamp(tracks, 1L, 8L));
@@ -110,6 +102,17 @@ int trackCount(const AtkisObject &object) {
 }
 
 }  // namespace
+
+std::optional<std::string_view> attribute(const AtkisObject &object, const std::string &name) {
+    auto it = object.attributes.find(name);
+    if (it == object.attributes.end()) return std::nullopt;
+    return it->second;
+}
+
+std::optional<long> attributeNumber(const AtkisObject &object, const std::string &name) {
+    std::optional<std::string_view> text = attribute(object, name);
+    return text ? number<long>(*text) : std::nullopt;
+}
 
 std::string_view atkisTypeName(int type) {
     auto it = std::find_if(kTypes.begin(), kTypes.end(), [&](const TypeEntry &e) { return e.code == type; });
@@ -183,16 +186,12 @@ std::string_view landClassName(LandClass c) {
 TreeKind treeKind(const AtkisObject &object) {
     // ATKIS-OK VEG: 1000 Laubholz, 2000 Nadelholz, 3000 Laub- und Nadelholz. AAA
     // vegetationsmerkmal (NAS): 1100 Laubholz, 1200 Nadelholz, 1300 and its 13x0 variants mixed.
-    if (auto text = attribute(object, "VEG")) {
-        std::optional<long> value = number<long>(*text);
-        if (value == 1000) return TreeKind::Broadleaf;
-        if (value == 2000) return TreeKind::Conifer;
-    }
-    if (auto text = attribute(object, "VEGETATIONSMERKMAL")) {
-        std::optional<long> value = number<long>(*text);
-        if (value == 1100) return TreeKind::Broadleaf;
-        if (value == 1200) return TreeKind::Conifer;
-    }
+    std::optional<long> veg = attributeNumber(object, "VEG");
+    if (veg == 1000) return TreeKind::Broadleaf;
+    if (veg == 2000) return TreeKind::Conifer;
+    std::optional<long> feature = attributeNumber(object, "VEGETATIONSMERKMAL");
+    if (feature == 1100) return TreeKind::Broadleaf;
+    if (feature == 1200) return TreeKind::Conifer;
     return TreeKind::Mixed;
 }
 

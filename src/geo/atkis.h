@@ -5,6 +5,7 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -56,6 +57,12 @@ enum class LandClass {
 };
 
 enum class TreeKind { Broadleaf, Conifer, Mixed };
+
+// An attribute's text as the source gave it ("0065"), by its upper-case name; nothing when absent.
+std::optional<std::string_view> attribute(const AtkisObject &object, const std::string &name);
+// An attribute written as a whole number, blanks round it allowed ("1303", " 0065 ");
+// nothing when absent or not such a number.
+std::optional<long> attributeNumber(const AtkisObject &object, const std::string &name);
 
 // The Objektart's German name from the code table ("Straße"), or "" for an unknown code.
 std::string_view atkisTypeName(int type);

@@ -17,6 +17,8 @@
 #include "geo/drape_areas.h"
 #include "geo/edbs.h"
 #include "geo/ribbons.h"
+#include "geo/road_markings.h"
+#include "geo/road_style.h"
 #include "geo/terrain_mesh.h"
 #include "geo/terrain_surface.h"
 #include "geo/tree_models.h"
@@ -59,6 +61,27 @@ Material landMaterial(LandClass c) {
     case LandClass::Parcel: break;
     }
     return Material::lambertian("land/bare", {0.2f, 0.24f, 0.11f});
+}
+
+// Ribbons are coloured by what they are paved with (geo/road_style.h).
+Material pavementMaterial(Pavement pavement) {
+    std::string name = fmt::format("land/{}", pavementName(pavement));
+    switch (pavement) {
+    case Pavement::Asphalt: return Material::lambertian(name, {0.13f, 0.13f, 0.14f});
+    case Pavement::Cobbles: return Material::lambertian(name, {0.2f, 0.18f, 0.16f});
+    case Pavement::Concrete: return Material::lambertian(name, {0.36f, 0.35f, 0.33f});
+    case Pavement::Gravel: return Material::lambertian(name, {0.42f, 0.38f, 0.31f});
+    case Pavement::Ballast: return Material::lambertian(name, {0.27f, 0.24f, 0.22f});
+    }
+    return Material::lambertian(name, {0.13f, 0.13f, 0.14f});
+}
+
+// Road paint: white, with a faint sheen from its glass beads.
+Material markingMaterial() {
+    Material paint = Material::lambertian("land/marking", {0.72f, 0.72f, 0.7f});
+    paint.specular = Vec3f(0.04f);
+    paint.shininess = 60;
+    return paint;
 }
 
 // The CRS a data file's coordinates are in: the scene file's word, else the file's, else the
@@ -340,24 +363,36 @@ class LandscapeBuilder {
         builder_.addWorldMesh(std::move(mesh), land_.objectId);
     }
 
-    // The roads, paths and rails, all in one mesh.
+    // The roads, paths and rails, all in one mesh, in their pavements' materials, and the
+    // roads' markings in another.
     void addRibbons() {
-        Mesh ribbons;
+        std::vector<Mesh> pieces;
+        std::vector<RoadStyle> styles;
         for (const AtkisObject &o : objects_) {
             if (!drawsAsRibbon(o)) continue;
-            LandClass c = landClass(o);
+            RoadStyle style = roadStyle(o);
             RibbonOptions options;
-            options.lift = ribbonLift(c);
-            MaterialId material = builder_.findOrAddMaterial(landMaterial(c));
-            double width = ribbonWidth(o);
+            options.lift = ribbonLift(landClass(o));
+            MaterialId material = builder_.findOrAddMaterial(pavementMaterial(style.pavement));
             for (const MapLine &line : o.lines) {
-                Mesh ribbon = atLandscape([&] { return drapeRibbon(line, width, *surface_, frame_, options); }, &o);
+                Mesh ribbon =
+                    atLandscape([&] { return drapeRibbon(line, style.width, *surface_, frame_, options); }, &o);
                 ribbon.setMaterial(material);
-                ribbons.append(ribbon, Transform());
-                ribbonClearance_.add(toLocal(line, frame_), float(width / 2 + kTreeClearance));
+                pieces.push_back(std::move(ribbon));
+                styles.push_back(style);
+                ribbonClearance_.add(toLocal(line, frame_), float(style.width / 2 + kTreeClearance));
             }
         }
+        std::vector<MarkedRoad> roads;
+        for (size_t i = 0; i < pieces.size(); ++i) roads.push_back({styles[i], &pieces[i]});
+        Mesh markings = roadMarkings(roads, {});
+        Mesh ribbons;
+        for (const Mesh &piece : pieces) ribbons.append(piece, Transform());
         if (ribbons.triangleCount() > 0) builder_.addWorldMesh(std::move(ribbons), land_.objectId);
+        if (markings.triangleCount() > 0) {
+            markings.setMaterial(builder_.findOrAddMaterial(markingMaterial()));
+            builder_.addWorldMesh(std::move(markings), land_.objectId);
+        }
     }
 
     void addTrees() {

@@ -16,6 +16,38 @@ namespace {
 
 constexpr double kShortest = 1e-3;  // metres: closer points merge, so every direction is well defined
 
+// How far the ribbon's edge on the inside of a bend of `turn` radians moves back along the
+// line from the corner: the miter's share along the line, half width · tan(turn / 2) while
+// the miter limit does not clamp it.
+double miterShift(double turn, double halfWidth, double miterLimit) {
+    double half = std::abs(turn) / 2;
+    return halfWidth * std::min(1 / std::cos(half), miterLimit) * std::sin(half);
+}
+
+double turnAt(const std::vector<Vec2d> &line, size_t i) {
+    Vec2d a = line[i] - line[i - 1], b = line[i + 1] - line[i];
+    return std::atan2(cross(a, b), dot(a, b));
+}
+
+// Drops the points that lie on a straight stretch (cuts at grid lines, mostly) nearer to a
+// corner than the corner's miter shift: the piece between them would be shorter than the
+// inner edge's step back, and its edge would fold back over its neighbour's, two triangles
+// over one spot at different heights. Without the point the pieces only span a cell line,
+// which the raising below still keeps clear of the ground.
+std::vector<Vec2d> withoutPointsInCorners(const std::vector<Vec2d> &line, double halfWidth, double miterLimit) {
+    if (line.size() < 3) return line;
+    std::vector<double> shift(line.size(), 0);
+    for (size_t i = 1; i + 1 < line.size(); ++i) shift[i] = miterShift(turnAt(line, i), halfWidth, miterLimit);
+    std::vector<Vec2d> kept{line.front()};
+    for (size_t i = 1; i + 1 < line.size(); ++i) {
+        bool straight = shift[i] < 1e-9;
+        bool crowded = length(line[i] - kept.back()) < shift[i - 1] || length(line[i + 1] - line[i]) < shift[i + 1];
+        if (!(straight && crowded)) kept.push_back(line[i]);
+    }
+    kept.push_back(line.back());
+    return kept;
+}
+
 std::vector<Vec2d> centreLine(const MapLine &centre, const TerrainSurface &surface, const LocalFrame &frame) {
     std::vector<Vec2d> line;
     for (const MapPoint &p : centre) {
@@ -95,7 +127,8 @@ Mesh drapeRibbon(const MapLine &centre, double width, const TerrainSurface &surf
                                      options.tileLength, options.lift, options.miterLimit));
     }
     Mesh mesh;
-    std::vector<Vec2d> line = centreLine(centre, surface, frame);
+    std::vector<Vec2d> line =
+        withoutPointsInCorners(centreLine(centre, surface, frame), 0.5 * width, options.miterLimit);
     if (line.size() < 2) return mesh;
     std::vector<Vec2d> offsets = leftOffsets(line, 0.5 * width, options.miterLimit);
     std::vector<Vec2d> left, right;

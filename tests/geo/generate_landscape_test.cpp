@@ -138,6 +138,50 @@ TEST_F(Landscape, BuildingsStandOnTheLowestTerrainUnderTheirFootprint) {
     EXPECT_FLOAT_EQ(lowest[2], 600.0f);
 }
 
+// Ribbons take their pavement's material and roads their rank's markings: a cobbled town
+// street, a federal road, a gravel path and a railway.
+TEST_F(Landscape, RibbonMaterialsAndMarkingsSwitchWithTheRoadClass) {
+    write("traffic.geojson", R"({"type": "FeatureCollection",
+ "crs": {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::25832"}},
+ "features": [
+  {"type": "Feature", "properties": {"OBJART": 3101, "WDM": "1307", "BRF": "0060", "OFM": "Pflaster"},
+   "geometry": {"type": "LineString", "coordinates": [[530005, 5326020], [530195, 5326020]]}},
+  {"type": "Feature", "properties": {"OBJART": 3101, "WDM": "1303", "BRF": "0075"},
+   "geometry": {"type": "LineString", "coordinates": [[530005, 5326080], [530195, 5326080]]}},
+  {"type": "Feature", "properties": {"OBJART": 3102},
+   "geometry": {"type": "LineString", "coordinates": [[530005, 5326130], [530195, 5326130]]}},
+  {"type": "Feature", "properties": {"OBJART": 3201},
+   "geometry": {"type": "LineString", "coordinates": [[530005, 5326170], [530195, 5326170]]}}
+ ]})");
+    RenderScene s = build(scene("<landscape><dgm file=\"dgm.asc\"/><atkis file=\"traffic.geojson\"/></landscape>\n"));
+    // Painted area by the north–south band (local y) of each line.
+    MaterialId paint = materialNamed(s, "land/marking");
+    ASSERT_NE(paint, kNoMaterial);
+    std::map<std::string, double> pavedArea, paintedArea;
+    auto band = [](float y) { return y < -60 ? "town" : y < -10 ? "federal" : y < 40 ? "path" : "rail"; };
+    for (const BakedMesh &b : s.meshes) {
+        for (size_t t = 0; t < b.mesh.triangleCount(); ++t) {
+            const std::string &name = s.materials[b.mesh.triangleMaterials[t]].name;
+            if (name != "land/marking" && name.find("land/") != 0) continue;
+            Vec3f p = b.mesh.positions[b.mesh.indices[3 * t]], q = b.mesh.positions[b.mesh.indices[3 * t + 1]],
+                  r = b.mesh.positions[b.mesh.indices[3 * t + 2]];
+            double area = 0.5 * std::abs((q.x - p.x) * double(r.y - p.y) - (q.y - p.y) * double(r.x - p.x));
+            if (b.mesh.triangleMaterials[t] == paint) paintedArea[band(p.y)] += area;
+            else if (name != "land/bare") pavedArea[name + " " + band(p.y)] += area;
+        }
+    }
+    EXPECT_NEAR(pavedArea["land/cobbles town"], 190 * 6.0, 1.0);
+    EXPECT_NEAR(pavedArea["land/asphalt federal"], 190 * 7.5, 1.0);
+    EXPECT_NEAR(pavedArea["land/gravel path"], 190 * 2.5, 1.0);
+    EXPECT_NEAR(pavedArea["land/ballast rail"], 190 * 4.5, 1.0);
+    // The town street: dashes of 3 m every 9 m; the federal road: 6 m every 18 m and two edge
+    // lines; the path and the railway: none.
+    EXPECT_NEAR(paintedArea["town"], (21 * 3 + 1) * 0.12, 0.01);
+    EXPECT_NEAR(paintedArea["federal"], 11 * 6 * 0.12 + 2 * 190 * 0.12, 0.01);
+    EXPECT_EQ(paintedArea.count("path"), 0u);
+    EXPECT_EQ(paintedArea.count("rail"), 0u);
+}
+
 // Areas become materials of the terrain, lines ribbons, forests trees; the trees stand on the
 // terrain and are the same on every run.
 TEST_F(Landscape, AtkisLayersBecomeSurfacesRibbonsAndTrees) {
@@ -154,7 +198,7 @@ TEST_F(Landscape, AtkisLayersBecomeSurfacesRibbonsAndTrees) {
     SceneDescription d =
         scene("<landscape seed=\"7\"><dgm file=\"dgm.asc\"/><atkis file=\"layer.geojson\"/></landscape>\n");
     RenderScene s = build(d);
-    for (const char *name : {"land/forest", "land/water", "land/road", "land/bark", "land/needles"})
+    for (const char *name : {"land/forest", "land/water", "land/asphalt", "land/marking", "land/bark", "land/needles"})
         EXPECT_NE(materialNamed(s, name), kNoMaterial) << name;
     ASSERT_FALSE(s.instances.empty());
     // Trees in the forest (local −90…−10), each at the terrain's height under it.
