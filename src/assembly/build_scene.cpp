@@ -102,8 +102,10 @@ class SceneAssembler {
         std::optional<LandscapeGround> landscape;
         if (d_.landscape) {
             landscape = within(d_.landscape->loc, "<landscape>", [&] {
-                return generateLandscape(*d_.landscape, std::move(*land), seedOf(d_.landscape->seed), d_.georeference,
-                                         streetAreas, builder_, warnings_);
+                return generateLandscape(
+                    *d_.landscape, std::move(*land), seedOf(d_.landscape->seed), d_.georeference, streetAreas, builder_,
+                    warnings_,
+                    [&](std::shared_ptr<const ProceduralTexture> t) { return textures().add(std::move(t)); });
             });
         }
         GroundHeight ground = landscape ? landscape->ground : GroundHeight();

@@ -89,18 +89,6 @@ std::optional<double> widthAttribute(const AtkisObject &object, const std::strin
     return std::nullopt;
 }
 
-// Tracks of a railway: GLS as a count (1, 2) or as a code in thousands (1000, 2000);
-// NAS's anzahlDerStreckengleise likewise. One when absent or unreadable.
-int trackCount(const AtkisObject &object) {
-    for (const std::string &name : {std::string("GLS"), std::string("ANZAHLDERSTRECKENGLEISE")}) {
-        std::optional<long> value = attributeNumber(object, name);
-        if (!value || *value <= 0) continue;
-        long tracks = *value >= 1000 ? *value / 1000 : *value;
-        return int(std::clamp(tracks, 1L, 8L));
-    }
-    return 1;
-}
-
 }  // namespace
 
 std::optional<std::string_view> attribute(const AtkisObject &object, const std::string &name) {
@@ -112,6 +100,16 @@ std::optional<std::string_view> attribute(const AtkisObject &object, const std::
 std::optional<long> attributeNumber(const AtkisObject &object, const std::string &name) {
     std::optional<std::string_view> text = attribute(object, name);
     return text ? number<long>(*text) : std::nullopt;
+}
+
+int trackCount(const AtkisObject &object) {
+    for (const std::string &name : {std::string("GLS"), std::string("ANZAHLDERSTRECKENGLEISE")}) {
+        std::optional<long> value = attributeNumber(object, name);
+        if (!value || *value <= 0) continue;
+        long tracks = *value >= 1000 ? *value / 1000 : *value;
+        return int(std::clamp(tracks, 1L, 8L));
+    }
+    return 1;
 }
 
 std::string_view atkisTypeName(int type) {

@@ -70,6 +70,9 @@ LandClass landClass(const AtkisObject &object);
 std::string_view landClassName(LandClass c);  // "road", "forest", … as scene files and materials name them
 // Laub-, Nadel- or Mischholz from the vegetation attribute (VEG); Mixed when absent.
 TreeKind treeKind(const AtkisObject &object);
+// Tracks of a railway: GLS as a count (1, 2) or as a code in thousands (1000, 2000); NAS's
+// anzahlDerStreckengleise likewise. One when absent or unreadable.
+int trackCount(const AtkisObject &object);
 // The width of a road, path or rail ribbon in metres: BRF (carriageway width in dm) when
 // given and positive, else BRV, else a default per class (docs/terrain.md lists them).
 double ribbonWidth(const AtkisObject &object);

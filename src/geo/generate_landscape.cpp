@@ -16,11 +16,13 @@
 #include "geo/dgm_file.h"
 #include "geo/drape_areas.h"
 #include "geo/edbs.h"
+#include "geo/land_materials.h"
 #include "geo/ribbons.h"
 #include "geo/road_markings.h"
 #include "geo/road_style.h"
 #include "geo/terrain_mesh.h"
 #include "geo/terrain_surface.h"
+#include "geo/terrain_texture.h"
 #include "geo/tree_models.h"
 #include "geo/tree_placement.h"
 #include "geo/vector_file.h"
@@ -31,58 +33,6 @@
 namespace veduta {
 
 namespace {
-
-// The material each land class gets unless the scene defines one of the same name.
-Material landMaterial(LandClass c) {
-    std::string name = fmt::format("land/{}", landClassName(c));
-    switch (c) {
-    case LandClass::Road:
-    case LandClass::CityStreet: return Material::lambertian(name, {0.13f, 0.13f, 0.14f});  // under the streets
-    case LandClass::Path: return Material::lambertian(name, {0.42f, 0.38f, 0.31f});
-    case LandClass::Rail: return Material::lambertian(name, {0.27f, 0.24f, 0.22f});
-    case LandClass::Settlement: return Material::lambertian(name, {0.21f, 0.24f, 0.14f});  // gardens and yards
-    case LandClass::Park: return Material::lambertian(name, {0.12f, 0.22f, 0.07f});
-    case LandClass::Farmland: return Material::lambertian(name, {0.34f, 0.27f, 0.16f});
-    case LandClass::Grassland: return Material::lambertian(name, {0.13f, 0.23f, 0.06f});
-    case LandClass::Forest: return Material::lambertian(name, {0.08f, 0.09f, 0.04f});
-    case LandClass::Shrubs:
-    case LandClass::TreeRow:
-    case LandClass::Hedge: return Material::lambertian(name, {0.1f, 0.15f, 0.06f});
-    case LandClass::Water:
-    case LandClass::River: {
-        Material water = Material::lambertian(name, {0.015f, 0.03f, 0.035f});
-        water.specular = Vec3f(0.25f);
-        water.shininess = 800;
-        water.reflectivity = Vec3f(0.04f);
-        return water;
-    }
-    case LandClass::Building: return Material::lambertian(name, {0.3f, 0.28f, 0.27f});  // a footprint seen from above
-    case LandClass::Other:
-    case LandClass::Parcel: break;
-    }
-    return Material::lambertian("land/bare", {0.2f, 0.24f, 0.11f});
-}
-
-// Ribbons are coloured by what they are paved with (geo/road_style.h).
-Material pavementMaterial(Pavement pavement) {
-    std::string name = fmt::format("land/{}", pavementName(pavement));
-    switch (pavement) {
-    case Pavement::Asphalt: return Material::lambertian(name, {0.13f, 0.13f, 0.14f});
-    case Pavement::Cobbles: return Material::lambertian(name, {0.2f, 0.18f, 0.16f});
-    case Pavement::Concrete: return Material::lambertian(name, {0.36f, 0.35f, 0.33f});
-    case Pavement::Gravel: return Material::lambertian(name, {0.42f, 0.38f, 0.31f});
-    case Pavement::Ballast: return Material::lambertian(name, {0.27f, 0.24f, 0.22f});
-    }
-    return Material::lambertian(name, {0.13f, 0.13f, 0.14f});
-}
-
-// Road paint: white, with a faint sheen from its glass beads.
-Material markingMaterial() {
-    Material paint = Material::lambertian("land/marking", {0.72f, 0.72f, 0.7f});
-    paint.specular = Vec3f(0.04f);
-    paint.shininess = 60;
-    return paint;
-}
 
 // The CRS a data file's coordinates are in: the scene file's word, else the file's, else the
 // scene's.
@@ -293,15 +243,16 @@ class LandscapeBuilder {
   public:
     LandscapeBuilder(const LandscapeDesc &land, LandscapeData data, uint32_t seed, const Georeference &georef,
                      const std::vector<LocalPolygon> &streetAreas, RenderSceneBuilder &builder,
-                     std::vector<std::string> &warnings) :
+                     const AddProcedural &addProcedural, std::vector<std::string> &warnings) :
         land_(land),
         seed_(seed),
         frame_(MapProjection(crsByEpsg(georef.epsg), georef).frame()),
         streetAreas_(streetAreas),
         builder_(builder),
         warnings_(warnings),
-        grid_(std::move(data.grid)),
-        objects_(std::move(data.objects)) {}
+        grid_(std::make_shared<const HeightGrid>(std::move(data.grid))),
+        objects_(std::move(data.objects)),
+        materials_(builder, addProcedural, grid_, frame_, seed) {}
 
     LandscapeGround build() {
         addTerrain();
@@ -340,26 +291,25 @@ class LandscapeBuilder {
             checkSimplifiable();
             TerrainMeshOptions options;
             options.maxError = land_.simplify;
-            options.material = builder_.findOrAddMaterial(landMaterial(LandClass::Other));
-            mesh = terrainMesh(grid_, frame_, options);
+            options.material = materials_.land(LandClass::Other);
+            mesh = terrainMesh(*grid_, frame_, options);
         } else {
             if (land_.simplify > 0)
                 warnings_.push_back(
                     fmt::format("{}: the terrain keeps its full resolution under draped ATKIS areas; "
                                 "simplify applies to bare terrain only",
                                 land_.loc.toString()));
-            DrapedTerrain draped = atLandscape([&] { return drapeAreas(grid_, frame_, areas, {}); });
-            MaterialId bare = builder_.findOrAddMaterial(landMaterial(LandClass::Other));
+            DrapedTerrain draped = atLandscape([&] { return drapeAreas(*grid_, frame_, areas, {}); });
+            MaterialId bare = materials_.land(LandClass::Other);
             triangleObject_.resize(draped.triangleArea.size(), kNoArea);
             for (size_t t = 0; t < draped.triangleArea.size(); ++t) {
                 uint32_t a = draped.triangleArea[t];
-                draped.mesh.triangleMaterials[t] =
-                    a == kNoArea ? bare : builder_.findOrAddMaterial(landMaterial(areas[a].landClass));
+                draped.mesh.triangleMaterials[t] = a == kNoArea ? bare : materials_.land(areas[a].landClass);
                 if (a != kNoArea) triangleObject_[t] = areas[a].objectIndex;
             }
             mesh = std::move(draped.mesh);
         }
-        surface_ = std::make_shared<TerrainSurface>(mesh, gridLines(grid_, frame_));
+        surface_ = std::make_shared<TerrainSurface>(mesh, gridLines(*grid_, frame_));
         builder_.addWorldMesh(std::move(mesh), land_.objectId);
     }
 
@@ -373,7 +323,7 @@ class LandscapeBuilder {
             RoadStyle style = roadStyle(o);
             RibbonOptions options;
             options.lift = ribbonLift(landClass(o));
-            MaterialId material = builder_.findOrAddMaterial(pavementMaterial(style.pavement));
+            MaterialId material = materials_.pavement(style.pavement, style.tracks);
             for (const MapLine &line : o.lines) {
                 Mesh ribbon =
                     atLandscape([&] { return drapeRibbon(line, style.width, *surface_, frame_, options); }, &o);
@@ -390,7 +340,7 @@ class LandscapeBuilder {
         for (const Mesh &piece : pieces) ribbons.append(piece, Transform());
         if (ribbons.triangleCount() > 0) builder_.addWorldMesh(std::move(ribbons), land_.objectId);
         if (markings.triangleCount() > 0) {
-            markings.setMaterial(builder_.findOrAddMaterial(markingMaterial()));
+            markings.setMaterial(materials_.marking());
             builder_.addWorldMesh(std::move(markings), land_.objectId);
         }
     }
@@ -424,9 +374,11 @@ class LandscapeBuilder {
     // Whether a tree planted for object `planter` may stand at `on`: a tree of an area only
     // where that area won the draping (not in a lake or on a road area drawn over the forest),
     // a tree of a row or a point not in water or on a traffic area; and none on a ribbon or on
-    // a city's street, nor closer to their edges than kTreeClearance.
+    // a city's street, nor closer to their edges than kTreeClearance; none on rock or above the
+    // tree line (treeMayGrow).
     bool treeMayStand(const PlacedTree &tree, uint32_t planter, const TerrainSurface::PointOnSurface &on) const {
         if (ribbonClearance_.covers(tree.position) || streetClearance_.covers(tree.position)) return false;
+        if (!treeMayGrow(*grid_, frame_, {tree.position.x, tree.position.y})) return false;
         uint32_t owner = triangleObject_.empty() ? kNoArea : triangleObject_[on.triangle];
         if (owner == kCityStreetOwner) return false;
         if (objects_[planter].geometry == AtkisGeometry::Area) return owner == planter;
@@ -465,13 +417,13 @@ class LandscapeBuilder {
     void checkSimplifiable() const {
         if (land_.simplify <= 0) return;
         double side = 1;
-        while (side < std::max(grid_.columns, grid_.rows)) side = 2 * side;
+        while (side < std::max(grid_->columns, grid_->rows)) side = 2 * side;
         double bytes = 4 * (side + 1) * (side + 1);
         if (bytes > kSimplifyBytes)
             throw InputError(land_.loc,
                              fmt::format("simplifying this {} × {} DGM needs {:.1f} GB (it is padded to a "
                                          "square); cut it into square tiles or leave simplify at 0",
-                                         grid_.columns, grid_.rows, bytes / 1e9));
+                                         grid_->columns, grid_->rows, bytes / 1e9));
     }
 
     // An error of draping or a ribbon at the <landscape>, naming the object when known.
@@ -490,8 +442,9 @@ class LandscapeBuilder {
     const std::vector<LocalPolygon> &streetAreas_;
     RenderSceneBuilder &builder_;
     std::vector<std::string> &warnings_;
-    HeightGrid grid_;
+    std::shared_ptr<const HeightGrid> grid_;
     std::vector<AtkisObject> objects_;
+    LandMaterials materials_;
     std::shared_ptr<TerrainSurface> surface_;
     // Per terrain triangle: the object whose area won it, kCityStreetOwner or kNoArea.
     std::vector<uint32_t> triangleObject_;
@@ -518,18 +471,19 @@ LandscapeData readLandscape(const LandscapeDesc &land, const std::optional<Geore
 LandscapeGround generateLandscape(const LandscapeDesc &land, LandscapeData data, uint32_t seed,
                                   const std::optional<Georeference> &georeference,
                                   const std::vector<LocalPolygon> &streetAreas, RenderSceneBuilder &builder,
-                                  std::vector<std::string> &warnings) {
+                                  std::vector<std::string> &warnings, const AddProcedural &addProcedural) {
     if (!georeference)
         throw InputError(land.loc, "a <landscape> needs the scene's <georeference crs=\"EPSG:…\" origin=\"E N\">");
-    return LandscapeBuilder(land, std::move(data), seed, *georeference, streetAreas, builder, warnings).build();
+    return LandscapeBuilder(land, std::move(data), seed, *georeference, streetAreas, builder, addProcedural, warnings)
+        .build();
 }
 
 LandscapeGround generateLandscape(const LandscapeDesc &land, uint32_t seed,
                                   const std::optional<Georeference> &georeference,
                                   const std::vector<LocalPolygon> &streetAreas, RenderSceneBuilder &builder,
-                                  std::vector<std::string> &warnings) {
+                                  std::vector<std::string> &warnings, const AddProcedural &addProcedural) {
     return generateLandscape(land, readLandscape(land, georeference, warnings), seed, georeference, streetAreas,
-                             builder, warnings);
+                             builder, warnings, addProcedural);
 }
 
 }  // namespace veduta

@@ -61,4 +61,12 @@ std::optional<double> surfaceHeight(const HeightGrid &grid, const MapPoint &p) {
     return at->h00 + at->fy * (double(at->h01) - at->h00) + at->fx * (double(at->h11) - at->h01);
 }
 
+std::optional<double> slopeDegrees(const HeightGrid &grid, const MapPoint &p) {
+    auto at = cellAt(grid, p);
+    if (!at || grid.spacing <= 0) return std::nullopt;
+    double east = (1 - at->fy) * (double(at->h10) - at->h00) + at->fy * (double(at->h11) - at->h01);
+    double north = (1 - at->fx) * (double(at->h01) - at->h00) + at->fx * (double(at->h11) - at->h10);
+    return std::atan(std::hypot(east, north) / grid.spacing) * 180 / M_PI;
+}
+
 }  // namespace veduta

@@ -22,4 +22,8 @@ std::optional<double> bilinearHeight(const HeightGrid &grid, const MapPoint &p);
 // the full-resolution terrain mesh. nullopt outside the grid or over a hole.
 std::optional<double> surfaceHeight(const HeightGrid &grid, const MapPoint &p);
 
+// The slope of the bilinear surface at `p`, in degrees from level (its gradient, smooth within
+// a cell). nullopt where bilinearHeight has none.
+std::optional<double> slopeDegrees(const HeightGrid &grid, const MapPoint &p);
+
 }  // namespace veduta

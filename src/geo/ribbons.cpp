@@ -187,8 +187,9 @@ Mesh drapeRibbon(const MapLine &centre, double width, const TerrainSurface &surf
         float v = float(along / options.tileLength);
         mesh.positions.push_back({float(left[i].x), float(left[i].y), float(heights[i])});
         mesh.positions.push_back({float(right[i].x), float(right[i].y), float(heights[i])});
-        mesh.uvs.push_back({0, v});
-        mesh.uvs.push_back({1, v});
+        float u = float(0.5 * width / options.tileLength);
+        mesh.uvs.push_back({-u, v});
+        mesh.uvs.push_back({u, v});
     }
     for (uint32_t i = 0; i + 1 < line.size(); ++i) {
         uint32_t l0 = 2 * i, r0 = 2 * i + 1, l1 = 2 * i + 2, r1 = 2 * i + 3;

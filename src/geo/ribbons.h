@@ -25,9 +25,10 @@ double ribbonLift(LandClass landClass);
 // starts at the highest ground across it plus `lift`; each piece between two cuts (level
 // across, linear along) is then raised, ends together, until it lies `lift` above the surface
 // everywhere (TerrainSurface::maxAbove of its two triangles), one pass from the start. Corners use the averaged
-// perpendicular (a miter, clamped at miterLimit), so pieces share their corner vertices: no gaps. u runs 0 (left) to 1
-// (right), v = distance along the centre / tileLength. An empty mesh for fewer than 2 distinct points or a line off the
-// terrain. Throws InputError for a non-finite point or width ≤ 0.
+// perpendicular (a miter, clamped at miterLimit), so pieces share their corner vertices: no gaps. u is the distance
+// right of the centre line / tileLength (−width / 2 at the left edge), v = distance along the centre / tileLength. An
+// empty mesh for fewer than 2 distinct points or a line off the terrain. Throws InputError for a non-finite point or
+// width ≤ 0.
 Mesh drapeRibbon(const MapLine &centre, double width, const TerrainSurface &surface, const LocalFrame &frame,
                  const RibbonOptions &options);
 

@@ -136,6 +136,7 @@ RoadStyle roadStyle(const AtkisObject &object) {
     style.width = ribbonWidth(object);
     style.pavement = pavementOf(object, style.rank);
     style.lanes = lanesOf(object, style.rank, style.width);
+    if (style.rank == RoadRank::Rail) style.tracks = trackCount(object);
     addLines(style);
     bool stops = style.rank != RoadRank::Motorway && style.rank != RoadRank::Path && style.rank != RoadRank::Rail;
     style.stopLineWidth = stops && style.width >= kNarrowestMarkedRoad ? kStopLine : 0;

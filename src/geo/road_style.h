@@ -30,6 +30,7 @@ struct RoadStyle {
     RoadRank rank = RoadRank::Unclassified;
     Pavement pavement = Pavement::Asphalt;
     int lanes = 2;
+    int tracks = 1;                  // a railway's (trackCount)
     double width = 5.5;              // metres, as ribbonWidth
     std::vector<MarkingLine> lines;  // centre, lane and edge lines; empty for paths and rails
     // Where the line ends at a junction with a road of the same or higher rank, its own

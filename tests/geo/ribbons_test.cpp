@@ -44,7 +44,7 @@ TEST(Ribbons, AnEastwardSegmentHasItsLeftToTheNorth) {
     EXPECT_EQ(ribbon.positions[1], Vec3f(start.x, start.y - 3, float(80 + options.lift)));
     for (size_t v = 0; v < ribbon.vertexCount(); ++v) {
         EXPECT_EQ(ribbon.normals[v], Vec3f(0, 0, 1));
-        EXPECT_EQ(ribbon.uvs[v].x, v % 2 ? 1.0f : 0.0f);
+        EXPECT_EQ(ribbon.uvs[v].x, v % 2 ? 0.3f : -0.3f);  // 3 m either side of the centre, 10 m tiles
     }
     EXPECT_FLOAT_EQ(ribbon.uvs.back().y, 2.5f);  // 25 m over 10 m tiles
 }
