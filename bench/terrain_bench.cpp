@@ -3,25 +3,22 @@
 // a 34 × 20 km DGM at 10 m (3401 × 2001 nodes, read from a float32 GeoTIFF) → read + mesh +
 // BVH in ≤ 10 s with ≤ 3 GB peak memory. Each runs at full resolution (argument 0) and
 // simplified (the argument is maxError in centimetres); the phases are timed alone too.
-// Both DGMs are generated: smooth hills with value noise on top, a pure function of the node.
+// Both DGMs are generated (generated_dgm.h): smooth hills with value noise on top, a pure
+// function of the node.
 //
 //   build/release/bench/bench_terrain [--benchmark_repetitions=5]
 //   build/release/bench/bench_terrain --benchmark_filter='BM_RenderReady34x20km/0/'   (its peak memory alone)
 #include <sys/resource.h>
 #include <unistd.h>
 
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
-#include <vector>
 
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
-#include <gdal_priv.h>
-#include <ogr_spatialref.h>
 
-#include "core/hash.h"
+#include "generated_dgm.h"
 #include "geo/dgm_file.h"
 #include "geo/terrain_mesh.h"
 #include "median_reporter.h"
@@ -31,65 +28,11 @@
 namespace veduta {
 namespace {
 
-constexpr uint32_t kSeed = 2024;
-
-// Value noise in −1…1 over a lattice of `cell` metres, smoothly interpolated.
-double valueNoise(double x, double y, double cell, uint32_t octave) {
-    double fx = x / cell, fy = y / cell;
-    double ix = std::floor(fx), iy = std::floor(fy);
-    double tx = fx - ix, ty = fy - iy;
-    tx = tx * tx * (3 - 2 * tx), ty = ty * ty * (3 - 2 * ty);
-    auto lattice = [&](double i, double j) {
-        return 2 * bitsToUnitFloat(hashValues({kSeed, octave, uint32_t(int64_t(i)), uint32_t(int64_t(j))})) - 1;
-    };
-    double south = lattice(ix, iy) + tx * (lattice(ix + 1, iy) - lattice(ix, iy));
-    double north = lattice(ix, iy + 1) + tx * (lattice(ix + 1, iy + 1) - lattice(ix, iy + 1));
-    return south + ty * (north - south);
-}
-
-float terrainHeight(double x, double y) {
-    return float(250 + 60 * std::sin(x / 900) * std::cos(y / 700) + 20 * std::sin((x + 2 * y) / 310) +
-                 4 * valueNoise(x, y, 40, 1) + 0.5 * valueNoise(x, y, 5, 2));
-}
-
-HeightGrid generatedDgm(int columns, int rows, double spacing) {
-    HeightGrid grid;
-    grid.west = 400000;
-    grid.south = 5600000;
-    grid.spacing = spacing;
-    grid.columns = columns;
-    grid.rows = rows;
-    grid.heights.resize(size_t(columns) * size_t(rows));
-    for (int r = 0; r < rows; ++r)
-        for (int c = 0; c < columns; ++c) grid.node(c, r) = terrainHeight(c * spacing, r * spacing);
-    return grid;
-}
-
-void writeGeoTiff(const HeightGrid &grid, const std::filesystem::path &file) {
-    GDALAllRegister();
-    GDALDriver *driver = GetGDALDriverManager()->GetDriverByName("GTiff");
-    GDALDatasetUniquePtr out(driver->Create(file.c_str(), grid.columns, grid.rows, 1, GDT_Float32, nullptr));
-    double transform[6] = {
-        grid.west - grid.spacing / 2, grid.spacing, 0, grid.north() + grid.spacing / 2, 0, -grid.spacing};
-    out->SetGeoTransform(transform);
-    OGRSpatialReference crs;
-    crs.importFromEPSG(25832);
-    out->SetSpatialRef(&crs);
-    std::vector<float> northFirst;
-    northFirst.reserve(grid.heights.size());
-    for (int r = grid.rows - 1; r >= 0; --r)
-        northFirst.insert(northFirst.end(), grid.heights.begin() + ptrdiff_t(size_t(r) * size_t(grid.columns)),
-                          grid.heights.begin() + ptrdiff_t(size_t(r + 1) * size_t(grid.columns)));
-    if (out->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, grid.columns, grid.rows, northFirst.data(), grid.columns,
-                                        grid.rows, GDT_Float32, 0, 0, nullptr) != CE_None)
-        throw std::runtime_error("cannot write " + file.string());
-}
-
 struct Fixture {
     HeightGrid km = generatedDgm(1001, 1001, 1);
     std::filesystem::path tif =
         std::filesystem::temp_directory_path() / fmt::format("veduta_terrain_bench_{}.tif", getpid());
-    Fixture() { writeGeoTiff(generatedDgm(3401, 2001, 10), tif); }
+    Fixture() { writeGeoTiff(generatedDgm34x20km(), tif); }
     ~Fixture() { std::filesystem::remove(tif); }
 };
 
