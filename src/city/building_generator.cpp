@@ -9,6 +9,7 @@
 #include "city/asset_fitting.h"
 #include "city/masonry_maps.h"
 #include "city/roof_choice.h"
+#include "city/roof_fixtures.h"
 #include "city/start_shapes.h"
 #include "core/check.h"
 #include "core/hash.h"
@@ -16,6 +17,9 @@
 namespace veduta {
 
 namespace {
+
+// A party wall: a fire wall's rough grey plaster, unless the scene defines `party_wall`.
+Material partyWallMaterial() { return Material::lambertian("party_wall", {0.4f, 0.38f, 0.35f}); }
 
 // The mesh a building's walls and roof are collected in, and its facades' terminals: each
 // thread's, reused from building to building (welding copies the mesh out without spare room),
@@ -77,6 +81,7 @@ BuildingGenerator::BuildingGenerator(const Grammar &grammar, const AssetLibrary 
     seed_(seed),
     limits_(limits),
     plainWall_(*assets.find("Wall0")),
+    partyWall_(builder.findOrAddMaterial(partyWallMaterial())),
     consolePrototypes_(builder) {
     for (size_t a = 0; a < assets.size(); ++a)
         VEDUTA_CHECK(
@@ -261,9 +266,17 @@ void BuildingGenerator::addRoof(const BuildingSpec &building, const BuildingCont
                                  ridge,
                                  std::string(roofTypeName(roof.built)),
                                  {footprint.points}};
+    Mesh fixtures = roofFixtures(roof.mesh, footprint, roofFixtureOptionsFor(building.settings), seed_, building.id);
     for (MaterialId &m : roof.mesh.triangleMaterials)
         m = m == RoofGableWall ? context.materials[MaterialCategory::Wall] : context.materials[MaterialCategory::Roof];
     baked.append(roof.mesh, Transform{});
+    for (MaterialId &m : fixtures.triangleMaterials) {
+        MaterialCategory category = m == FixtureWindow ? MaterialCategory::Window
+            : m == FixtureRoof                         ? MaterialCategory::Roof
+                                                       : MaterialCategory::Wall;
+        m = context.materials[category];
+    }
+    baked.append(fixtures, Transform{});
 }
 
 BuildingGenerator::BuildingContext BuildingGenerator::contextFor(uint32_t id, ObjectId objectId,
@@ -282,11 +295,12 @@ Terminal BuildingGenerator::plainWallOf(const StartShape &start) const {
 }
 
 void BuildingGenerator::addPlainWall(const BuildingContext &building, const StartShape &start, float alongPerimeter,
-                                     Mesh &baked) const {
+                                     Mesh &baked, std::optional<MaterialId> material) const {
     Terminal wall = plainWallOf(start);
     const Asset &model = assets_[plainWall_];
-    addWallPiece(model, modelToFacade(model, wall), start.facadeToWorld, alongPerimeter, wall,
-                 keyFor(wall, building.materials), baked);
+    PrototypeKey key = keyFor(wall, building.materials);
+    if (material) key.materials.fill(*material);
+    addWallPiece(model, modelToFacade(model, wall), start.facadeToWorld, alongPerimeter, wall, key, baked);
 }
 
 void BuildingGenerator::emitFacade(const BuildingContext &building, const StartShape &start, size_t facade,
@@ -343,7 +357,10 @@ BuildingGenerator::MadeBuilding BuildingGenerator::make(const BuildingSpec &spec
     std::vector<CornicePlace> cornices;
     for (size_t f = 0; f < facades.size(); ++f) {
         float along = spec.footprint.perimeterBefore(facades[f].edge);
-        if (spec.coarse) addPlainWall(building, facades[f], along, baked);
+        const std::vector<bool> &party = spec.partyEdges;
+        if (facades[f].edge < party.size() && party[facades[f].edge])
+            addPlainWall(building, facades[f], along, baked, partyWall_);
+        else if (spec.coarse) addPlainWall(building, facades[f], along, baked);
         else emitFacade(building, facades[f], f, along, baked, made, cornices, warnings);
     }
     addCornices(cornices, facades, baked, made);

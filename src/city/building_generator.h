@@ -38,6 +38,8 @@ struct BuildingSpec {
     Footprint footprint;     // normalised (counter-clockwise)
     SettingsStack settings;  // lot > block > city > rule file > defaults
     bool coarse = false;     // seen from far: one plain quad a wall and the roof, no rules derived
+    std::vector<bool>
+        partyEdges;  // one per footprint edge, or empty: walls built against a neighbour's (party_walls.h)
 };
 
 // A lone facade (the Facade Editor's preview, Bilke 2009, §3.2): a start symbol on a width × height
@@ -144,8 +146,10 @@ class BuildingGenerator {
     void addCornices(const std::vector<CornicePlace> &places, const std::vector<StartShape> &facades, Mesh &baked,
                      MadeBuilding &made) const;
     Terminal plainWallOf(const StartShape &start) const;
-    void addPlainWall(const BuildingContext &building, const StartShape &start, float alongPerimeter,
-                      Mesh &baked) const;
+    // The whole start shape as the plain wall model, in the building's wall material or in
+    // `material` (a party wall's).
+    void addPlainWall(const BuildingContext &building, const StartShape &start, float alongPerimeter, Mesh &baked,
+                      std::optional<MaterialId> material = std::nullopt) const;
     PrototypeId prototypeFor(const PrototypeKey &key);
     PrototypeKey keyFor(const Terminal &terminal, const MaterialSet &materials) const;
     void addWallPiece(const Asset &model, const Transform &modelToFacade, const Transform &facadeToWorld,
@@ -164,7 +168,8 @@ class BuildingGenerator {
     MaterialPalette palette_;
     uint32_t seed_;
     DerivationLimits limits_;
-    uint32_t plainWall_;  // Wall0, for walls the rules have no start rule for
+    uint32_t plainWall_;    // Wall0, for walls the rules have no start rule for
+    MaterialId partyWall_;  // party_wall, the scene's or a rough grey plaster (party_walls.h)
     std::unordered_map<uint32_t, std::vector<const MasonryRule *>> masonryModels_;  // the rules' <Masonry>
     std::unordered_map<uint32_t, std::vector<const CorniceRule *>> corniceModels_;  // and <Cornice>
     ConsolePrototypes consolePrototypes_;

@@ -7,6 +7,7 @@
 #include "city/assets.h"
 #include "city/building_generator.h"
 #include "city/building_rules.h"
+#include "city/party_walls.h"
 #include "city/plinth.h"
 #include "city/warning_list.h"
 
@@ -57,14 +58,22 @@ void generateGroup(const BuildingGroupDesc &group, uint32_t seed, const GroundHe
     BuildingGenerator generator(grammar, AssetLibrary::builtIn(), builder, seed);
     if (camera && masonryMaps) generator.bakeMasonryWith(*camera, masonryMaps);
     builder.addEffort(effortOf(group));
+    std::vector<BuildingSpec> specs;
     for (const BuildingDesc &desc : group.buildings) {
-        BuildingSpec spec;
+        BuildingSpec &spec = specs.emplace_back();
         spec.id = desc.buildingId;
         spec.objectId = desc.objectId;
         spec.footprint = footprintOf(desc, ground, warnings);
         spec.settings = SettingsStack({&desc.settings, &group.settings, &rules.settings, &defaultBuildingSettings()});
-        buildAt(desc.loc, [&] { generator.generate(spec, warnings); });
-        if (!desc.base && ground) addPlinth(spec, builder);
+    }
+    std::vector<const Footprint *> footprints;
+    for (const BuildingSpec &spec : specs) footprints.push_back(&spec.footprint);
+    std::vector<std::vector<bool>> party = partyWalls(footprints);
+    for (size_t b = 0; b < specs.size(); ++b) specs[b].partyEdges = std::move(party[b]);
+    for (size_t b = 0; b < specs.size(); ++b) {
+        const BuildingDesc &desc = group.buildings[b];
+        buildAt(desc.loc, [&] { generator.generate(specs[b], warnings); });
+        if (!desc.base && ground) addPlinth(specs[b], builder);
     }
     // The facade frame (right, up, out) standing on the x axis and facing −y.
     const Transform standing{{1, 0, 0, 0, 0, 0, -1, 0, 0, 1, 0, 0}};

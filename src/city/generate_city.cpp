@@ -22,13 +22,17 @@
 #include "city/grown_city.h"
 #include "city/lot_subdivision.h"
 #include "city/osm_import.h"
+#include "city/party_walls.h"
 #include "city/plinth.h"
 #include "city/street_geometry.h"
+#include "city/street_trees.h"
 #include "city/streets_on_terrain.h"
 #include "city/warning_list.h"
 #include "core/check.h"
 #include "core/hash.h"
 #include "core/random_streams.h"
+#include "geo/tree_models.h"
+#include "geo/tree_placement.h"
 #include "geodesy/map_projection.h"
 #include "streets/street_rule_file.h"
 
@@ -176,6 +180,27 @@ void addStreets(const StreetNetwork &streets, const LandscapeGround *landscape, 
     builder.addWorldMesh(std::move(mesh), objectId);
 }
 
+// The avenues' trees (street_trees.h), at the sidewalk's height or on the terrain.
+void addStreetTrees(const StreetNetwork &streets, const LandscapeGround *landscape, uint32_t seed, ObjectId objectId,
+                    RenderSceneBuilder &builder) {
+    StreetStyle style;
+    std::vector<PlacedTree> trees = streetTrees(streets, style, seed);
+    if (trees.empty()) return;
+    TreeMaterials materials = treeMaterials(builder, TreeKind::Broadleaf);
+    PrototypeId prototypes[kTreeVariants];
+    for (uint32_t v = 0; v < kTreeVariants; ++v)
+        prototypes[v] = builder.addPrototype(treeModel(TreeKind::Broadleaf, v, seed, materials));
+    for (const PlacedTree &tree : trees) {
+        float ground = streets.height + style.lift + style.kerbHeight;
+        if (landscape) {
+            std::optional<double> z = landscape->surface->heightAt({tree.position.x, tree.position.y});
+            if (!z) continue;  // off the terrain
+            ground = float(*z) + style.kerbHeight;
+        }
+        builder.addInstance({treeTransform(tree, ground), prototypes[tree.variant], kNoMaterial, objectId, 0, 0});
+    }
+}
+
 // A lot on the landscape stands on the lowest terrain under it, as a <buildings> building
 // without base does (generateBuildings); off the terrain at 0 with a warning.
 void seatOnGround(Footprint &footprint, const GroundHeight &ground, const FileLoc &where, uint32_t id,
@@ -241,6 +266,10 @@ std::vector<PlannedBuilding> planBuildings(const CityData &data, std::vector<std
             p.spec.settings = settingsFor(data, block, given, p.rules->loaded.rules.settings);
         }
     }
+    std::vector<const Footprint *> footprints;
+    for (const PlannedBuilding &p : planned) footprints.push_back(&p.spec.footprint);
+    std::vector<std::vector<bool>> party = partyWalls(footprints);
+    for (size_t b = 0; b < planned.size(); ++b) planned[b].spec.partyEdges = std::move(party[b]);
     return planned;
 }
 
@@ -615,6 +644,7 @@ uint32_t generateCity(const CityDesc &city, const SceneCity &read, uint32_t seed
         const ModularLookDesc *look = city.modular ? &*city.modular : nullptr;
         uint32_t built = buildCity(read.data, seed, city.objectId, city.fileLoc, landscape,
                                    {camera, city.coarse, masonryMaps, look, modular}, builder, warnings);
+        if (city.streetTrees) addStreetTrees(streetNetworkOf(read.data), landscape, seed, city.objectId, builder);
         if (read.upperLevels.empty()) return built;
         return built +
             buildUpperLevels(read.upperLevels, groundJunctions(read.data, landscape), read.levels, seed, city.objectId,

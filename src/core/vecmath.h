@@ -22,7 +22,11 @@ struct Vec2f {
 inline Vec2f operator+(Vec2f a, Vec2f b) { return {a.x + b.x, a.y + b.y}; }
 inline Vec2f operator-(Vec2f a, Vec2f b) { return {a.x - b.x, a.y - b.y}; }
 inline Vec2f operator*(Vec2f a, float s) { return {a.x * s, a.y * s}; }
+inline Vec2f operator/(Vec2f a, float s) { return {a.x / s, a.y / s}; }
 inline float dot(Vec2f a, Vec2f b) { return a.x * b.x + a.y * b.y; }
+inline float cross(Vec2f a, Vec2f b) { return a.x * b.y - a.y * b.x; }
+inline float length(Vec2f a) { return std::sqrt(dot(a, a)); }
+inline Vec2f normalize(Vec2f a) { return a / length(a); }
 
 // A point or direction of a plan or the local frame kept in double: outlines are cut and
 // compared in double, and only the finished vertices are made float.

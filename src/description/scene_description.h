@@ -199,6 +199,7 @@ struct CityDesc {
     std::optional<uint32_t> seed;  // with each lot's identity, every random choice; unset: the scene's
     CoarseRule coarse;
     std::optional<ModularLookDesc> modular;  // its lots' buildings; the rule files then only cut lots
+    bool streetTrees = true;                 // trees along the streets wide enough (city/street_trees.h)
     uint32_t objectId = 0;
 };
 

@@ -451,6 +451,7 @@ class SceneFileReader {
         city.seed = seedOverride(e);
         city.coarse = coarseRule(e);
         city.modular = modularLook(e);
+        city.streetTrees = e.boolean("street_trees", true);
         readObjectId(e, city.loc);
         e.checkLeaf();
         scene_.cities.push_back(std::move(city));
@@ -499,6 +500,7 @@ class SceneFileReader {
         city.seed = seedOverride(e);
         city.coarse = coarseRule(e);
         city.modular = modularLook(e);
+        city.streetTrees = e.boolean("street_trees", true);
         readObjectId(e, city.loc);
         e.checkLeaf();
         scene_.cities.push_back(std::move(city));

@@ -389,11 +389,8 @@ class LandscapeBuilder {
     }
 
     void addTreeInstances(const TreeSet &set, const std::vector<uint32_t> &planter) {
-        TreeMaterials broadleaf{
-            builder_.findOrAddMaterial(Material::lambertian("land/bark", {0.16f, 0.12f, 0.09f})),
-            builder_.findOrAddMaterial(Material::lambertian("land/foliage", {0.09f, 0.19f, 0.04f}))};
-        TreeMaterials conifer{broadleaf.bark,
-                              builder_.findOrAddMaterial(Material::lambertian("land/needles", {0.04f, 0.1f, 0.04f}))};
+        TreeMaterials broadleaf = treeMaterials(builder_, TreeKind::Broadleaf);
+        TreeMaterials conifer = treeMaterials(builder_, TreeKind::Conifer);
         PrototypeId prototypes[2][kTreeVariants] = {};
         bool made[2][kTreeVariants] = {};
         for (size_t i = 0; i < set.trees.size(); ++i) {

@@ -333,4 +333,11 @@ Mesh treeModel(TreeKind kind, uint32_t variant, uint32_t seed, const TreeMateria
     }
 }
 
+TreeMaterials treeMaterials(RenderSceneBuilder &builder, TreeKind kind) {
+    MaterialId bark = builder.findOrAddMaterial(Material::lambertian("land/bark", {0.16f, 0.12f, 0.09f}));
+    if (kind == TreeKind::Conifer)
+        return {bark, builder.findOrAddMaterial(Material::lambertian("land/needles", {0.04f, 0.1f, 0.04f}))};
+    return {bark, builder.findOrAddMaterial(Material::lambertian("land/foliage", {0.09f, 0.19f, 0.04f}))};
+}
+
 }  // namespace veduta

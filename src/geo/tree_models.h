@@ -10,6 +10,7 @@
 #include "core/vecmath.h"
 #include "geo/atkis.h"
 #include "scene/mesh.h"
+#include "scene/render_scene.h"
 
 namespace veduta {
 
@@ -37,5 +38,9 @@ Vec3f applyTropism(const Vec3f &heading, const Vec3f &tropism);
 // varies the stochastic rewriting and the angles within it. `kind` must not be Mixed
 // (std::invalid_argument): placement decides between broadleaf and conifer.
 Mesh treeModel(TreeKind kind, uint32_t variant, uint32_t seed, const TreeMaterials &materials);
+
+// The materials `land/bark` and `land/foliage` (broadleaf) or `land/needles` (conifer): the
+// scene's when it defines them, else built-in plain colours.
+TreeMaterials treeMaterials(RenderSceneBuilder &builder, TreeKind kind);
 
 }  // namespace veduta
