@@ -71,7 +71,7 @@ bool textured(LandClass c) {
     }
 }
 
-void readInMetres(Material &m) { m.textureSize = Vec2f(1 / kLandTileMetres, 1 / kLandTileMetres); }
+void readInMetres(Material &m) { m.textureSize = Vec2f{1 / kLandTileMetres, 1 / kLandTileMetres}; }
 
 }  // namespace
 

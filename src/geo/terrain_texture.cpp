@@ -87,7 +87,7 @@ Vec3f TerrainTexture::ground(Vec2d p, double footprint) const {
         break;
     }
     }
-    MapPoint at = frame_.toMap(Vec2f(float(p.x), float(p.y)));
+    MapPoint at = frame_.toMap(Vec2f{float(p.x), float(p.y)});
     double slope = slopeDegrees(*grid_, at).value_or(0);
     double height = bilinearHeight(*grid_, at).value_or(0);
     // Ragged edges: the thresholds wander with the medium scale.
@@ -110,7 +110,7 @@ void TerrainTexture::lookup(Vec2f uv, float footprint, float *out, int count) co
 }
 
 bool treeMayGrow(const HeightGrid &grid, const LocalFrame &frame, Vec2d p, const TerrainLook &look) {
-    MapPoint at = frame.toMap(Vec2f(float(p.x), float(p.y)));
+    MapPoint at = frame.toMap(Vec2f{float(p.x), float(p.y)});
     return slopeDegrees(grid, at).value_or(0) < look.rockSlope && bilinearHeight(grid, at).value_or(0) < look.treeLine;
 }
 

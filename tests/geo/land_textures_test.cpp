@@ -15,7 +15,7 @@ namespace {
 
 Vec3f at(const ProceduralTexture &t, Vec2d p, float footprint) {
     float v[3];
-    t.lookup(Vec2f(float(p.x), float(p.y)), footprint, v, 3);
+    t.lookup(Vec2f{float(p.x), float(p.y)}, footprint, v, 3);
     return {v[0], v[1], v[2]};
 }
 
