@@ -1,6 +1,7 @@
 // The preview rasterizer against Mesa's llvmpipe (through OSMesa) drawing the same triangles,
-// at the same resolution, with the same shading (the preview's Shaded mode: Lambert sun, no
-// shadows, sky irradiance, two-sided), in the same run, both on two threads. Frame times are
+// at the same resolution, with the same shading (the preview's Shaded mode, which draws these
+// scenes' plain Lambertian materials under a constant sky as Lambert sun, no shadows, sky
+// irradiance, two-sided), in the same run, both on two threads. Frame times are
 // wall-clock: both renderers work on several threads. Scenes:
 //   default        the built-in default scene at 1280x720 (a few thousand triangles)
 //   spheres-10M    1,000 instances of a 10,000-triangle sphere on a grid, 1920x1080

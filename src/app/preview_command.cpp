@@ -65,12 +65,11 @@ void addPreviewCommand(CLI::App &app, int &exitCode) {
     cmd->add_option("-o,--output", args->output,
                     "PNG (sRGB) or EXR (linear) to write [renders/<scene name>-preview.png]")
         ->check(fileWithExtension(".png") | fileWithExtension(".exr"));
-    const std::map<std::string, PreviewMode> modes = {{"shaded", PreviewMode::Shaded},
-                                                      {"albedo", PreviewMode::Albedo},
-                                                      {"normal", PreviewMode::Normal},
-                                                      {"depth", PreviewMode::Depth},
-                                                      {"id", PreviewMode::Id}};
-    cmd->add_option("--mode", args->mode, "What to show: shaded, albedo, normal, depth or id [shaded]")
+    const std::map<std::string, PreviewMode> modes = {{"shaded", PreviewMode::Shaded}, {"albedo", PreviewMode::Albedo},
+                                                      {"normal", PreviewMode::Normal}, {"depth", PreviewMode::Depth},
+                                                      {"id", PreviewMode::Id},         {"thesis", PreviewMode::Thesis}};
+    cmd->add_option("--mode", args->mode,
+                    "What to show: shaded, albedo, normal, depth, id or thesis (seed 000's PPSUNS shader) [shaded]")
         ->transform(CLI::CheckedTransformer(modes, CLI::ignore_case));
     addResolutionOption(*cmd, args->resolution);
     addThreadsOption(*cmd, args->threads);

@@ -11,7 +11,9 @@
 #include <tbb/parallel_for.h>
 
 #include "core/hash.h"
+#include "preview/preview_shader.h"
 #include "preview/shadow_map.h"
+#include "scene/texture_frame.h"
 
 namespace veduta {
 
@@ -24,19 +26,6 @@ constexpr uint32_t kBackFacing = 1u << 31;
 // Items whose screen box spans more tiles than this share one transformed copy of their
 // vertices; smaller ones are transformed per tile, which costs less than the shared copy's memory.
 constexpr int kSharedVerticesTileCount = 4;
-
-// The preview draws each material in one colour: its diffuse colour times the mean of its
-// diffuse map (the texture's coarsest mip level). A glass pane mostly shows the sky's
-// reflection and a dark room: a dim tint stands for it.
-Vec3f previewAlbedo(const Material &m, const Textures *textures) {
-    if (m.glass) return m.glassTint * 0.15f;
-    if (m.diffuseMap == kNoTexture || !textures) return m.diffuse;
-    constexpr float kWholeTexture = 1e6f;  // a footprint wider than any texture
-    float mean[3] = {1, 1, 1};
-    textures->lookup(m.diffuseMap, {0.5f, 0.5f}, kWholeTexture, mean, std::min(3, textures->channels(m.diffuseMap)));
-    if (textures->channels(m.diffuseMap) < 3) mean[1] = mean[2] = mean[0];
-    return m.diffuse * Vec3f(mean[0], mean[1], mean[2]);
-}
 
 struct Box3 {
     Vec3f lo{kInfinity}, hi{-kInfinity};
@@ -88,6 +77,8 @@ struct DrawItem {
     ObjectId objectId;
     int x0, y0, x1, y1;  // tiles it may touch, inclusive
     bool mirrored;       // the transform turns windings around
+    bool instanced;      // an instance of a prototype, not a mesh in world space
+    bool mayCutOut;      // some of its triangles have a cut-out material
 };
 
 // A vertex in camera space and, when it lies beyond the near plane, on the raster.
@@ -148,8 +139,10 @@ class Rasterizer {
         height_(scene.camera.height),
         tilesX_((width_ + options.tileSize - 1) / options.tileSize),
         tilesY_((height_ + options.tileSize - 1) / options.tileSize),
-        ambient_(scene.environment.averageRadiance()) {
-        for (const Material &m : scene.materials) albedos_.push_back(previewAlbedo(m, scene.textures.get()));
+        shader_(scene, options.mode),
+        rays_(scene.camera),
+        forward_(scene.camera.axes().forward),
+        pixelSpread_(rays_.pixelSpread()) {
         collectItems();
         binItems();
         if (options.shadows && options.mode == PreviewMode::Shaded && scene.sun.enabled()) {
@@ -175,19 +168,32 @@ class Rasterizer {
   private:
     void collectItems() {
         std::vector<Box3> prototypeBounds;
-        for (const Mesh &p : scene_.prototypes) prototypeBounds.push_back(boundsOf(p));
+        std::vector<char> prototypeCutsOut;
+        for (const Mesh &p : scene_.prototypes) {
+            prototypeBounds.push_back(boundsOf(p));
+            prototypeCutsOut.push_back(cutsOut(p));
+        }
         for (const BakedMesh &m : scene_.meshes)
-            addItem(m.mesh, Transform{}, boundsOf(m.mesh), kNoMaterial, m.objectId);
+            addItem(m.mesh, Transform{}, boundsOf(m.mesh), kNoMaterial, m.objectId, false, cutsOut(m.mesh));
         for (const Instance &inst : scene_.instances) {
+            bool mayCutOut = inst.materialOverride != kNoMaterial ? shader_.cutsOut(inst.materialOverride)
+                                                                  : prototypeCutsOut[inst.prototype] != 0;
             addItem(scene_.prototypes[inst.prototype], inst.objectToWorld, prototypeBounds[inst.prototype],
-                    inst.materialOverride, inst.objectId);
+                    inst.materialOverride, inst.objectId, true, mayCutOut);
         }
         sharedVertices_.resize(items_.size());
         sharedOnce_ = std::make_unique<std::once_flag[]>(items_.size());
     }
 
+    // Whether some triangle of the mesh has a cut-out material.
+    bool cutsOut(const Mesh &mesh) const {
+        return std::any_of(mesh.triangleMaterials.begin(), mesh.triangleMaterials.end(),
+                           [&](MaterialId m) { return shader_.cutsOut(m); });
+    }
+
     // Keeps an item if its bounding box may be visible, with the tiles it may touch.
-    void addItem(const Mesh &mesh, const Transform &objectToWorld, const Box3 &box, MaterialId override, ObjectId id) {
+    void addItem(const Mesh &mesh, const Transform &objectToWorld, const Box3 &box, MaterialId override, ObjectId id,
+                 bool instanced, bool mayCutOut) {
         if (mesh.triangleCount() == 0) return;
         Transform cameraFromObject = projection_.cameraFromWorld * objectToWorld;
         float minX = kInfinity, minY = kInfinity, maxX = -kInfinity, maxY = -kInfinity;
@@ -225,7 +231,9 @@ class Rasterizer {
                       std::clamp(int(std::floor(std::max(minY, 0.0f))) / ts, 0, tilesY_ - 1),
                       std::clamp(int(std::min(maxX, float(width_))) / ts, 0, tilesX_ - 1),
                       std::clamp(int(std::min(maxY, float(height_))) / ts, 0, tilesY_ - 1),
-                      objectToWorld.determinant() < 0};
+                      objectToWorld.determinant() < 0,
+                      instanced,
+                      mayCutOut};
         items_.push_back(item);
     }
 
@@ -343,6 +351,8 @@ class Rasterizer {
         bool backFacing = (area > 0) != items_[item].mirrored;
         if (options_.backfaceCulling && backFacing) return;
         uint32_t triangleWord = tri | (backFacing ? kBackFacing : 0u);
+        // A cut-out removes the surface where its map says so, before the depth test keeps it.
+        const bool cutOut = items_[item].mayCutOut && shader_.cutsOut(materialOf(items_[item], tri));
 
         float sign = area > 0 ? 1.0f : -1.0f, invArea = 1.0f / std::abs(area);
         // Edge k joins the two corners other than k. It is measured from the endpoint first in
@@ -385,11 +395,14 @@ class Rasterizer {
                 // Perspective-correct weights of the three corners.
                 float norm = 1.0f / (w0 + w1 + w2);
                 float s0 = w0 * norm, s1 = w1 * norm, s2 = w2 * norm;
+                float b1 = s0 * c[0].bary.y + s1 * c[1].bary.y + s2 * c[2].bary.y;
+                float b2 = s0 * c[0].bary.z + s1 * c[1].bary.z + s2 * c[2].bary.z;
+                if (cutOut && cutAway(items_[item], triangleWord, b1, b2, invDepth)) continue;
                 f.invDepth[p] = invDepth;
                 f.item[p] = item;
                 f.triangle[p] = triangleWord;
-                f.b1[p] = s0 * c[0].bary.y + s1 * c[1].bary.y + s2 * c[2].bary.y;
-                f.b2[p] = s0 * c[0].bary.z + s1 * c[1].bary.z + s2 * c[2].bary.z;
+                f.b1[p] = b1;
+                f.b2[p] = b2;
                 if (options_.wireframe) {
                     f.edgePixels[p] = std::min({e[0] * invLength[0], e[1] * invLength[1], e[2] * invLength[2]});
                 }
@@ -399,6 +412,14 @@ class Rasterizer {
 
     void shadeTile(const Tile &tile, const TileFragments &f, PreviewImage &image) const;
     Vec3f surfaceColor(const DrawItem &item, uint32_t triangleWord, float b1, float b2, float invDepth) const;
+    Vec3f normalAt(const DrawItem &item, uint32_t triangleWord, float b1, float b2) const;
+    PreviewSurface surfaceAt(const DrawItem &item, uint32_t triangleWord, float b1, float b2, float invDepth) const;
+    bool cutAway(const DrawItem &item, uint32_t triangleWord, float b1, float b2, float invDepth) const {
+        return shader_.cutAway(surfaceAt(item, triangleWord, b1, b2, invDepth));
+    }
+    static MaterialId materialOf(const DrawItem &item, uint32_t tri) {
+        return item.materialOverride != kNoMaterial ? item.materialOverride : item.mesh->triangleMaterials[tri];
+    }
 
     const RenderScene &scene_;
     const PreviewOptions &options_;
@@ -411,52 +432,86 @@ class Rasterizer {
     // The depth mode's grey ramp spans the depths of the drawn objects' boxes.
     float depthNear_ = kInfinity, depthFar_ = kNear;
     std::optional<ShadowMap> shadowMap_;
-    Vec3f ambient_;               // the environment's mean radiance: the preview's sky light and background
-    std::vector<Vec3f> albedos_;  // per material
+    PreviewShader shader_;
+    CameraRays rays_;    // the path tracer's camera rays: background directions
+    Vec3f forward_;      // the view axis, towards the eye an orthographic camera's surfaces face
+    float pixelSpread_;  // texture footprints grow with distance by this, as the path tracer's ray cones
 };
 
-Vec3f Rasterizer::surfaceColor(const DrawItem &item, uint32_t triangleWord, float b1, float b2, float invDepth) const {
+// The interpolated shading normal, on the side the camera sees. Surfaces are two-sided: as in
+// the path tracer, the side seen is decided by the triangle's winding, and a smooth normal
+// follows it.
+Vec3f Rasterizer::normalAt(const DrawItem &item, uint32_t triangleWord, float b1, float b2) const {
+    const Mesh &mesh = *item.mesh;
+    const uint32_t *idx = &mesh.indices[3 * size_t(triangleWord & ~kBackFacing)];
+    const Vec3f &p0 = mesh.positions[idx[0]];
+    Vec3f n = mesh.normals.empty()
+        ? cross(mesh.positions[idx[1]] - p0, mesh.positions[idx[2]] - p0)
+        : mesh.normals[idx[0]] * (1 - b1 - b2) + mesh.normals[idx[1]] * b1 + mesh.normals[idx[2]] * b2;
+    n = normalize(item.normalToWorld.applyVector(n));
+    return (triangleWord & kBackFacing) != 0 ? -n : n;
+}
+
+// The point the pixel shows, with what shading and texture lookups need, worked out as the path
+// tracer's SurfaceLookup does, so that both read the same texels.
+PreviewSurface Rasterizer::surfaceAt(const DrawItem &item, uint32_t triangleWord, float b1, float b2,
+                                     float invDepth) const {
     const Mesh &mesh = *item.mesh;
     uint32_t tri = triangleWord & ~kBackFacing;
     const uint32_t *idx = &mesh.indices[3 * size_t(tri)];
     float b0 = 1 - b1 - b2;
-    Vec3f n = mesh.normals.empty()
-        ? cross(mesh.positions[idx[1]] - mesh.positions[idx[0]], mesh.positions[idx[2]] - mesh.positions[idx[0]])
-        : mesh.normals[idx[0]] * b0 + mesh.normals[idx[1]] * b1 + mesh.normals[idx[2]] * b2;
-    n = normalize(item.normalToWorld.applyVector(n));
-    // Surfaces are two-sided. As in the path tracer, the side seen is decided by the
-    // triangle's winding, and a smooth normal follows it.
-    if ((triangleWord & kBackFacing) != 0) n = -n;
-    MaterialId m = item.materialOverride != kNoMaterial ? item.materialOverride : mesh.triangleMaterials[tri];
-    Vec3f albedo = albedos_[m];
-
-    switch (options_.mode) {
-    case PreviewMode::Shaded: {
-        const Sun &sun = scene_.sun;
-        float cosine = std::max(0.0f, dot(n, sun.direction));
-        if (cosine > 0 && shadowMap_) {
-            Vec3f world = item.objectToWorld.applyPoint(mesh.positions[idx[0]] * b0 + mesh.positions[idx[1]] * b1 +
-                                                        mesh.positions[idx[2]] * b2);
-            Vec3f ng = item.normalToWorld.applyVector(cross(mesh.positions[idx[1]] - mesh.positions[idx[0]],
-                                                            mesh.positions[idx[2]] - mesh.positions[idx[0]]));
-            if (shadowMap_->shadowed(world, normalize(ng))) cosine = 0;
-        }
-        return albedo * kInvPi * sun.irradiance * cosine + albedo * ambient_;
+    PreviewSurface s;
+    s.material = materialOf(item, tri);
+    s.backFacing = (triangleWord & kBackFacing) != 0;
+    s.normal = normalAt(item, triangleWord, b1, b2);
+    const Vec3f &p0 = mesh.positions[idx[0]], &p1 = mesh.positions[idx[1]], &p2 = mesh.positions[idx[2]];
+    const Transform *placement = item.instanced ? &item.objectToWorld : nullptr;
+    Vec3f local = p0 * b0 + p1 * b1 + p2 * b2;
+    s.position = placement ? placement->applyPoint(local) : local;
+    WorldTriangle world{p1 - p0, p2 - p0, {}};
+    if (placement) world = {placement->applyVector(world.e1), placement->applyVector(world.e2), {}};
+    world.ng = cross(world.e1, world.e2);
+    if (item.mirrored) world.ng = -world.ng;  // back to the side the mesh faces
+    Vec3f ng = normalize(world.ng);
+    s.geometricNormal = s.backFacing ? -ng : ng;
+    s.toEye = projection_.orthographic ? -forward_ : normalize(projection_.eye - s.position);
+    if (!shader_.hasMaps(s.material)) return s;
+    // The path tracer's footprint: its ray cone's width where the camera ray meets the surface.
+    float distance = projection_.orthographic ? 1.0f / invDepth : length(s.position - projection_.eye);
+    s.map.footprint = pixelSpread_ * distance;
+    if (mesh.uvs.size() == mesh.positions.size()) {
+        TextureFrame frame = textureFrame(mesh, idx, b0, b1, b2, world, placement, item.mirrored);
+        s.map.uv = frame.uv;
+        s.map.uvPerMetre = frame.uvPerMetre;
+        s.tangent = frame.tangent;
+        s.bitangentSign = frame.bitangentSign;
     }
-    case PreviewMode::Albedo: return albedo;
-    case PreviewMode::Normal: return n * 0.5f + Vec3f(0.5f);
+    return s;
+}
+
+Vec3f Rasterizer::surfaceColor(const DrawItem &item, uint32_t triangleWord, float b1, float b2, float invDepth) const {
+    switch (options_.mode) {
     case PreviewMode::Depth:
         if (!(depthFar_ > depthNear_)) return Vec3f(1.0f);  // everything at one depth
         return Vec3f(std::clamp((depthFar_ - 1.0f / invDepth) / (depthFar_ - depthNear_), 0.0f, 1.0f));
     case PreviewMode::Id: return objectIdColor(item.objectId);
+    default: break;
     }
-    return {};
+    MaterialId m = materialOf(item, triangleWord & ~kBackFacing);
+    if (!shadowMap_ && shader_.fromNormalAlone(m, !item.mesh->normals.empty()))
+        return shader_.colorFromNormal(m, normalAt(item, triangleWord, b1, b2));
+    PreviewSurface s = surfaceAt(item, triangleWord, b1, b2, invDepth);
+    // The shadow map is looked up with the normal of the side the mesh faces.
+    bool sunVisible =
+        !shadowMap_ || !shadowMap_->shadowed(s.position, s.backFacing ? -s.geometricNormal : s.geometricNormal);
+    return shader_.color(s, sunVisible);
 }
 
 void Rasterizer::shadeTile(const Tile &tile, const TileFragments &f, PreviewImage &image) const {
-    Vec3f background = options_.mode == PreviewMode::Shaded ? ambient_ : Vec3f(0.0f);
-    // A flat triangle has one colour all over (except in depth mode and with shadows):
-    // neighbouring pixels of the same one reuse it.
+    const bool constantBackground = shader_.constantBackground();
+    const Vec3f background = shader_.background(forward_);
+    // A flat triangle whose colour follows from its normal has one colour all over (except with
+    // shadows): neighbouring pixels of the same one reuse it.
     bool reuseFlat = options_.mode != PreviewMode::Depth && !shadowMap_;
     uint32_t lastItem = kNoItem, lastTriangle = 0;
     Vec3f lastColor;
@@ -465,7 +520,10 @@ void Rasterizer::shadeTile(const Tile &tile, const TileFragments &f, PreviewImag
         for (int x = tile.x0; x < tile.x1; ++x, ++p) {
             size_t out = size_t(y) * size_t(width_) + size_t(x);
             if (f.invDepth[p] == 0) {
-                image.film.set(x, y, background);
+                image.film.set(x, y,
+                               constantBackground
+                                   ? background
+                                   : shader_.background(rays_.generate(float(x) + 0.5f, float(y) + 0.5f).direction));
                 image.depth[out] = kInfinity;
                 image.objectId[out] = 0;
                 continue;
@@ -476,7 +534,9 @@ void Rasterizer::shadeTile(const Tile &tile, const TileFragments &f, PreviewImag
                 color = lastColor;
             } else {
                 color = surfaceColor(item, f.triangle[p], f.b1[p], f.b2[p], f.invDepth[p]);
-                bool flat = item.mesh->normals.empty();
+                bool flat = item.mesh->normals.empty() &&
+                    (options_.mode == PreviewMode::Id ||
+                     shader_.fromNormalAlone(materialOf(item, f.triangle[p] & ~kBackFacing), false));
                 lastItem = flat ? f.item[p] : kNoItem;
                 lastTriangle = f.triangle[p];
                 lastColor = color;

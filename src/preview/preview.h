@@ -12,11 +12,12 @@
 namespace veduta {
 
 enum class PreviewMode {
-    Shaded,  // base colour lit by the sun (Lambert, optionally shadowed) and the sky's irradiance
-    Albedo,  // base colour
-    Normal,  // shading normal, world space, mapped from [-1, 1] to [0, 1]
+    Shaded,  // textured materials lit by the sun (Lambert and Phong, optionally shadowed) and the sky
+    Albedo,  // the diffuse albedo, as the path tracer's albedo pass
+    Normal,  // shading normal with its normal map, world space, mapped from [-1, 1] to [0, 1]
     Depth,   // distance along the view axis, near = white, far = black
     Id,      // object ids as distinct colours
+    Thesis,  // seed 000's per-pixel shader PPSUNS (thesis_shading.h)
 };
 
 struct PreviewOptions {

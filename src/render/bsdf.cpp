@@ -6,16 +6,11 @@
 #include "core/color.h"
 #include "render/phong.h"
 #include "render/sampling.h"
+#include "scene/lobe_weights.h"
 
 namespace veduta {
 
 namespace {
-
-Vec3f clamp01(const Vec3f &c) {
-    return {std::clamp(c.x, 0.0f, 1.0f), std::clamp(c.y, 0.0f, 1.0f), std::clamp(c.z, 0.0f, 1.0f)};
-}
-
-Vec3f nonNegative(const Vec3f &c) { return {std::max(c.x, 0.0f), std::max(c.y, 0.0f), std::max(c.z, 0.0f)}; }
 
 Vec3f reflect(const Vec3f &w, const Vec3f &n) { return n * (2 * dot(n, w)) - w; }
 
@@ -47,20 +42,14 @@ Vec3f thinGlassTransmittance(float cosTheta, float ior, const Vec3f &tint) {
 Bsdf::Bsdf(const BsdfInputs &inputs, const Vec3f &shadingNormal, const Vec3f &geometricNormal) :
     frame_(Frame::fromNormal(shadingNormal)),
     geometricNormal_(geometricNormal),
-    mirror_(clamp01(inputs.mirror)),
     exponent_(std::clamp(inputs.exponent, kMinPhongExponent, kMaxPhongExponent)),
     thinGlass_(inputs.thinGlass),
     ior_(inputs.ior),
     glassTint_(inputs.glassTint) {
-    Vec3f kd = nonNegative(inputs.diffuse), ks = nonNegative(inputs.specular);
-    float sum = maxComponent(kd + ks);
-    if (sum > 1) {
-        kd = kd / sum;
-        ks = ks / sum;
-    }
-    Vec3f rest = Vec3f(1.0f) - mirror_;
-    diffuse_ = kd * rest;
-    specular_ = ks * rest;
+    LobeWeights weights = lobeWeights(inputs.diffuse, inputs.specular, inputs.mirror);
+    diffuse_ = weights.diffuse;
+    specular_ = weights.specular;
+    mirror_ = weights.mirror;
     plainDiffuse_ =
         !thinGlass_ && maxComponent(specular_) <= 0 && maxComponent(mirror_) <= 0 && maxComponent(diffuse_) > 0;
 }

@@ -1,10 +1,12 @@
 // From a material and a surface point to what the integrator needs: the BSDF with its maps
-// looked up and its shading normal worked out, whether a cut-out removes the surface there,
-// and what a shadow ray keeps when it passes.
+// looked up (through scene/material_maps.h, as the preview reads them) and its shading normal
+// worked out, whether a cut-out removes the surface there, and what a shadow ray keeps when it
+// passes.
 #pragma once
 
 #include "render/bsdf.h"
 #include "render/surface_interaction.h"
+#include "scene/material_maps.h"
 #include "scene/render_scene.h"
 
 namespace veduta {
@@ -25,12 +27,10 @@ class MaterialLookup {
     Vec3f transmittance(const SurfaceInteraction &si, const Vec3f &wi, float footprint) const;
 
   private:
-    // A map's value at the point; `count` channels, missing ones repeat the last.
-    void lookup(TextureId id, const Material &m, const SurfaceInteraction &si, float footprint, float *out,
-                int count) const;
     Vec3f shadingNormal(const Material &m, const SurfaceInteraction &si, const Vec3f &wo, float footprint) const;
 
     const RenderScene &scene_;
+    MaterialMaps maps_;
     bool anyPassThrough_ = false;
 };
 

@@ -1,5 +1,6 @@
-// Which object each pixel shows, as the path tracer sees it: the object id hit by the camera
-// ray through the pixel centre (0 for the background). The preview's id mode must agree.
+// Which object each pixel shows, as the path tracer sees it: the object id of what the camera ray
+// through the pixel centre meets, cut-outs passed through as in its id pass (0 for the
+// background). The preview's id mode must agree.
 #pragma once
 
 #include <cstdint>

@@ -3,6 +3,8 @@
 #include <bit>
 #include <cmath>
 
+#include "scene/texture_frame.h"
+
 namespace veduta {
 
 SurfaceLookup::SurfaceLookup(const RenderScene &scene) : scene_(scene) {
@@ -36,8 +38,6 @@ SurfaceInteraction SurfaceLookup::at(const Hit &hit, const Vec3f &rayDirection) 
         si.material = scene_.instances[hit.index].materialOverride;
     // Most surfaces are plain: no maps, so no texture coordinates or tangent frame to work out.
     const bool textured = materialHasMaps_[si.material] && mesh.uvs.size() == mesh.positions.size();
-    Vec3f tangent = !textured || mesh.tangents.empty() ? Vec3f(0.0f) : interpolate(mesh.tangents);
-    float sign = !textured || mesh.bitangentSigns.empty() ? 1.0f : mesh.bitangentSigns[idx[0]];
     const bool mirrored = hit.instanced && instanceMirrors_[hit.index];
     si.distance = hit.t;
     if (!hit.instanced) {
@@ -56,9 +56,6 @@ SurfaceInteraction SurfaceLookup::at(const Hit &hit, const Vec3f &rayDirection) 
         e1 = instance.objectToWorld.applyVector(e1);
         e2 = instance.objectToWorld.applyVector(e2);
         ns = normalTransform.applyVector(ns);
-        if (textured) tangent = instance.objectToWorld.applyVector(tangent);
-        // A mirroring placement turns the (t, b, n) frame's handedness around.
-        if (mirrored) sign = -sign;
     }
     Vec3f ng = cross(e1, e2);
     // A mirroring placement turns cross(e1, e2) inwards; back to the side the mesh faces.
@@ -70,26 +67,12 @@ SurfaceInteraction SurfaceLookup::at(const Hit &hit, const Vec3f &rayDirection) 
     si.shadingNormal = nsLength > 0 ? faceForward(ns / nsLength, si.geometricNormal) : si.geometricNormal;
 
     if (textured) {
-        const Vec2f &t0 = mesh.uvs[idx[0]], &t1 = mesh.uvs[idx[1]], &t2 = mesh.uvs[idx[2]];
-        si.uv = {t0.x * w + t1.x * hit.u + t2.x * hit.v, t0.y * w + t1.y * hit.u + t2.y * hit.v};
-        float du1 = t1.x - t0.x, dv1 = t1.y - t0.y, du2 = t2.x - t0.x, dv2 = t2.y - t0.y;
-        float uvArea = du1 * dv2 - dv1 * du2;  // twice the triangle's area in (u, v), signed
-        float worldArea = length(ng);
-        if (uvArea != 0 && worldArea > 0) {
-            si.uvPerMetre = std::sqrt(std::abs(uvArea) / worldArea);
-            if (length(tangent) == 0) {
-                // No vertex tangents (a faceted mesh): the triangle's own ∂p/∂u and handedness.
-                Vec3f dpdu = (e1 * dv2 - e2 * dv1) / uvArea;
-                Vec3f dpdv = (e2 * du1 - e1 * du2) / uvArea;
-                tangent = dpdu;
-                sign = dot(cross(ng, dpdu), dpdv) < 0 ? -1.0f : 1.0f;
-            }
-        }
-    }
-    float tangentLength = length(tangent);
-    if (tangentLength > 0) {
-        si.tangent = tangent / tangentLength;
-        si.bitangentSign = sign;
+        const Transform *placement = hit.instanced ? &scene_.instances[hit.index].objectToWorld : nullptr;
+        TextureFrame frame = textureFrame(mesh, idx, w, hit.u, hit.v, {e1, e2, ng}, placement, mirrored);
+        si.uv = frame.uv;
+        si.uvPerMetre = frame.uvPerMetre;
+        si.tangent = frame.tangent;
+        si.bitangentSign = frame.bitangentSign;
     }
     return si;
 }

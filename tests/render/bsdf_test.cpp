@@ -7,7 +7,7 @@
 #include "render/bsdf.h"
 #include "render/chi2.h"
 #include "render/phong.h"
-#include "render/shading_normal.h"
+#include "scene/shading_normal.h"
 
 namespace veduta {
 namespace {

@@ -1,4 +1,4 @@
-#include "render/shading_normal.h"
+#include "scene/shading_normal.h"
 
 #include <algorithm>
 #include <array>
