@@ -75,27 +75,35 @@ Surface concrete(Vec2d p, uint32_t seed, double footprint) {
     return {base * float(light * (1 - 0.6 * joint)), -0.005 * joint};
 }
 
-// Pebbles of about 3 cm, each its own shade, the gaps between them dark.
-Surface gravel(Vec2d p, uint32_t seed, double footprint) {
-    const Vec3f base{0.42f, 0.38f, 0.31f};
+// Loose stones as cells (cellular noise): `size` metres across, each its own shade in
+// [shade, shade + spread], darker toward its edges (d2 − d1 below `edgeWidth` of a cell), the
+// edges `depth` metres below the stones' tops. `mean` is what shade × edge term averages to over
+// many stones (measured; the edge term is near 1 on most of a stone), taken off so that the
+// stones average to the base colour and a far look sees what close ones do.
+struct Stones {
+    Vec3f base;
+    double size, edgeWidth, shade, spread, edgeDarkness, mean, depth;
+    uint32_t salt;
+};
+
+Surface stones(Vec2d p, uint32_t seed, double footprint, const Stones &s) {
     double light = 1 + mottle(p, seed, footprint);
-    double detail = resolved(footprint, 0.03);
-    CellDistances c = cellDistances({p.x / 0.03, p.y / 0.03}, seed + 3);
-    double gap = std::clamp((c.second - c.nearest) / 0.15, 0.0, 1.0);
-    double shade = 0.75 + 0.5 * bitsToUnitFloat(c.cell);
-    double pebble = detail * (shade * (0.55 + 0.45 * gap) - 0.85);
-    return {base * float(light * (1 + pebble)), detail * 0.006 * gap};
+    double detail = resolved(footprint, s.size);
+    CellDistances c = cellDistances({p.x / s.size, p.y / s.size}, seed + s.salt);
+    double edge = std::clamp((c.second - c.nearest) / s.edgeWidth, 0.0, 1.0);
+    double shade = s.shade + s.spread * bitsToUnitFloat(c.cell);
+    double stone = detail * (shade * (1 - s.edgeDarkness + s.edgeDarkness * edge) - s.mean);
+    return {s.base * float(light * (1 + stone)), detail * s.depth * edge};
+}
+
+// Gravel: pebbles of about 3 cm, the gaps between them dark.
+Surface gravel(Vec2d p, uint32_t seed, double footprint) {
+    return stones(p, seed, footprint, {{0.42f, 0.38f, 0.31f}, 0.03, 0.15, 0.75, 0.5, 0.45, 0.85, 0.006, 3});
 }
 
 // Ballast: dark reddish stones of about 5 cm, their edges (d2 − d1) dark.
 Surface ballastStones(Vec2d p, uint32_t seed, double footprint) {
-    const Vec3f base{0.27f, 0.235f, 0.215f};
-    double light = 1 + mottle(p, seed, footprint);
-    double detail = resolved(footprint, 0.05);
-    CellDistances c = cellDistances({p.x / 0.05, p.y / 0.05}, seed + 4);
-    double edge = std::clamp((c.second - c.nearest) / 0.2, 0.0, 1.0);
-    double stone = detail * ((0.8 + 0.4 * bitsToUnitFloat(c.cell)) * (0.6 + 0.4 * edge) - 0.88);
-    return {base * float(light * (1 + stone)), detail * 0.015 * edge};
+    return stones(p, seed, footprint, {{0.27f, 0.235f, 0.215f}, 0.05, 0.2, 0.8, 0.4, 0.4, 0.88, 0.015, 4});
 }
 
 // A standard-gauge track on ballast: concrete sleepers 2.6 m × 0.26 m every 0.6 m and two

@@ -17,13 +17,8 @@ namespace {
 const MapPoint kSouthWest{530000, 5326000};
 const LocalFrame kFrame{{530100, 5326100}};  // the grid's centre: local −100 … 100
 
-struct Terrain {
-    HeightGrid grid;
-    Mesh mesh;
-    TerrainSurface surface;
-
-    explicit Terrain(HeightGrid g) :
-        grid(std::move(g)), mesh(drapeAreas(grid, kFrame, {}, {}).mesh), surface(mesh, gridLines(grid, kFrame)) {}
+struct Terrain : test::DrapedDgm {
+    explicit Terrain(HeightGrid g) : DrapedDgm(std::move(g), kFrame) {}
 };
 
 // A hillside rising 12 % to the north and 5 % to the east, with ±0.4 m of noise at every node.

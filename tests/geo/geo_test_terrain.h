@@ -5,8 +5,11 @@
 #include <string>
 #include <vector>
 
+#include "geo/drape_areas.h"
 #include "geo/grid_lines.h"
 #include "geo/height_grid.h"
+#include "geo/terrain_surface.h"
+#include "geodesy/local_frame.h"
 #include "scene/mesh.h"
 
 namespace veduta::test {
@@ -15,6 +18,16 @@ namespace veduta::test {
 double unitRandom(uint32_t seed, uint32_t index);
 
 HeightGrid flatTerrain(int columns, int rows, double spacing, MapPoint southWest, float height);
+
+// A DGM draped in `frame` with `areas` (none: the bare terrain), and the surface of that mesh.
+struct DrapedDgm {
+    HeightGrid grid;
+    Mesh mesh;
+    TerrainSurface surface;
+
+    DrapedDgm(HeightGrid g, const LocalFrame &frame, const std::vector<DrapeArea> &areas = {}) :
+        grid(std::move(g)), mesh(drapeAreas(grid, frame, areas, {}).mesh), surface(mesh, gridLines(grid, frame)) {}
+};
 // Rough: smooth value noise of 40 m, a slope of 0.8 eastwards, a sharp ridge 30 m high
 // running east–west through the middle and ±1.5 m of noise at every node.
 HeightGrid roughTerrain(int columns, int rows, double spacing, MapPoint southWest, uint32_t seed);

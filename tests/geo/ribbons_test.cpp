@@ -16,13 +16,8 @@ using test::unitRandom;
 const MapPoint kSouthWest{3392030, 5588000};
 const LocalFrame kFrame{{3392100, 5588050}};
 
-struct Terrain {
-    HeightGrid grid;
-    Mesh mesh;
-    TerrainSurface surface;
-
-    Terrain(HeightGrid g, const std::vector<DrapeArea> &areas) :
-        grid(std::move(g)), mesh(drapeAreas(grid, kFrame, areas, {}).mesh), surface(mesh, gridLines(grid, kFrame)) {}
+struct Terrain : test::DrapedDgm {
+    Terrain(HeightGrid g, const std::vector<DrapeArea> &areas) : DrapedDgm(std::move(g), kFrame, areas) {}
 };
 
 MapPoint at(const HeightGrid &grid, double x, double y) { return {grid.west + x, grid.south + y}; }

@@ -20,13 +20,8 @@ namespace {
 const MapPoint kSouthWest{3392030, 5588000};
 const LocalFrame kFrame{{3392100, 5588050}};
 
-struct Terrain {
-    HeightGrid grid;
-    Mesh mesh;
-    TerrainSurface surface;
-
-    explicit Terrain(HeightGrid g) :
-        grid(std::move(g)), mesh(drapeAreas(grid, kFrame, {}, {}).mesh), surface(mesh, gridLines(grid, kFrame)) {}
+struct Terrain : test::DrapedDgm {
+    explicit Terrain(HeightGrid g) : DrapedDgm(std::move(g), kFrame) {}
 };
 
 MapPoint at(const HeightGrid &grid, double x, double y) { return {grid.west + x, grid.south + y}; }

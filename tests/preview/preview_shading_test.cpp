@@ -10,6 +10,7 @@
 
 #include "preview/example_scenes.h"
 #include "preview/preview.h"
+#include "same_preview.h"
 #include "test_paths.h"
 #include "test_scenes.h"
 
@@ -125,21 +126,8 @@ TEST(PreviewShading, BackgroundIsTheEnvironmentAlongEachPixelsRay) {
 TEST(PreviewShading, TexturedSceneIsTheSameForAnyThreadsAndTiles) {
     RenderScene scene = test::exampleScene(test::sourceFile("scenes/materials.xml"), 96);
     ASSERT_TRUE(scene.textures);
-    for (PreviewMode mode : {PreviewMode::Shaded, PreviewMode::Albedo, PreviewMode::Normal, PreviewMode::Thesis}) {
-        PreviewOptions options;
-        options.mode = mode;
-        options.wireframe = options.shadows = true;
-        auto draw = [&](int threads, int tileSize) {
-            options.tileSize = tileSize;
-            return tbb::task_arena(threads).execute([&] { return renderPreview(scene, options); });
-        };
-        PreviewImage reference = draw(1, 64);
-        for (int tileSize : {1, 7, 4096}) {
-            PreviewImage other = draw(2, tileSize);
-            EXPECT_EQ(reference.film.pixels(), other.film.pixels()) << "mode " << int(mode) << " tile " << tileSize;
-            EXPECT_EQ(reference.objectId, other.objectId);
-        }
-    }
+    test::expectSameForAnyThreadsAndTiles(
+        scene, {PreviewMode::Shaded, PreviewMode::Albedo, PreviewMode::Normal, PreviewMode::Thesis});
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "render/first_hits.h"
 #include "render/object_ids.h"
 #include "render/renderer.h"
+#include "same_preview.h"
 #include "test_paths.h"
 #include "test_scenes.h"
 
@@ -65,21 +66,8 @@ TEST(Preview, ThreadsAndTilesDoNotChangeTheImageWithEveryOption) {
   <instance prototype="p" translate="2 0 1" scale="-1 1 1"/>
   <instance prototype="p" translate="2 1.5 1" rotate="10 20 30"/>
 </scene>)");
-    for (PreviewMode mode : {PreviewMode::Shaded, PreviewMode::Normal, PreviewMode::Depth, PreviewMode::Id}) {
-        PreviewOptions options;
-        options.mode = mode;
-        options.wireframe = options.shadows = true;
-        auto draw = [&](int threads, int tileSize) {
-            options.tileSize = tileSize;
-            return tbb::task_arena(threads).execute([&] { return renderPreview(scene, options); });
-        };
-        PreviewImage reference = draw(1, 64);
-        for (int tileSize : {1, 7, 4096}) {
-            PreviewImage other = draw(2, tileSize);
-            EXPECT_EQ(reference.film.pixels(), other.film.pixels()) << "mode " << int(mode) << " tile " << tileSize;
-            EXPECT_EQ(reference.depth, other.depth);
-        }
-    }
+    test::expectSameForAnyThreadsAndTiles(
+        scene, {PreviewMode::Shaded, PreviewMode::Normal, PreviewMode::Depth, PreviewMode::Id});
 }
 
 // Neighbouring triangles leave no pixel centre uncovered: seen from inside a finely divided
