@@ -24,7 +24,15 @@ class Ribbon {
             centre_.push_back((left + right) * 0.5);
             across_.push_back((left - right) * 0.5);
             along_.push_back(i == 0 ? 0 : along_.back() + veduta::length(centre_[i] - centre_[i - 1]));
+            low_ = {std::min(low_.x, centre_[i].x), std::min(low_.y, centre_[i].y)};
+            high_ = {std::max(high_.x, centre_[i].x), std::max(high_.y, centre_[i].y)};
         }
+    }
+
+    // Whether p lies within `reach` of the centre line's bounding box: a cheap test before the
+    // exact distance, so that a landscape's thousands of roads meet in far less than R² · n.
+    bool near(Vec2d p, double reach) const {
+        return p.x >= low_.x - reach && p.x <= high_.x + reach && p.y >= low_.y - reach && p.y <= high_.y + reach;
     }
 
     size_t stations() const { return centre_.size(); }
@@ -83,6 +91,8 @@ class Ribbon {
     const Mesh &mesh_;
     std::vector<Vec2d> centre_, across_;
     std::vector<double> along_;
+    Vec2d low_{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    Vec2d high_{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
 };
 
 // The nearest point of a ribbon's centre line to p: its distance along and away.
@@ -133,7 +143,7 @@ std::vector<RoadPlan> planJunctions(std::span<const MarkedRoad> roads, const std
             int meetings = 0, continuations = 0;
             bool stop = false;
             for (size_t q = 0; q < roads.size(); ++q) {
-                if (q == r || ribbons[q].stations() < 2) continue;
+                if (q == r || ribbons[q].stations() < 2 || !ribbons[q].near(p, options.junctionTolerance)) continue;
                 Nearest n = nearestOnCentre(ribbons[q], p);
                 if (n.distance > options.junctionTolerance) continue;
                 ++meetings;
