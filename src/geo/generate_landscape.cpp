@@ -239,6 +239,21 @@ void reportUndrawn(const LandscapeDesc &land, const DataFileDesc &d, const Atkis
                     d.loc.toString(), d.file.string(), count, layer.objects.size(), list));
 }
 
+// The outlines of the lakes' and rivers' areas, local: where the ground is wet (terrain_texture.h);
+// null without water.
+std::shared_ptr<const ShoreDistance> shoreOf(const std::vector<AtkisObject> &objects, const LocalFrame &frame) {
+    std::vector<std::pair<Vec2d, Vec2d>> edges;
+    for (const AtkisObject &o : objects) {
+        LandClass c = landClass(o);
+        if (!drapesAsArea(o) || (c != LandClass::Water && c != LandClass::River)) continue;
+        for (const MapRing &ring : o.areas) {
+            for (size_t k = 0; k < ring.size(); ++k)
+                edges.push_back({toLocalDouble(ring[k], frame), toLocalDouble(ring[(k + 1) % ring.size()], frame)});
+        }
+    }
+    return edges.empty() ? nullptr : std::make_shared<const ShoreDistance>(edges);
+}
+
 class LandscapeBuilder {
   public:
     LandscapeBuilder(const LandscapeDesc &land, LandscapeData data, uint32_t seed, const Georeference &georef,
@@ -252,7 +267,7 @@ class LandscapeBuilder {
         warnings_(warnings),
         grid_(std::make_shared<const HeightGrid>(std::move(data.grid))),
         objects_(std::move(data.objects)),
-        materials_(builder, addProcedural, grid_, frame_, seed) {}
+        materials_(builder, addProcedural, grid_, frame_, shoreOf(objects_, frame_), seed) {}
 
     LandscapeGround build() {
         addTerrain();

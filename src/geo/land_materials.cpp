@@ -76,8 +76,14 @@ void readInMetres(Material &m) { m.textureSize = Vec2f{1 / kLandTileMetres, 1 / 
 }  // namespace
 
 LandMaterials::LandMaterials(RenderSceneBuilder &builder, AddProcedural addProcedural,
-                             std::shared_ptr<const HeightGrid> grid, LocalFrame frame, uint32_t seed) :
-    builder_(builder), addProcedural_(std::move(addProcedural)), grid_(std::move(grid)), frame_(frame), seed_(seed) {}
+                             std::shared_ptr<const HeightGrid> grid, LocalFrame frame,
+                             std::shared_ptr<const ShoreDistance> shore, uint32_t seed) :
+    builder_(builder),
+    addProcedural_(std::move(addProcedural)),
+    grid_(std::move(grid)),
+    frame_(frame),
+    shore_(std::move(shore)),
+    seed_(seed) {}
 
 MaterialId LandMaterials::land(LandClass c) {
     auto found = land_.find(c);
@@ -86,8 +92,8 @@ MaterialId LandMaterials::land(LandClass c) {
     MaterialId id = builder_.findMaterial(m.name);
     if (id == kNoMaterial) {
         if (addProcedural_ && textured(c)) {
-            m.diffuseMap = addProcedural_(
-                std::make_shared<TerrainTexture>(c, m.diffuse, grid_, frame_, hashValues({seed_, uint32_t(c)})));
+            m.diffuseMap = addProcedural_(std::make_shared<TerrainTexture>(c, m.diffuse, grid_, frame_, shore_,
+                                                                           hashValues({seed_, uint32_t(c)})));
             m.diffuse = Vec3f(1);
             readInMetres(m);
         }

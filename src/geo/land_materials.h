@@ -12,6 +12,7 @@
 #include "geo/atkis.h"
 #include "geo/height_grid.h"
 #include "geo/road_style.h"
+#include "geo/shore_distance.h"
 #include "geodesy/local_frame.h"
 #include "scene/render_scene.h"
 #include "scene/textures.h"
@@ -21,8 +22,9 @@ namespace veduta {
 class LandMaterials {
   public:
     // `addProcedural` may be empty: plain colours.
+    // `shore` may be null: no water.
     LandMaterials(RenderSceneBuilder &builder, AddProcedural addProcedural, std::shared_ptr<const HeightGrid> grid,
-                  LocalFrame frame, uint32_t seed);
+                  LocalFrame frame, std::shared_ptr<const ShoreDistance> shore, uint32_t seed);
 
     MaterialId land(LandClass c);
     MaterialId pavement(Pavement pavement, int tracks);
@@ -33,6 +35,7 @@ class LandMaterials {
     AddProcedural addProcedural_;
     std::shared_ptr<const HeightGrid> grid_;
     LocalFrame frame_;
+    std::shared_ptr<const ShoreDistance> shore_;
     uint32_t seed_;
     std::map<LandClass, MaterialId> land_;
     std::map<std::pair<Pavement, int>, MaterialId> pavements_;

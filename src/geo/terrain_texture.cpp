@@ -41,14 +41,22 @@ bool natural(LandClass c) {
     }
 }
 
+const Vec3f kSilt{0.16f, 0.14f, 0.1f};
 const Vec3f kRock{0.23f, 0.22f, 0.21f}, kScree{0.3f, 0.29f, 0.27f}, kAlpine{0.27f, 0.26f, 0.18f},
     kSnow{0.82f, 0.84f, 0.88f};
 
 }  // namespace
 
 TerrainTexture::TerrainTexture(LandClass landClass, Vec3f albedo, std::shared_ptr<const HeightGrid> grid,
-                               LocalFrame frame, uint32_t seed, TerrainLook look) :
-    landClass_(landClass), albedo_(albedo), grid_(std::move(grid)), frame_(frame), seed_(seed), look_(look) {}
+                               LocalFrame frame, std::shared_ptr<const ShoreDistance> shore, uint32_t seed,
+                               TerrainLook look) :
+    landClass_(landClass),
+    albedo_(albedo),
+    grid_(std::move(grid)),
+    frame_(frame),
+    shore_(std::move(shore)),
+    seed_(seed),
+    look_(look) {}
 
 std::string TerrainTexture::fingerprint() const {
     // The grid's identity is its extent and a sample of heights: the same DGM file gives the same.
@@ -100,6 +108,11 @@ Vec3f TerrainTexture::ground(Vec2d p, double footprint) const {
     colour = mix(colour, kScree * float(1 + 0.3 * speck), scree);
     colour = mix(colour, kRock * float(1 + 0.25 * fine + 0.15 * middle), rock);
     colour = mix(colour, kSnow * float(1 + 0.05 * fine), snow);
+    if (shore_) {  // wet silt along the water, its edge wandering by a metre
+        double reach = look_.shoreWidth + 1;
+        double wet = smoothstep(look_.shoreWidth, 0, shore_->distance(p, reach) + middle);
+        colour = mix(colour, kSilt * float(1 + 0.3 * speck), 0.9 * wet);
+    }
     return {std::clamp(colour.x, 0.0f, 1.0f), std::clamp(colour.y, 0.0f, 1.0f), std::clamp(colour.z, 0.0f, 1.0f)};
 }
 

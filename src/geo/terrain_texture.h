@@ -2,7 +2,8 @@
 // kilometres away: the class's colour varied at four scales (fields and meadows in patches of
 // a few hundred metres, tussocks and clods of metres, a fine mottle) with the class's own
 // pattern (furrows on farmland, litter on the forest floor), turning to scree and rock where the
-// DGM is steep and to alpine ground above the tree line (seed 004's terrain remainders). (u, v)
+// DGM is steep, to alpine ground above the tree line and to wet silt along the shores of lakes
+// and rivers (seed 004's terrain remainders). (u, v)
 // are local metres of the scene (a material reads the terrain's tile units with textureSize
 // 1 / tile), so the texture knows where it is on the DGM. Pattern finer than the footprint
 // gives way to its mean. docs/landscape.md.
@@ -14,6 +15,7 @@
 
 #include "geo/atkis.h"
 #include "geo/height_grid.h"
+#include "geo/shore_distance.h"
 #include "geodesy/local_frame.h"
 #include "scene/textures.h"
 
@@ -23,12 +25,14 @@ struct TerrainLook {
     double screeSlope = 38, rockSlope = 45, bareRockSlope = 55;  // degrees
     double treeLine = 1800;                                      // metres above sea level
     double snowLine = 2600;
+    double shoreWidth = 2.5;  // metres of wet silt along the water
 };
 
 class TerrainTexture : public ProceduralTexture {
   public:
+    // `shore` may be null: no water.
     TerrainTexture(LandClass landClass, Vec3f albedo, std::shared_ptr<const HeightGrid> grid, LocalFrame frame,
-                   uint32_t seed, TerrainLook look = {});
+                   std::shared_ptr<const ShoreDistance> shore, uint32_t seed, TerrainLook look = {});
 
     int channels() const override { return 3; }
     std::string fingerprint() const override;
@@ -41,6 +45,7 @@ class TerrainTexture : public ProceduralTexture {
     Vec3f albedo_;
     std::shared_ptr<const HeightGrid> grid_;
     LocalFrame frame_;
+    std::shared_ptr<const ShoreDistance> shore_;
     uint32_t seed_;
     TerrainLook look_;
 };

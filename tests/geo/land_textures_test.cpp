@@ -6,8 +6,11 @@
 
 #include <cmath>
 #include <memory>
+#include <utility>
+#include <vector>
 
 #include "geo/pavement_texture.h"
+#include "geo/shore_distance.h"
 #include "geo/terrain_texture.h"
 
 namespace veduta {
@@ -90,7 +93,7 @@ TEST(TerrainTexture, RockOnSteepSlopesAlpineAboveTheTreeLine) {
     std::shared_ptr<const HeightGrid> grid = testGrid();
     LocalFrame frame{{500000, 5300000}};
     Vec3f meadow{0.13f, 0.23f, 0.06f};
-    TerrainTexture grass(LandClass::Grassland, meadow, grid, frame, 3);
+    TerrainTexture grass(LandClass::Grassland, meadow, grid, frame, nullptr, 3);
     Vec3f flat = closeMean(grass, {30, 30}, 20);
     Vec3f steep = closeMean(grass, {150, 30}, 20);
     Vec3f high = closeMean(grass, {30, 191}, 8);
@@ -103,8 +106,24 @@ TEST(TerrainTexture, RockOnSteepSlopesAlpineAboveTheTreeLine) {
     EXPECT_LT(std::abs(high.x - 0.27f), 0.08f);
     // Water keeps its colour.
     Vec3f water{0.015f, 0.03f, 0.035f};
-    TerrainTexture lake(LandClass::Water, water, grid, frame, 3);
+    TerrainTexture lake(LandClass::Water, water, grid, frame, nullptr, 3);
     EXPECT_EQ(at(lake, {150, 30}, 0.01f).x, water.x);
+}
+
+TEST(TerrainTexture, WetSiltAlongTheShore) {
+    std::shared_ptr<const HeightGrid> grid = testGrid();
+    LocalFrame frame{{500000, 5300000}};
+    // A pond's edge running north–south at x = 50 on the flat.
+    auto shore = std::make_shared<const ShoreDistance>(std::vector<std::pair<Vec2d, Vec2d>>{{{50, 0}, {50, 100}}});
+    EXPECT_NEAR(shore->distance({47, 40}, 10), 3.0, 1e-12);
+    EXPECT_EQ(shore->distance({20, 40}, 10), 10.0);
+    Vec3f meadow{0.13f, 0.23f, 0.06f};
+    TerrainTexture grass(LandClass::Grassland, meadow, grid, frame, shore, 3);
+    Vec3f atTheWater = closeMean(grass, {49.5, 40}, 0.5);
+    Vec3f inland = closeMean(grass, {30, 40}, 0.5);
+    // Silt is brown-grey: its red above its green, where the meadow's green leads.
+    EXPECT_GT(atTheWater.x, atTheWater.y * 0.95f);
+    EXPECT_GT(inland.y, inland.x * 1.2f);
 }
 
 TEST(TerrainTexture, TreesKeepOffRockAndTheHeights) {
