@@ -104,8 +104,8 @@ class SceneAssembler {
             landscape = within(d_.landscape->loc, "<landscape>", [&] {
                 return generateLandscape(
                     *d_.landscape, std::move(*land), seedOf(d_.landscape->seed), d_.georeference, streetAreas, builder_,
-                    warnings_,
-                    [&](std::shared_ptr<const ProceduralTexture> t) { return textures().add(std::move(t)); });
+                    warnings_, [&](std::shared_ptr<const ProceduralTexture> t) { return textures().add(std::move(t)); },
+                    &camera);
             });
         }
         GroundHeight ground = landscape ? landscape->ground : GroundHeight();

@@ -23,6 +23,7 @@
 #include "geo/terrain_mesh.h"
 #include "geo/terrain_surface.h"
 #include "geo/terrain_texture.h"
+#include "geo/track_geometry.h"
 #include "geo/tree_models.h"
 #include "geo/tree_placement.h"
 #include "geo/vector_file.h"
@@ -258,7 +259,7 @@ class LandscapeBuilder {
   public:
     LandscapeBuilder(const LandscapeDesc &land, LandscapeData data, uint32_t seed, const Georeference &georef,
                      const std::vector<LocalPolygon> &streetAreas, RenderSceneBuilder &builder,
-                     const AddProcedural &addProcedural, std::vector<std::string> &warnings) :
+                     const AddProcedural &addProcedural, const Camera *camera, std::vector<std::string> &warnings) :
         land_(land),
         seed_(seed),
         frame_(MapProjection(crsByEpsg(georef.epsg), georef).frame()),
@@ -267,7 +268,9 @@ class LandscapeBuilder {
         warnings_(warnings),
         grid_(std::make_shared<const HeightGrid>(std::move(data.grid))),
         objects_(std::move(data.objects)),
-        materials_(builder, addProcedural, grid_, frame_, shoreOf(objects_, frame_), seed) {}
+        materials_(builder, addProcedural, grid_, frame_, shoreOf(objects_, frame_), seed) {
+        if (camera) camera_ = camera->position;
+    }
 
     LandscapeGround build() {
         addTerrain();
@@ -358,6 +361,19 @@ class LandscapeBuilder {
             markings.setMaterial(materials_.marking());
             builder_.addWorldMesh(std::move(markings), land_.objectId);
         }
+        if (camera_) addTracks(pieces, styles);
+    }
+
+    // The sleepers and rails of the railways near the camera, in one mesh.
+    void addTracks(const std::vector<Mesh> &pieces, const std::vector<RoadStyle> &styles) {
+        Mesh tracks;
+        for (size_t i = 0; i < pieces.size(); ++i) {
+            if (styles[i].rank != RoadRank::Rail) continue;
+            Mesh track = trackGeometry(pieces[i], styles[i].width, styles[i].tracks, *camera_);
+            for (MaterialId &m : track.triangleMaterials) m = materials_.track(TrackSurface(m));
+            tracks.append(track, Transform());
+        }
+        if (tracks.triangleCount() > 0) builder_.addWorldMesh(std::move(tracks), land_.objectId);
     }
 
     void addTrees() {
@@ -457,6 +473,7 @@ class LandscapeBuilder {
     std::shared_ptr<const HeightGrid> grid_;
     std::vector<AtkisObject> objects_;
     LandMaterials materials_;
+    std::optional<Vec3f> camera_;  // where railways get solid sleepers and rails near it
     std::shared_ptr<TerrainSurface> surface_;
     // Per terrain triangle: the object whose area won it, kCityStreetOwner or kNoArea.
     std::vector<uint32_t> triangleObject_;
@@ -483,19 +500,22 @@ LandscapeData readLandscape(const LandscapeDesc &land, const std::optional<Geore
 LandscapeGround generateLandscape(const LandscapeDesc &land, LandscapeData data, uint32_t seed,
                                   const std::optional<Georeference> &georeference,
                                   const std::vector<LocalPolygon> &streetAreas, RenderSceneBuilder &builder,
-                                  std::vector<std::string> &warnings, const AddProcedural &addProcedural) {
+                                  std::vector<std::string> &warnings, const AddProcedural &addProcedural,
+                                  const Camera *camera) {
     if (!georeference)
         throw InputError(land.loc, "a <landscape> needs the scene's <georeference crs=\"EPSG:…\" origin=\"E N\">");
-    return LandscapeBuilder(land, std::move(data), seed, *georeference, streetAreas, builder, addProcedural, warnings)
+    return LandscapeBuilder(land, std::move(data), seed, *georeference, streetAreas, builder, addProcedural, camera,
+                            warnings)
         .build();
 }
 
 LandscapeGround generateLandscape(const LandscapeDesc &land, uint32_t seed,
                                   const std::optional<Georeference> &georeference,
                                   const std::vector<LocalPolygon> &streetAreas, RenderSceneBuilder &builder,
-                                  std::vector<std::string> &warnings, const AddProcedural &addProcedural) {
+                                  std::vector<std::string> &warnings, const AddProcedural &addProcedural,
+                                  const Camera *camera) {
     return generateLandscape(land, readLandscape(land, georeference, warnings), seed, georeference, streetAreas,
-                             builder, warnings, addProcedural);
+                             builder, warnings, addProcedural, camera);
 }
 
 }  // namespace veduta

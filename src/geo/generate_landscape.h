@@ -45,18 +45,21 @@ LandscapeData readLandscape(const LandscapeDesc &landscape, const std::optional<
 // Emits the terrain (one mesh, a material per land class), the ribbons and their markings and
 // the trees (an instance of a prototype each) into `builder`, in the local frame of the
 // georeference's origin. Through `addProcedural` the land and pavement materials get their
-// procedural textures (geo/land_materials.h); without it they are plain colours. `streetAreas`, the pieces of the
-// cities' streets and sidewalks (their union is the street surface), are cut into the terrain as CityStreet areas above
-// every ATKIS area, and trees keep off them as off ribbons. `seed` is the landscape's resolved seed (buildRenderScene).
-// Throws InputError (a landscape without georeference, a DGM in another CRS, bad data).
+// procedural textures (geo/land_materials.h); without it they are plain colours. With a
+// `camera`, railways near it get their sleepers and rails as geometry (geo/track_geometry.h). `streetAreas`, the pieces
+// of the cities' streets and sidewalks (their union is the street surface), are cut into the terrain as CityStreet
+// areas above every ATKIS area, and trees keep off them as off ribbons. `seed` is the landscape's resolved seed
+// (buildRenderScene). Throws InputError (a landscape without georeference, a DGM in another CRS, bad data).
 LandscapeGround generateLandscape(const LandscapeDesc &landscape, LandscapeData data, uint32_t seed,
                                   const std::optional<Georeference> &georeference,
                                   const std::vector<LocalPolygon> &streetAreas, RenderSceneBuilder &builder,
-                                  std::vector<std::string> &warnings, const AddProcedural &addProcedural = {});
+                                  std::vector<std::string> &warnings, const AddProcedural &addProcedural = {},
+                                  const Camera *camera = nullptr);
 // The same, reading the landscape's files first (readLandscape).
 LandscapeGround generateLandscape(const LandscapeDesc &landscape, uint32_t seed,
                                   const std::optional<Georeference> &georeference,
                                   const std::vector<LocalPolygon> &streetAreas, RenderSceneBuilder &builder,
-                                  std::vector<std::string> &warnings, const AddProcedural &addProcedural = {});
+                                  std::vector<std::string> &warnings, const AddProcedural &addProcedural = {},
+                                  const Camera *camera = nullptr);
 
 }  // namespace veduta

@@ -134,4 +134,13 @@ MaterialId LandMaterials::marking() {
     return builder_.findOrAddMaterial(std::move(paint));
 }
 
+MaterialId LandMaterials::track(TrackSurface surface) {
+    if (surface == TrackSleeper)
+        return builder_.findOrAddMaterial(Material::lambertian("land/sleeper", {0.42f, 0.41f, 0.39f}));
+    Material steel = Material::lambertian("land/rail_steel", {0.22f, 0.15f, 0.11f});
+    steel.specular = Vec3f(0.25f);
+    steel.shininess = 80;
+    return builder_.findOrAddMaterial(std::move(steel));
+}
+
 }  // namespace veduta

@@ -13,6 +13,7 @@
 #include "geo/height_grid.h"
 #include "geo/road_style.h"
 #include "geo/shore_distance.h"
+#include "geo/track_geometry.h"
 #include "geodesy/local_frame.h"
 #include "scene/render_scene.h"
 #include "scene/textures.h"
@@ -29,6 +30,8 @@ class LandMaterials {
     MaterialId land(LandClass c);
     MaterialId pavement(Pavement pavement, int tracks);
     MaterialId marking();
+    // `land/sleeper` (concrete) and `land/rail_steel` (rusty steel with a sheen on the head).
+    MaterialId track(TrackSurface surface);
 
   private:
     RenderSceneBuilder &builder_;

@@ -7,93 +7,11 @@
 #include <vector>
 
 #include "geo/mesh_normals.h"
+#include "geo/ribbon_frame.h"
 
 namespace veduta {
 
 namespace {
-
-// A ribbon read back from drapeRibbon's layout: per cross-section a left and a right vertex
-// at one height, pieces of two triangles between cross-sections.
-class Ribbon {
-  public:
-    explicit Ribbon(const Mesh &mesh) : mesh_(mesh) {
-        size_t n = mesh.vertexCount() / 2;
-        if (n < 2 || mesh.vertexCount() != 2 * n || mesh.triangleCount() != 2 * (n - 1)) return;
-        for (size_t i = 0; i < n; ++i) {
-            Vec2d left = plan(2 * i), right = plan(2 * i + 1);
-            centre_.push_back((left + right) * 0.5);
-            across_.push_back((left - right) * 0.5);
-            along_.push_back(i == 0 ? 0 : along_.back() + veduta::length(centre_[i] - centre_[i - 1]));
-            low_ = {std::min(low_.x, centre_[i].x), std::min(low_.y, centre_[i].y)};
-            high_ = {std::max(high_.x, centre_[i].x), std::max(high_.y, centre_[i].y)};
-        }
-    }
-
-    // Whether p lies within `reach` of the centre line's bounding box: a cheap test before the
-    // exact distance, so that a landscape's thousands of roads meet in far less than R² · n.
-    bool near(Vec2d p, double reach) const {
-        return p.x >= low_.x - reach && p.x <= high_.x + reach && p.y >= low_.y - reach && p.y <= high_.y + reach;
-    }
-
-    size_t stations() const { return centre_.size(); }
-    double length() const { return along_.empty() ? 0 : along_.back(); }
-    double along(size_t i) const { return along_[i]; }
-    Vec2d centre(size_t i) const { return centre_[i]; }
-
-    // The point of piece i at fraction t along it and k half widths left of the centre.
-    Vec2d at(size_t i, double t, double k) const {
-        Vec2d a = centre_[i] + across_[i] * k, b = centre_[i + 1] + across_[i + 1] * k;
-        return a + (b - a) * t;
-    }
-
-    // The piece and fraction at distance s along the centre line.
-    std::pair<size_t, double> pieceAt(double s) const {
-        size_t i = size_t(std::upper_bound(along_.begin(), along_.end(), s) - along_.begin());
-        i = std::clamp<size_t>(i, 1, along_.size() - 1) - 1;
-        double span = along_[i + 1] - along_[i];
-        return {i, span > 0 ? std::clamp((s - along_[i]) / span, 0.0, 1.0) : 0.0};
-    }
-
-    // Where the line k half widths left of the centre crosses piece i's diagonal (right
-    // corner at i to left corner at i + 1), as a fraction of the piece, if inside it.
-    std::optional<double> diagonalCrossing(size_t i, double k) const {
-        Vec2d from = centre_[i] - across_[i], diagonal = centre_[i + 1] + across_[i + 1] - from;
-        Vec2d a = at(i, 0, k), b = at(i, 1, k) - a;
-        double denominator = cross(b, diagonal);
-        if (std::abs(denominator) < 1e-12) return std::nullopt;
-        double t = -cross(a - from, diagonal) / denominator;
-        if (!(t > 0 && t < 1)) return std::nullopt;
-        return t;
-    }
-
-    // The height of piece i's surface at p: the plane of whichever of its two triangles
-    // holds p (the one it lies least outside of, against rounding).
-    double heightAt(size_t i, Vec2d p) const {
-        double best = -std::numeric_limits<double>::infinity(), height = 0;
-        for (size_t t = 2 * i; t < 2 * i + 2; ++t) {
-            const uint32_t *v = &mesh_.indices[3 * t];
-            Vec2d a = plan(v[0]), b = plan(v[1]), c = plan(v[2]);
-            double area = cross(b - a, c - a);
-            if (area == 0) continue;
-            double wb = cross(p - a, c - a) / area, wc = cross(b - a, p - a) / area, wa = 1 - wb - wc;
-            double inside = std::min({wa, wb, wc});
-            if (inside > best) {
-                best = inside;
-                height = wa * mesh_.positions[v[0]].z + wb * mesh_.positions[v[1]].z + wc * mesh_.positions[v[2]].z;
-            }
-        }
-        return height;
-    }
-
-  private:
-    Vec2d plan(size_t v) const { return {mesh_.positions[v].x, mesh_.positions[v].y}; }
-
-    const Mesh &mesh_;
-    std::vector<Vec2d> centre_, across_;
-    std::vector<double> along_;
-    Vec2d low_{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
-    Vec2d high_{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
-};
 
 // The nearest point of a ribbon's centre line to p: its distance along and away.
 struct Nearest {
@@ -101,7 +19,7 @@ struct Nearest {
     Vec2d direction;
 };
 
-Nearest nearestOnCentre(const Ribbon &r, Vec2d p) {
+Nearest nearestOnCentre(const RibbonFrame &r, Vec2d p) {
     Nearest best;
     for (size_t i = 0; i + 1 < r.stations(); ++i) {
         Vec2d a = r.centre(i), d = r.centre(i + 1) - a;
@@ -131,11 +49,11 @@ struct RoadPlan {
 bool moreImportant(RoadRank a, RoadRank b) { return int(a) < int(b); }
 
 // The junctions: every end of every road against every other road's centre line.
-std::vector<RoadPlan> planJunctions(std::span<const MarkedRoad> roads, const std::vector<Ribbon> &ribbons,
+std::vector<RoadPlan> planJunctions(std::span<const MarkedRoad> roads, const std::vector<RibbonFrame> &ribbons,
                                     const MarkingOptions &options) {
     std::vector<RoadPlan> plans(roads.size());
     for (size_t r = 0; r < roads.size(); ++r) {
-        const Ribbon &ribbon = ribbons[r];
+        const RibbonFrame &ribbon = ribbons[r];
         if (ribbon.stations() < 2) continue;
         for (int end = 0; end < 2; ++end) {
             Vec2d p = ribbon.centre(end == 0 ? 0 : ribbon.stations() - 1);
@@ -207,7 +125,7 @@ std::vector<Interval> paintedStretches(const MarkingLine &line, double from, dou
 // One painted strip between k0 and k1 half widths left of the centre over [s0, s1] of the
 // centre line, with a cross-section wherever the ribbon has one or its diagonal meets an edge
 // of the strip, each vertex `lift` above the ribbon's triangle under it.
-void paintStrip(const Ribbon &ribbon, double k0, double k1, Interval stretch, double lift, Mesh &out) {
+void paintStrip(const RibbonFrame &ribbon, double k0, double k1, Interval stretch, double lift, Mesh &out) {
     struct Section {
         size_t piece;
         double t;
@@ -240,7 +158,7 @@ void paintStrip(const Ribbon &ribbon, double k0, double k1, Interval stretch, do
     }
 }
 
-void paintRoad(const MarkedRoad &road, const Ribbon &ribbon, const RoadPlan &plan, const MarkingOptions &options,
+void paintRoad(const MarkedRoad &road, const RibbonFrame &ribbon, const RoadPlan &plan, const MarkingOptions &options,
                Mesh &out) {
     double half = road.style.width / 2;
     const RoadEnd &start = plan.ends[0], &end = plan.ends[1];
@@ -269,7 +187,7 @@ void paintRoad(const MarkedRoad &road, const Ribbon &ribbon, const RoadPlan &pla
 }  // namespace
 
 Mesh roadMarkings(std::span<const MarkedRoad> roads, const MarkingOptions &options) {
-    std::vector<Ribbon> ribbons;
+    std::vector<RibbonFrame> ribbons;
     ribbons.reserve(roads.size());
     for (const MarkedRoad &road : roads) ribbons.emplace_back(*road.ribbon);
     std::vector<RoadPlan> plans = planJunctions(roads, ribbons, options);
