@@ -19,7 +19,8 @@ packages=(
     cmake g++ make pkg-config ccache time clang-format clang libclang-rt-14-dev
     libembree-dev libopenimageio-dev openimageio-tools libopenexr-dev libopencolorio-dev opencolorio-tools
     libgeographiclib-dev libproj-dev proj-data libcgal-dev libgdal-dev libcitygml-dev libtbb-dev libpugixml-dev libcli11-dev
-    libgtest-dev libbenchmark-dev libspdlog-dev libfmt-dev libassimp-dev libtinyobjloader-dev libboost-dev libpng-dev zlib1g-dev libosmesa6-dev
+    libgtest-dev libbenchmark-dev libfmt-dev libassimp-dev libtinyobjloader-dev libtinygltf-dev libboost-dev libpng-dev zlib1g-dev libosmesa6-dev
+    dpkg-dev slurm-wlm munge
 )
 missing=()
 for p in "${packages[@]}"; do

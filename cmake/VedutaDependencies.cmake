@@ -48,8 +48,6 @@ find_package(CLI11 QUIET CONFIG)
 veduta_require(CLI11_FOUND libcli11-dev)
 find_package(fmt QUIET CONFIG)
 veduta_require(fmt_FOUND libfmt-dev)
-find_package(spdlog QUIET CONFIG)
-veduta_require(spdlog_FOUND libspdlog-dev)
 find_package(assimp QUIET CONFIG)
 veduta_require(assimp_FOUND libassimp-dev)
 # Georeferenced OBJ in double: src/io/georeferenced_mesh.cpp compiles the header-only reader.

@@ -14,12 +14,16 @@ namespace veduta {
 
 namespace {
 
-// veduta-diff is built and installed beside veduta. Where /proc is missing, the folder argv[0]
-// names serves; a bare name means veduta was found on PATH, and so is veduta-diff.
+constexpr const char *kDiffProgram = "veduta-diff";
+
+// veduta-diff is built beside veduta and installed in ../lib/veduta (ProgramPart::Helper).
+// Where /proc is missing, the folder argv[0] names serves; a bare name means veduta was found
+// on PATH, and so is veduta-diff.
 std::string diffProgram(const char *argv0) {
-    if (auto folder = runningProgramFolder()) return (*folder / "veduta-diff").string();
+    if (auto found = findProgramPart(ProgramPart::Helper, kDiffProgram)) return found->string();
+    if (auto folder = runningProgramFolder()) return (*folder / kDiffProgram).string();
     std::filesystem::path invoked(argv0);
-    return invoked.has_parent_path() ? (invoked.parent_path() / "veduta-diff").string() : "veduta-diff";
+    return invoked.has_parent_path() ? (invoked.parent_path() / kDiffProgram).string() : kDiffProgram;
 }
 
 }  // namespace
@@ -30,7 +34,8 @@ int runDiffProgram(int argc, char **argv) {
     args[0] = program.data();
     args.push_back(nullptr);
     execvp(program.c_str(), args.data());  // searches PATH only for a bare name
-    std::fprintf(stderr, "veduta: error: cannot run %s: %s\n", program.c_str(), std::strerror(errno));
+    std::fprintf(stderr, "veduta: error: cannot run %s: %s (veduta looks for %s in %s)\n", program.c_str(),
+                 std::strerror(errno), kDiffProgram, programPartFolderList(ProgramPart::Helper).c_str());
     return 2;  // veduta diff's exit code for an error
 }
 

@@ -10,13 +10,10 @@
 namespace veduta {
 
 std::filesystem::path shippedFile(const std::filesystem::path &relative, const std::string &option) {
-    if (std::optional<std::filesystem::path> folder = runningProgramFolder())
-        for (std::filesystem::path dir = *folder; !dir.empty(); dir = dir.parent_path()) {
-            if (std::filesystem::is_regular_file(dir / relative)) return dir / relative;
-            if (dir == dir.parent_path()) break;
-        }
+    if (std::optional<std::filesystem::path> file = findProgramPart(ProgramPart::Data, relative)) return *file;
     throw InputError(FileLoc{option},
-                     fmt::format("{} was not found beside the program; name a file", relative.generic_string()));
+                     fmt::format("{} was not found in {}; name a file", relative.generic_string(),
+                                 programPartFolderList(ProgramPart::Data)));
 }
 
 std::filesystem::path shippedBuildingRules(const std::string &option) {

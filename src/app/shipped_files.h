@@ -1,5 +1,6 @@
-// The files that come with veduta (rules/gruenderzeit/, rules/streets/, rules/slg/), found beside the
-// program: upwards from its folder to the source tree it was built in.
+// The files that come with veduta (rules/gruenderzeit/, rules/streets/, rules/slg/), found where
+// ProgramPart::Data says: installed in ../share/veduta, or upwards from the program's folder to
+// the source tree it was built in.
 #pragma once
 
 #include <filesystem>
@@ -7,8 +8,8 @@
 
 namespace veduta {
 
-// `relative` (such as rules/streets/grid.txt) in the nearest folder above the program's that
-// holds it. Throws InputError at `option` when none does.
+// `relative` (such as rules/streets/grid.txt) in the first of the data folders that holds it.
+// Throws InputError at `option`, naming every folder looked in, when none does.
 std::filesystem::path shippedFile(const std::filesystem::path &relative, const std::string &option);
 
 // The Gründerzeit rules, rules/gruenderzeit/FacadeStructure.xml.

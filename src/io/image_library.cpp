@@ -38,6 +38,8 @@ std::string environment(const char *name) {
 std::filesystem::path imagePluginPath() {
     std::string overridden = environment("VEDUTA_IMAGE_PLUGIN");
     if (!overridden.empty()) return overridden;
+    if (auto found = findProgramPart(ProgramPart::Helper, kPluginFile)) return *found;
+    // Missing everywhere: the first place, for loadImageLibrary's message.
     if (auto folder = runningProgramFolder()) return *folder / kPluginFile;
     return kPluginFile;  // dlopen searches the library path
 }
@@ -47,7 +49,8 @@ std::unique_ptr<ImageLibrary> loadImageLibrary(const std::filesystem::path &file
     void *plugin = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!plugin) {
         throw std::runtime_error(fmt::format(
-            "cannot load the image plugin {} (set VEDUTA_IMAGE_PLUGIN to its path): {}", file.string(), dlerror()));
+            "cannot load the image plugin {}: {} (veduta looks for {} in {}; set VEDUTA_IMAGE_PLUGIN to its path)",
+            file.string(), dlerror(), kPluginFile, programPartFolderList(ProgramPart::Helper)));
     }
     auto *create = reinterpret_cast<CreateImageLibraryFunction *>(dlsym(plugin, kImagePluginEntry));
     if (!create) {

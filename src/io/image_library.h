@@ -58,8 +58,8 @@ ImageLibrary &imageLibrary();
 // which link the implementation. Call it before anything uses imageLibrary().
 void setImageLibrary(std::unique_ptr<ImageLibrary> library);
 
-// The plugin imageLibrary() loads: $VEDUTA_IMAGE_PLUGIN if set, else veduta-images.so beside
-// the running program.
+// The plugin imageLibrary() loads: $VEDUTA_IMAGE_PLUGIN if set, else veduta-images.so in the
+// first folder of ProgramPart::Helper that holds it (beside the program, then ../lib/veduta).
 std::filesystem::path imagePluginPath();
 // Loads the plugin `file` and creates its library; throws std::runtime_error naming the file
 // and the reason. The plugin stays loaded until the process ends.
