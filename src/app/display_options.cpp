@@ -1,10 +1,12 @@
 #include "app/display_options.h"
 #include "app/number_option.h"
 
+#include <cstdlib>
 #include <filesystem>
 
 #include <fmt/format.h>
 
+#include "core/error.h"
 #include "core/file_extension.h"
 #include "io/output_files.h"
 
@@ -42,7 +44,19 @@ void addDisplayOptions(CLI::App &command, DisplayImageOptions &options) {
 void checkDisplayOptions(const DisplayImageOptions &options) {
     if (options.file.empty()) return;
     prepareOutputFile(options.file);
-    imageLibrary().checkDisplaySettings(options.settings);
+    try {
+        imageLibrary().checkDisplaySettings(options.settings);
+    } catch (const InputError &e) {
+        // veduta's own config once called its ACES view "Filmic", which Blender's Filmic it never was.
+        const char *ocio = std::getenv("OCIO");
+        bool builtIn = options.settings.config.empty() && (!ocio || !*ocio);
+        if (!builtIn || options.settings.view != "Filmic") throw;
+        throw InputError(e.loc(),
+                         e.message() +
+                             " (veduta's ACES 1.0 output transform, once called 'Filmic', is now the view "
+                             "'ACES 1.0 - SDR Video': it never was Blender's Filmic, which --ocio-config "
+                             "with Blender's config.ocio gives)");
+    }
 }
 
 void writeDisplayImage(const RgbaImage &film, const DisplayImageOptions &options) {

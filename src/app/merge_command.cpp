@@ -2,6 +2,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -26,9 +27,9 @@ struct MergeArgs {
 };
 
 // A file that is no readable EXR is bad input, not a failure of ours.
-LayeredImage readInput(const std::string &file) {
+LayeredImage readInput(const std::string &file, ExrFormat &format) {
     try {
-        return readExr(file);
+        return readExr(file, &format);
     } catch (const std::runtime_error &e) {
         std::string message = e.what();
         // readExr's message starts with the file name, which InputError adds again.
@@ -37,12 +38,31 @@ LayeredImage readInput(const std::string &file) {
     }
 }
 
+// The output stores its channels as the first file does; a channel half in one file and float in
+// another would make the merged values depend on the order of the files.
+void checkSameStorage(const std::vector<ExrFormat> &formats, const std::vector<std::string> &files) {
+    for (size_t i = 1; i < formats.size(); ++i) {
+        for (const auto &[a, b] : {std::pair{i, size_t(0)}, std::pair{size_t(0), i}}) {
+            for (const std::string &channel : formats[a].halfChannels) {
+                if (!formats[b].halfChannels.contains(channel)) {
+                    throw InputError(FileLoc{files[i]},
+                                     fmt::format("{} stores {} as half, {} as float: render every part with or "
+                                                 "without --half",
+                                                 files[a], channel, files[b]));
+                }
+            }
+        }
+    }
+}
+
 void runMerge(const MergeArgs &args) {
     prepareOutputFile(args.output);
     std::vector<LayeredImage> parts;
-    for (const std::string &file : args.inputs) parts.push_back(readInput(file));
+    std::vector<ExrFormat> formats(args.inputs.size());
+    for (size_t i = 0; i < args.inputs.size(); ++i) parts.push_back(readInput(args.inputs[i], formats[i]));
+    checkSameStorage(formats, args.inputs);
     LayeredImage merged = mergeFilms(parts, args.inputs);
-    writeExr(merged, args.output);
+    writeExr(merged, args.output, formats[0]);
     if (args.quiet) return;
     const PixelWindow &w = merged.dataWindow;
     int offset = std::get<int>(merged.metadata.at(kSampleOffsetAttribute));

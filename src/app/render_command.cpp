@@ -1,12 +1,15 @@
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <iterator>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "app/command_options.h"
 #include "app/commands.h"
@@ -30,10 +33,26 @@ namespace veduta {
 
 namespace {
 
+// What goes into the EXR and how it is stored.
+struct ExrArgs {
+    std::vector<std::string> passes = defaultPasses();
+    bool half = false;
+    bool rgba = false;
+    std::string compression = "zip";
+    int cryptomatteRanks = kDefaultCryptomatteRanks;
+
+    bool wantsCryptomatte() const {
+        return std::any_of(kCryptomatteKinds, std::end(kCryptomatteKinds), [&](CryptomatteKind kind) {
+            return std::find(passes.begin(), passes.end(), cryptomattePass(kind)) != passes.end();
+        });
+    }
+};
+
 struct RenderArgs {
     std::string scene;
     std::string exr;
     std::string png;
+    ExrArgs exrArgs;
     DisplayImageOptions display;
     std::optional<uint32_t> spp, seed, maxDepth, tileSize, minSamples;
     std::optional<float> noiseThreshold;
@@ -82,7 +101,43 @@ RenderIdentity identityOf(const RenderScene &scene, const Film &film, const Rend
             {"seed", std::to_string(s.seed)},
             {"max depth", std::to_string(s.maxDepth)},
             {"noise threshold", fmt::format("{}", s.noiseThreshold)},
-            {"min samples", std::to_string(s.minSamples)}};
+            {"min samples", std::to_string(s.minSamples)},
+            {"cryptomatte ranks", std::to_string(film.cryptomatteRanks())}};
+}
+
+// Data passes stay 32-bit floats; colour passes become half with --half.
+ExrFormat exrFormatOf(const ExrArgs &args, const LayeredImage &image) {
+    ExrFormat format;
+    format.compression = *exrCompressionNamed(args.compression);
+    for (const LayeredImage::Channel &c : image.channels) {
+        if (args.half && !isDataChannel(c.name)) format.halfChannels.insert(c.name);
+    }
+    return format;
+}
+
+// A codec that changes 32-bit floats would change depth, positions, ids and counts; one file has
+// one codec, so such a codec is refused with those passes.
+void checkCompression(const ExrArgs &args) {
+    if (!changesFloatChannels(*exrCompressionNamed(args.compression))) return;
+    std::vector<std::string> data;
+    for (const std::string &pass : args.passes) {
+        if (isDataChannel(passChannel(pass, "X"))) data.push_back(pass);
+    }
+    if (data.empty()) return;
+    throw CLI::ValidationError(
+        "--compression",
+        fmt::format("{} would change the data passes {}: pick colour passes only with --passes "
+                    "(Combined, CombinedEven, CombinedOdd, Normal, DiffCol) or a codec that keeps "
+                    "32-bit floats exact (none, rle, zips, zip, piz, b44, b44a)",
+                    args.compression, fmt::join(data, ", ")));
+}
+
+DevelopOptions developOptionsOf(const ExrArgs &args, const RenderScene &scene) {
+    DevelopOptions options;
+    options.passes = args.passes;
+    options.rgba = args.rgba;
+    if (args.wantsCryptomatte()) options.naming = cryptomatteNaming(scene);
+    return options;
 }
 
 // Writes a checkpoint after a pass once `every` seconds have passed since the last.
@@ -136,6 +191,7 @@ void runRender(const RenderArgs &args) {
     options.sampleOffset = args.sampleOffset;
     options.timeLimitSeconds = args.timeLimit;
     Film film = makeFilm(scene, options);
+    if (args.exrArgs.wantsCryptomatte()) film.enableCryptomatte(args.exrArgs.cryptomatteRanks);
     RenderIdentity identity = identityOf(scene, film, options, hash);
     RenderStats stats;
     if (args.resume && std::filesystem::exists(checkpoint)) {
@@ -155,11 +211,11 @@ void runRender(const RenderArgs &args) {
     Bvh bvh(scene);
     renderFilm(scene, bvh, options, film, stats);
 
-    LayeredImage image = developFilm(film);
-    addRenderMetadata(image, description, scene, options, stats, hash);
+    LayeredImage image = developFilm(film, developOptionsOf(args.exrArgs, scene));
+    addRenderMetadata(image, args.scene, description, scene, options, stats, hash);
     OutputSet outputs({exr, args.png, args.display.file});
-    writeExr(image, exr);
-    RgbaImage combined = combinedImage(image);
+    writeExr(image, exr, exrFormatOf(args.exrArgs, image));
+    RgbaImage combined = combinedImage(film);
     if (!args.png.empty()) writePng(combined, args.png);
     writeDisplayImage(combined, args.display);
     outputs.commit();
@@ -173,6 +229,27 @@ void runRender(const RenderArgs &args) {
     if (!args.quiet) printSummary(exr, args, film, stats);
 }
 
+void addExrOptions(CLI::App &cmd, ExrArgs &args) {
+    auto passList = [&args](const std::string &text) {
+        try {
+            args.passes = parsePassList(text);
+            return std::string();
+        } catch (const std::invalid_argument &e) {
+            return std::string(e.what());
+        }
+    };
+    cmd.add_option("--passes",
+                   "Passes to write, separated by commas, or all [every pass but CryptoObject, "
+                   "CryptoMaterial]")
+        ->check(CLI::Validator(passList, "LIST"));
+    cmd.add_flag("--half", args.half, "Colour passes as half floats (depth, positions, ids, counts stay 32-bit)");
+    cmd.add_option("--compression", args.compression, "EXR codec [zip]")->check(CLI::IsMember(exrCompressionNames()));
+    cmd.add_flag("--rgba", args.rgba, "Also write Combined as top-level R, G, B, A channels");
+    cmd.add_option("--cryptomatte-depth", args.cryptomatteRanks,
+                   "Ids ranked per pixel in the Crypto passes, two per layer [6]")
+        ->check(CLI::Range(1, kMaxCryptomatteRanks));
+}
+
 }  // namespace
 
 void addRenderCommand(CLI::App &app, int &exitCode) {
@@ -182,6 +259,7 @@ void addRenderCommand(CLI::App &app, int &exitCode) {
     cmd->add_option("-o,--output", args->exr, "EXR file to write [renders/<scene name>.exr]")
         ->check(fileWithExtension(".exr"));
     cmd->add_option("--png", args->png, "Also write an 8-bit sRGB PNG here")->check(fileWithExtension(".png"));
+    addExrOptions(*cmd, args->exrArgs);
     addDisplayOptions(*cmd, args->display);
     cmd->add_option("--spp,--samples", args->spp, "Samples per pixel (overrides the scene)")
         ->check(CLI::Range(1u, 1u << 24));
@@ -213,7 +291,10 @@ void addRenderCommand(CLI::App &app, int &exitCode) {
     addResolutionOption(*cmd, args->resolution);
     addThreadsOption(*cmd, args->threads);
     cmd->add_flag("-q,--quiet", args->quiet, "No progress bar and no summary");
-    cmd->callback([args, &exitCode] { exitCode = runGuarded([&] { runRender(*args); }); });
+    cmd->callback([args, &exitCode] {
+        checkCompression(args->exrArgs);
+        exitCode = runGuarded([&] { runRender(*args); });
+    });
 }
 
 }  // namespace veduta

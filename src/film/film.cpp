@@ -42,6 +42,28 @@ void Film::addSample(size_t pixel, uint32_t sampleIndex, const Vec3f &radiance, 
         albedoSum_[pixel * 3 + size_t(c)] += first.albedo[c];
     }
     ++count_[pixel];
+    // A sample that met nothing covers no id: the pixel's coverages then sum to less than 1.
+    if (cryptomatteRanks_ > 0 && first.hit) {
+        countCryptomatte(pixel, CryptomatteKind::Object, cryptomatteObjectKey(first.objectId, first.buildingId));
+        countCryptomatte(pixel, CryptomatteKind::Material, first.materialId);
+    }
+}
+
+void Film::enableCryptomatte(int ranks) {
+    cryptomatteRanks_ = ranks;
+    cryptomatteKeys_.assign(pixelCount() * 2 * size_t(ranks), 0);
+    cryptomatteCounts_.assign(pixelCount() * 2 * size_t(ranks), 0);
+}
+
+void Film::countCryptomatte(size_t pixel, CryptomatteKind kind, uint64_t key) {
+    size_t first = slotsOf(pixel, kind);
+    for (size_t slot = first; slot < first + size_t(cryptomatteRanks_); ++slot) {
+        if (cryptomatteCounts_[slot] == 0) cryptomatteKeys_[slot] = key;
+        if (cryptomatteKeys_[slot] == key) {
+            ++cryptomatteCounts_[slot];
+            return;
+        }
+    }
 }
 
 void Film::setFirstSample(size_t pixel, const FirstHit &first) {
@@ -55,9 +77,15 @@ void Film::setFirstSample(size_t pixel, const FirstHit &first) {
 }
 
 std::vector<FilmBuffer> Film::buffers() {
-    return {bufferOf("radiance", sum_),     bufferOf("even radiance", evenSum_), bufferOf("normal", normalSum_),
-            bufferOf("albedo", albedoSum_), bufferOf("samples", count_),         bufferOf("even samples", evenCount_),
-            bufferOf("depth", depth_),      bufferOf("position", position_),     bufferOf("ids", ids_)};
+    std::vector<FilmBuffer> all{
+        bufferOf("radiance", sum_),     bufferOf("even radiance", evenSum_), bufferOf("normal", normalSum_),
+        bufferOf("albedo", albedoSum_), bufferOf("samples", count_),         bufferOf("even samples", evenCount_),
+        bufferOf("depth", depth_),      bufferOf("position", position_),     bufferOf("ids", ids_)};
+    if (cryptomatteRanks_ > 0) {
+        all.push_back(bufferOf("cryptomatte keys", cryptomatteKeys_));
+        all.push_back(bufferOf("cryptomatte counts", cryptomatteCounts_));
+    }
+    return all;
 }
 
 }  // namespace veduta

@@ -1,8 +1,8 @@
 // The film: what a render accumulates for each pixel of its window. Sums of radiance (all
 // samples, and the even-numbered ones apart, for noise estimates and denoisers), sums of the
 // first hit's normal and albedo, the sample count, and the data of each pixel's first sample:
-// depth, position and ids, unfiltered. passes.h develops it into Blender's passes; a
-// checkpoint stores it exactly.
+// depth, position and ids, unfiltered; and, when asked for, Cryptomatte's counts of what every
+// sample met first. passes.h develops it into Blender's passes; a checkpoint stores it exactly.
 #pragma once
 
 #include <cstddef>
@@ -13,6 +13,7 @@
 
 #include "core/layered_image.h"
 #include "core/vecmath.h"
+#include "film/cryptomatte.h"
 
 namespace veduta {
 
@@ -72,11 +73,29 @@ class Film {
     uint32_t buildingId(size_t pixel) const { return ids_[pixel * 4 + 2]; }
     uint32_t instanceId(size_t pixel) const { return ids_[pixel * 4 + 3]; }
 
+    // Cryptomatte: from now on every sample's first hit is counted per pixel, `ranks` slots for
+    // objects and as many for materials (24 · ranks bytes a pixel). For a fresh film.
+    void enableCryptomatte(int ranks);
+    int cryptomatteRanks() const { return cryptomatteRanks_; }
+    // A pixel's slots of one kind: the keys its samples met first, in the order they were first
+    // met, and how many samples met each; a slot with count 0 is empty. Keys met once every slot
+    // is taken are not counted (as in Cycles), so that the film stays a fixed size.
+    std::span<const uint64_t> cryptomatteKeys(size_t pixel, CryptomatteKind kind) const {
+        return {&cryptomatteKeys_[slotsOf(pixel, kind)], size_t(cryptomatteRanks_)};
+    }
+    std::span<const uint32_t> cryptomatteCounts(size_t pixel, CryptomatteKind kind) const {
+        return {&cryptomatteCounts_[slotsOf(pixel, kind)], size_t(cryptomatteRanks_)};
+    }
+
     // Every buffer the film's state consists of, in a fixed order.
     std::vector<FilmBuffer> buffers();
 
   private:
     static Vec3f at3(const std::vector<float> &v, size_t i) { return {v[3 * i], v[3 * i + 1], v[3 * i + 2]}; }
+    size_t slotsOf(size_t pixel, CryptomatteKind kind) const {
+        return (pixel * 2 + size_t(kind)) * size_t(cryptomatteRanks_);
+    }
+    void countCryptomatte(size_t pixel, CryptomatteKind kind, uint64_t key);
 
     int fullWidth_, fullHeight_;
     PixelWindow window_;
@@ -85,6 +104,9 @@ class Film {
     std::vector<uint32_t> count_, evenCount_;
     std::vector<float> depth_, position_;
     std::vector<uint32_t> ids_;  // object, material, building, instance
+    int cryptomatteRanks_ = 0;
+    std::vector<uint64_t> cryptomatteKeys_;
+    std::vector<uint32_t> cryptomatteCounts_;
 };
 
 }  // namespace veduta

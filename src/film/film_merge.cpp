@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <map>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -10,6 +11,7 @@
 #include "core/check.h"
 #include "core/error.h"
 #include "core/render_attributes.h"
+#include "film/cryptomatte.h"
 #include "film/passes.h"
 
 namespace veduta {
@@ -228,6 +230,47 @@ std::vector<float> mergeChannel(const SampleRanges &group, const std::string &ch
     return merged;
 }
 
+// One kind's Cryptomatte layers over a group's sample ranges: each range's coverages as sample
+// counts, summed per id over the ranges and ranked again.
+LayeredImage mergeCryptomatte(const SampleRanges &group, CryptomatteKind kind, int ranks) {
+    LayeredImage merged;
+    merged.dataWindow = group[0].image->dataWindow;
+    addCryptomatteLayers(merged, kind, ranks, {});
+    std::vector<std::vector<float> *> out = rankChannels(merged, kind);
+    std::vector<std::vector<const std::vector<float> *>> in;
+    std::vector<const std::vector<float> *> counts;
+    for (const Part &part : group) {
+        in.push_back(rankChannels(*part.image, kind));
+        counts.push_back(&part.image->find(passChannel("SampleCount", "X"))->values);
+    }
+    for (size_t p = 0; p < merged.dataWindow.area(); ++p) {
+        std::map<uint32_t, double> weights;
+        double samples = 0;
+        for (size_t i = 0; i < group.size(); ++i) {
+            double n = (*counts[i])[p];
+            for (const CryptomatteEntry &e : readRanks(in[i], p, n)) weights[e.idBits] += e.weight;
+            samples += n;
+        }
+        std::vector<CryptomatteEntry> entries;
+        for (const auto &[id, weight] : weights) entries.push_back({id, weight});
+        storeRanks(out, p, rankEntries(std::move(entries), ranks), samples);
+    }
+    return merged;
+}
+
+// Every part's names: a name may show in one range's pixels and not in another's.
+std::string mergedManifest(const std::vector<Part> &parts, CryptomatteKind kind) {
+    std::map<std::string, std::string> manifest;
+    for (const Part &part : parts) {
+        try {
+            manifest.merge(storedManifest(*part.image, kind));
+        } catch (const std::exception &e) {
+            throw InputError(FileLoc{*part.name}, e.what());
+        }
+    }
+    return manifestJson(manifest);
+}
+
 void copyWindow(const std::vector<float> &from, const PixelWindow &fromWindow, std::vector<float> &to,
                 const PixelWindow &toWindow) {
     size_t width = size_t(fromWindow.width());
@@ -256,15 +299,27 @@ LayeredImage mergeFilms(const std::vector<LayeredImage> &images, const std::vect
     merged.dataWindow = box;
     for (const LayeredImage::Channel &channel : first.channels) {
         std::vector<float> &values = merged.addChannel(channel.name);
+        if (isCryptomatteChannel(channel.name)) continue;
         for (const SampleRanges &group : groups) {
             copyWindow(mergeChannel(group, channel.name), group[0].image->dataWindow, values, box);
         }
+    }
+    merged.metadata = first.metadata;
+    for (CryptomatteKind kind : kCryptomatteKinds) {
+        int ranks = storedRanks(first, kind);
+        if (ranks == 0) continue;
+        for (const SampleRanges &group : groups) {
+            for (const LayeredImage::Channel &channel : mergeCryptomatte(group, kind, ranks).channels) {
+                copyWindow(channel.values, group[0].image->dataWindow, merged.find(channel.name)->values, box);
+            }
+        }
+        merged.metadata[cryptomatteMetadataPrefix(cryptomatteTypeName(kind)) + "manifest"] =
+            mergedManifest(parts, kind);
     }
 
     double seconds = 0;
     for (const Part &part : parts) seconds += attribute<double>(*part.image, *part.name, kRenderSecondsAttribute);
     const SampleRanges &ranges = groups[0];
-    merged.metadata = first.metadata;
     merged.metadata[kSamplesAttribute] = ranges.back().end() - ranges[0].offset;
     merged.metadata[kSampleOffsetAttribute] = ranges[0].offset;
     merged.metadata[kRenderSecondsAttribute] = seconds;

@@ -1,7 +1,8 @@
 // `veduta merge` without the files: renders of one scene combined into one image. Tiles (parts
 // with different data windows) are assembled into their bounding box; sample ranges (parts with
 // the same data window and consecutive ranges of each pixel's sample sequence) are combined per
-// pixel, weighted by their sample counts. docs/output.md, "Merging", says what is checked.
+// pixel, weighted by their sample counts; Cryptomatte's ranks are summed as sample counts and
+// ranked again. docs/output.md, "Merging", says what is checked.
 #pragma once
 
 #include <string>

@@ -22,20 +22,20 @@ render() { run render "$work/scene.xml" -q -o "$work/out.exr" "$@"; }
 info() { oiiotool --info -v "$1" 2>&1; }
 
 for name in a.png b.jpg c.tif d.JPEG; do
-    render --image "$work/$name" --view Filmic
+    render --image "$work/$name" --view "ACES 1.0 - SDR Video"
     check "$name written" rc_is 0
     check "$name readable" bash -c "iinfo '$work/$name' | grep -q '16 x   12'"
-    check "$name records the view" bash -c "oiiotool --info -v '$work/$name' | grep -q \"view 'Filmic'\""
+    check "$name records the view" bash -c "oiiotool --info -v '$work/$name' | grep -q \"view 'ACES 1.0 - SDR Video'\""
 done
 check "png keeps alpha" bash -c "iinfo '$work/a.png' | grep -q '4 channel'"
 check "tiff is 16 bits" bash -c "iinfo '$work/c.tif' | grep -q 'uint16'"
-check "png names the view" bash -c "oiiotool --info -v '$work/a.png' | grep -q 'ocioview: \"Filmic\"'"
+check "png names the view" bash -c "oiiotool --info -v '$work/a.png' | grep -q 'ocioview: \"ACES 1.0 - SDR Video\"'"
 
 render --image "$work/standard.png" --png "$work/plain.png"
 check "default view" rc_is 0
 check "default view is Standard" bash -c "oiiotool --info -v '$work/standard.png' | grep -q \"view 'Standard'\""
 check "Standard equals the plain sRGB PNG" bash -c "idiff -q '$work/standard.png' '$work/plain.png' >/dev/null"
-render --image "$work/bright.png" --exposure 1.5 --look "Blue Light Fix" --view Filmic --display sRGB
+render --image "$work/bright.png" --exposure 1.5 --look "Blue Light Fix" --view "ACES 1.0 - SDR Video" --display sRGB
 check "exposure and look" rc_is 0
 check "exposure recorded" bash -c "oiiotool --info -v '$work/bright.png' | grep -q 'exposure +1.5 stops'"
 check "look recorded" bash -c "oiiotool --info -v '$work/bright.png' | grep -q \"look 'Blue Light Fix'\""
@@ -56,7 +56,10 @@ fi
 rm -f "$work/out.exr"
 render --image "$work/bad.png" --view Filmc
 check "unknown view exits 1" rc_is 1
-check "unknown view lists the views" err_has "unknown view 'Filmc' for display 'sRGB'; views: Standard, Filmic, Raw"
+check "unknown view lists the views" err_has "unknown view 'Filmc' for display 'sRGB'; views: Standard, ACES 1.0 - SDR Video, Raw"
+render --image "$work/bad.png" --view Filmic
+check "veduta's former Filmic exits 1" rc_is 1
+check "veduta's former Filmic names its new name" err_has "once called 'Filmic', is now the view 'ACES 1.0 - SDR Video'"
 check "unknown view: nothing rendered" test ! -e "$work/out.exr"
 render --image "$work/bad.png" --display sRBG
 check "unknown display exits 1" rc_is 1

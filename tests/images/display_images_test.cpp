@@ -75,15 +75,18 @@ TEST_F(DisplayImageTest, DefaultIsTheStandardViewOfSrgb) {
     EXPECT_EQ(storedRed(dir_ / "half.png"), (std::vector<int>{188, 0, 255}));
 }
 
-TEST_F(DisplayImageTest, FilmicCompressesWhatStandardClips) {
+// veduta's filmic view: the ACES 1.0 output transform, under the ACES studio config's name.
+constexpr const char *kAcesView = "ACES 1.0 - SDR Video";
+
+TEST_F(DisplayImageTest, AcesViewCompressesWhatStandardClips) {
     const std::vector<float> bright = {0.18f, 1.0f, 2.0f, 4.0f, 8.0f, 16.0f};
     DisplaySettings settings;
     library_->writeDisplayImage(dir_ / "standard.png", greys(bright), settings);
-    settings.view = "Filmic";
+    settings.view = kAcesView;
     library_->writeDisplayImage(dir_ / "filmic.png", greys(bright), settings);
     std::vector<int> standard = storedRed(dir_ / "standard.png");
     std::vector<int> filmic = storedRed(dir_ / "filmic.png");
-    std::printf("linear 0.18 1 2 4 8 16 -> Standard %d %d %d %d %d %d, Filmic %d %d %d %d %d %d\n", standard[0],
+    std::printf("linear 0.18 1 2 4 8 16 -> Standard %d %d %d %d %d %d, ACES %d %d %d %d %d %d\n", standard[0],
                 standard[1], standard[2], standard[3], standard[4], standard[5], filmic[0], filmic[1], filmic[2],
                 filmic[3], filmic[4], filmic[5]);
     EXPECT_EQ(std::vector<int>(standard.begin() + 1, standard.end()), std::vector<int>(5, 255));
@@ -96,7 +99,7 @@ TEST_F(DisplayImageTest, FilmicCompressesWhatStandardClips) {
 }
 
 TEST_F(DisplayImageTest, ExposureOneStopIsLightDoubled) {
-    for (const char *view : {"Standard", "Filmic"}) {
+    for (const char *view : {"Standard", kAcesView}) {
         DisplaySettings settings;
         settings.view = view;
         Image doubled = toDisplay(greys({0.02f, 0.2f, 0.9f}), choose(settings));
@@ -110,7 +113,7 @@ TEST_F(DisplayImageTest, ExposureOneStopIsLightDoubled) {
 
 TEST_F(DisplayImageTest, PngJpegAndTiffRecordTheView) {
     DisplaySettings settings;
-    settings.view = "Filmic";
+    settings.view = kAcesView;
     settings.exposureStops = 0.5f;
     Image image = greys({0.1f, 0.5f});
     image.pixels[3] = 0.5f;  // alpha, kept as it is where the format has it
@@ -120,7 +123,7 @@ TEST_F(DisplayImageTest, PngJpegAndTiffRecordTheView) {
         ASSERT_TRUE(input) << name << ": " << OIIO::geterror();
         const OIIO::ImageSpec &spec = input->spec();
         EXPECT_EQ(spec.width, 2) << name;
-        EXPECT_NE(spec.get_string_attribute("ImageDescription").find("view 'Filmic'"), std::string::npos)
+        EXPECT_NE(spec.get_string_attribute("ImageDescription").find("view 'ACES 1.0 - SDR Video'"), std::string::npos)
             << name << ": " << spec.get_string_attribute("ImageDescription");
         EXPECT_NE(spec.get_string_attribute("ImageDescription").find("exposure +0.5 stops"), std::string::npos) << name;
     }
@@ -128,9 +131,9 @@ TEST_F(DisplayImageTest, PngJpegAndTiffRecordTheView) {
     EXPECT_EQ(OIIO::ImageInput::open((dir_ / "out.jpg").string())->spec().nchannels, 3);
     std::unique_ptr<OIIO::ImageInput> png = OIIO::ImageInput::open((dir_ / "out.png").string());
     EXPECT_EQ(png->spec().nchannels, 4);
-    EXPECT_EQ(png->spec().get_string_attribute("ocioview"), "Filmic");
+    EXPECT_EQ(png->spec().get_string_attribute("ocioview"), kAcesView);
     EXPECT_EQ(png->spec().get_string_attribute("ociodisplay"), "sRGB");
-    EXPECT_EQ(png->spec().get_string_attribute("oiio:ColorSpace"), "Filmic sRGB");
+    EXPECT_EQ(png->spec().get_string_attribute("oiio:ColorSpace"), "ACES 1.0 - SDR Video sRGB");
 }
 
 TEST_F(DisplayImageTest, AnotherConfigByPath) {
@@ -177,7 +180,12 @@ TEST_F(DisplayImageTest, UnknownNamesListTheValidOnes) {
     };
     EXPECT_EQ(writing(named("sRBG", "")), "veduta.ocio (built in): unknown display 'sRBG'; displays: sRGB");
     EXPECT_EQ(writing(named("", "Filmc")),
-              "veduta.ocio (built in): unknown view 'Filmc' for display 'sRGB'; views: Standard, Filmic, Raw");
+              "veduta.ocio (built in): unknown view 'Filmc' for display 'sRGB'; views: "
+              "Standard, ACES 1.0 - SDR Video, Raw");
+    // Blender's Filmic is a LUT file veduta does not ship; no view takes its name.
+    EXPECT_EQ(writing(named("", "Filmic")),
+              "veduta.ocio (built in): unknown view 'Filmic' for display 'sRGB'; views: "
+              "Standard, ACES 1.0 - SDR Video, Raw");
     EXPECT_EQ(writing(named("", "", "Filmic, Punchy")),
               "veduta.ocio (built in): unknown look 'Filmic'; looks: Gamut Compression, Blue Light Fix");
     std::filesystem::path other = kOtherConfig;
@@ -188,7 +196,7 @@ TEST_F(DisplayImageTest, UnknownNamesListTheValidOnes) {
     EXPECT_FALSE(std::filesystem::exists(dir_ / "bad.png"));
     EXPECT_NE(test::inputErrorOf([&] { library_->checkDisplaySettings(named("", "", "", dir_ / "missing.ocio")); }),
               "no error");
-    EXPECT_EQ(test::inputErrorOf([&] { library_->checkDisplaySettings(named("", "Filmic", "+Blue Light Fix")); }),
+    EXPECT_EQ(test::inputErrorOf([&] { library_->checkDisplaySettings(named("", kAcesView, "+Blue Light Fix")); }),
               "no error");
 }
 
@@ -196,11 +204,11 @@ TEST_F(DisplayImageTest, LooksChangeTheImage) {
     Image blue(1, 1, 4);
     blue.pixels = {0.0f, 0.0f, 4.0f, 1.0f};
     DisplaySettings settings;
-    settings.view = "Filmic";
+    settings.view = kAcesView;
     Image plain = toDisplay(blue, choose(settings));
     settings.look = "Blue Light Fix";
     Image fixed = toDisplay(blue, choose(settings));
-    std::printf("linear (0, 0, 4) through Filmic: %g %g %g, with Blue Light Fix: %g %g %g\n", plain.pixels[0],
+    std::printf("linear (0, 0, 4) through ACES: %g %g %g, with Blue Light Fix: %g %g %g\n", plain.pixels[0],
                 plain.pixels[1], plain.pixels[2], fixed.pixels[0], fixed.pixels[1], fixed.pixels[2]);
     EXPECT_GT(std::abs(fixed.pixels[0] - plain.pixels[0]) + std::abs(fixed.pixels[1] - plain.pixels[1]), 0.01f);
 }
