@@ -29,5 +29,6 @@ void addCrsCommand(CLI::App &app, int &exitCode);
 void addTwinCommand(CLI::App &app, int &exitCode);
 void addCompareCommand(CLI::App &app, int &exitCode);
 void addGenerateCommand(CLI::App &app, int &exitCode);
+void addFarmCommand(CLI::App &app, int &exitCode);
 
 }  // namespace veduta

@@ -40,5 +40,6 @@ int main(int argc, char **argv) {
     veduta::addTwinCommand(app, exitCode);
     veduta::addCompareCommand(app, exitCode);
     veduta::addGenerateCommand(app, exitCode);
+    veduta::addFarmCommand(app, exitCode);
     return veduta::runApp(app, argc, argv, exitCode);
 }
