@@ -1,5 +1,6 @@
 // `veduta farm submit` and `veduta farm status`: one render split into a Slurm job array of
 // tiles or sample ranges, merged by a job that waits for them (docs/farm.md).
+#include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
@@ -13,6 +14,7 @@
 
 #include "app/command_options.h"
 #include "app/commands.h"
+#include "app/exr_options.h"
 #include "app/farm_job.h"
 #include "app/farm_scripts.h"
 #include "app/farm_split.h"
@@ -37,9 +39,11 @@ struct SubmitArgs {
     SlurmRequest slurm;
     double checkpointEvery = kDefaultCheckpointSeconds;
     bool dryRun = false;
-    // Passed through to every task's `veduta render`: the options that decide the image.
+    // Passed through to every task's `veduta render`: the options that decide the image, and
+    // what its EXR holds (the merge keeps the parts' passes, types and codec).
     std::optional<uint32_t> spp, seed, maxDepth, minSamples;
     std::string resolution, noiseThreshold;
+    ExrArgs exr;
 };
 
 // What the tasks need of the scene before anything is rendered: the image size and the samples.
@@ -76,6 +80,14 @@ std::vector<std::vector<std::string>> taskOptions(const SubmitArgs &args, const 
     return tasks;
 }
 
+// veduta merge weighs each part's pixels by their SampleCount, so the parts keep that pass
+// whatever --passes leaves out (and the merged image with them).
+ExrArgs partExr(ExrArgs exr) {
+    if (std::find(exr.passes.begin(), exr.passes.end(), "SampleCount") == exr.passes.end())
+        exr.passes.push_back("SampleCount");
+    return exr;
+}
+
 std::vector<std::string> renderOptions(const SubmitArgs &args, const ImageSize &size) {
     std::vector<std::string> options;
     auto add = [&options](const char *option, const std::string &value) {
@@ -88,6 +100,8 @@ std::vector<std::string> renderOptions(const SubmitArgs &args, const ImageSize &
     add("--max-depth", number(args.maxDepth));
     add("--noise-threshold", args.noiseThreshold);
     add("--min-spp", number(args.minSamples));
+    std::vector<std::string> exr = exrArguments(partExr(args.exr));
+    options.insert(options.end(), exr.begin(), exr.end());
     return options;
 }
 
@@ -249,8 +263,10 @@ void addSubmitCommand(CLI::App &farm, int &exitCode) {
     cmd->add_option("--min-spp", args->minSamples, "Adaptive sampling, as veduta render (tiles only)")
         ->check(CLI::Range(1u, 1u << 24))
         ->excludes(ranges);
+    addExrOptions(*cmd, args->exr);
     cmd->callback([tiles, ranges, args, &exitCode] {
         if (!*tiles && !*ranges) throw CLI::RequiredError("--tiles or --sample-ranges");
+        checkCompression(args->exr);
         submitCommand(*args, exitCode);
     });
 }

@@ -1,19 +1,17 @@
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <iterator>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 
 #include "app/command_options.h"
 #include "app/commands.h"
 #include "app/display_options.h"
+#include "app/exr_options.h"
 #include "app/number_option.h"
 #include "app/render_metadata.h"
 #include "app/run_guarded.h"
@@ -32,21 +30,6 @@
 namespace veduta {
 
 namespace {
-
-// What goes into the EXR and how it is stored.
-struct ExrArgs {
-    std::vector<std::string> passes = defaultPasses();
-    bool half = false;
-    bool rgba = false;
-    std::string compression = "zip";
-    int cryptomatteRanks = kDefaultCryptomatteRanks;
-
-    bool wantsCryptomatte() const {
-        return std::any_of(kCryptomatteKinds, std::end(kCryptomatteKinds), [&](CryptomatteKind kind) {
-            return std::find(passes.begin(), passes.end(), cryptomattePass(kind)) != passes.end();
-        });
-    }
-};
 
 struct RenderArgs {
     std::string scene;
@@ -103,33 +86,6 @@ RenderIdentity identityOf(const RenderScene &scene, const Film &film, const Rend
             {"noise threshold", fmt::format("{}", s.noiseThreshold)},
             {"min samples", std::to_string(s.minSamples)},
             {"cryptomatte ranks", std::to_string(film.cryptomatteRanks())}};
-}
-
-// Data passes stay 32-bit floats; colour passes become half with --half.
-ExrFormat exrFormatOf(const ExrArgs &args, const LayeredImage &image) {
-    ExrFormat format;
-    format.compression = *exrCompressionNamed(args.compression);
-    for (const LayeredImage::Channel &c : image.channels) {
-        if (args.half && !isDataChannel(c.name)) format.halfChannels.insert(c.name);
-    }
-    return format;
-}
-
-// A codec that changes 32-bit floats would change depth, positions, ids and counts; one file has
-// one codec, so such a codec is refused with those passes.
-void checkCompression(const ExrArgs &args) {
-    if (!changesFloatChannels(*exrCompressionNamed(args.compression))) return;
-    std::vector<std::string> data;
-    for (const std::string &pass : args.passes) {
-        if (isDataChannel(passChannel(pass, "X"))) data.push_back(pass);
-    }
-    if (data.empty()) return;
-    throw CLI::ValidationError(
-        "--compression",
-        fmt::format("{} would change the data passes {}: pick colour passes only with --passes "
-                    "(Combined, CombinedEven, CombinedOdd, Normal, DiffCol) or a codec that keeps "
-                    "32-bit floats exact (none, rle, zips, zip, piz, b44, b44a)",
-                    args.compression, fmt::join(data, ", ")));
 }
 
 DevelopOptions developOptionsOf(const ExrArgs &args, const RenderScene &scene) {
@@ -227,27 +183,6 @@ void runRender(const RenderArgs &args) {
                      (unsigned long long)stats.nonFiniteSamples);
     }
     if (!args.quiet) printSummary(exr, args, film, stats);
-}
-
-void addExrOptions(CLI::App &cmd, ExrArgs &args) {
-    auto passList = [&args](const std::string &text) {
-        try {
-            args.passes = parsePassList(text);
-            return std::string();
-        } catch (const std::invalid_argument &e) {
-            return std::string(e.what());
-        }
-    };
-    cmd.add_option("--passes",
-                   "Passes to write, separated by commas, or all [every pass but CryptoObject, "
-                   "CryptoMaterial]")
-        ->check(CLI::Validator(passList, "LIST"));
-    cmd.add_flag("--half", args.half, "Colour passes as half floats (depth, positions, ids, counts stay 32-bit)");
-    cmd.add_option("--compression", args.compression, "EXR codec [zip]")->check(CLI::IsMember(exrCompressionNames()));
-    cmd.add_flag("--rgba", args.rgba, "Also write Combined as top-level R, G, B, A channels");
-    cmd.add_option("--cryptomatte-depth", args.cryptomatteRanks,
-                   "Ids ranked per pixel in the Crypto passes, two per layer [6]")
-        ->check(CLI::Range(1, kMaxCryptomatteRanks));
 }
 
 }  // namespace

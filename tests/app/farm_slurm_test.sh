@@ -54,6 +54,15 @@ for task in 0 1 2 3; do SLURM_ARRAY_TASK_ID=$task bash "$script" 2>/dev/null; do
 check "the tasks run without Slurm too" test -e "$dry/it's here.exr.farm/parts/part-3.exr"
 bash "$dry/it's here.exr.farm/merge.sbatch" 2>/dev/null
 check "the merge script merges" test -e "$dry/it's here.exr"
+# What the EXR holds is the tasks' too, so the merged image has it.
+run farm submit --dry-run --tiles 2 --res 96x54 --spp 2 --passes Combined,CryptoObject --half -o "$work/crypto.exr"
+check "EXR options passed to the tasks, with SampleCount for the merge" \
+    grep -qF "'--passes' 'Combined,CryptoObject,SampleCount' '--half'" "$work/crypto.exr.farm/render.sbatch"
+for task in 0 1; do SLURM_ARRAY_TASK_ID=$task bash "$work/crypto.exr.farm/render.sbatch" 2>/dev/null; done
+bash "$work/crypto.exr.farm/merge.sbatch" 2>/dev/null
+check "the merged image has the Crypto layers" grep -qa "ViewLayer.CryptoObject00.R" "$work/crypto.exr"
+run farm submit --dry-run --tiles 2 --compression dwaa -o "$work/lossy.exr"
+check "a lossy codec with data passes exits 2" rc_is 2
 run farm submit --dry-run --tiles 5185 --res 96x54 -o "$work/big.exr"
 check "more tiles than pixels exit 2" rc_is 2
 check "more tiles than pixels named" err_has "5185 tiles do not fit a 96x54 image: give 1 to 5184"
