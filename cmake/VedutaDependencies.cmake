@@ -56,6 +56,10 @@ veduta_require(tinyobjloader_FOUND libtinyobjloader-dev)
 if(VEDUTA_BUILD_TESTS)
   find_package(GTest QUIET CONFIG)
   veduta_require(GTest_FOUND libgtest-dev)
+  # glTF read back in the export tests (tests/io/gltf_writer_test.cpp). Debian ships tinygltf as
+  # a shared library with a CMake config; its header alone needs no JSON library.
+  find_package(TinyGLTF QUIET CONFIG)
+  veduta_require(TinyGLTF_FOUND libtinygltf-dev)
 endif()
 if(VEDUTA_BUILD_BENCH)
   find_package(benchmark QUIET CONFIG)

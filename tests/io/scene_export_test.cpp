@@ -231,6 +231,7 @@ TEST_F(SceneExport, FormatFromExtension) {
     EXPECT_EQ(exportFormatForPath("a/b.obj"), ExportFormat::Obj);
     EXPECT_EQ(exportFormatForPath("b.GLTF"), ExportFormat::Gltf);
     EXPECT_EQ(exportFormatForPath("b.glb"), ExportFormat::Glb);
+    EXPECT_EQ(exportFormatForPath("b.Ply"), ExportFormat::Ply);
     EXPECT_EQ(exportFormatForPath("b.fbx"), std::nullopt);
     EXPECT_EQ(exportFormatForPath("obj"), std::nullopt);
 }
@@ -258,7 +259,7 @@ TEST_F(SceneExport, FacetedMeshesKeepFaceNormals) {
     EXPECT_EQ(triangles, pyramid.effectiveTriangleCount());
 }
 
-// The .mtl can be written but the .obj cannot (a folder is in its way): neither is left.
+// A folder stands where the .obj goes: nothing is written, and the folder stays.
 TEST_F(SceneExport, AFailedExportLeavesNothing) {
     fs::create_directory(folder_ / "city.obj");
     EXPECT_THROW(exportScene(scene_, folder_ / "city.obj", ExportFormat::Obj), std::exception);
