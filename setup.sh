@@ -60,6 +60,12 @@ elif [ "$mode" = stills ]; then
             -o "build/stills/$name.exr" --png "renders/stills/$name.png"
     done
 else
+    # The Khronos glTF validator for the gltf_validator test, where npm is installed (the test
+    # skips without it).
+    if command -v npm >/dev/null && [ ! -f build/npm/node_modules/gltf-validator/package.json ]; then
+        npm install --silent --no-audit --no-fund --prefix build/npm gltf-validator@2.0.0-dev.3.10 ||
+            echo "setup: gltf-validator could not be installed from npm; the gltf_validator test will skip"
+    fi
     # The whole suite, then the unit tests once more under AddressSanitizer and UBSan.
     for preset in test sanitize; do
         start=$SECONDS

@@ -2,13 +2,13 @@
 # Every command README.md shows in its ```sh blocks, as a user would type it.
 # Usage: readme_commands_test.sh VEDUTA_BINARY SOURCE_DIR BUILD_DIR
 #
-# `build/release/src/veduta …` lines run, in the README's order, in a scratch copy of the
-# project folder (its files linked, renders/ empty) where build/release/src/veduta is the
-# program under test; each must exit 0 and write every renders/ file it names. The other
-# commands are the set-up, the build and the benchmarks, which CI runs itself or which take
-# minutes: for them the test checks that what they name exists (setup.sh's modes, the CMake
-# presets, the benchmark programs). A command of any other kind fails the test, so that a new
-# example in the README cannot go untested.
+# `build/release/src/veduta …`, `cmake --install` and `cpack` lines run, in the README's order,
+# in a scratch copy of the project folder (its files linked, renders/ empty, HOME a scratch
+# folder) where build/release is the build under test; each must exit 0 and write every
+# renders/ file it names. The other commands are the set-up, the build and the benchmarks,
+# which CI runs itself or which take minutes: for them the test checks that what they name
+# exists (setup.sh's modes, the CMake presets, the benchmark programs). A command of any other
+# kind fails the test, so that a new example in the README cannot go untested.
 set -u
 veduta=$1 source=$2 build=$3
 work=$(mktemp -d)
@@ -16,12 +16,14 @@ trap 'rm -rf "$work"' EXIT
 . "$(dirname "$0")/test_lib.sh"
 
 project=$work/project
-mkdir -p "$project/renders" "$project/build/release/src"
+mkdir -p "$project/renders" "$project/build" "$work/home"
 for entry in "$source"/*; do
     case "$(basename "$entry")" in build | renders) continue ;; esac
     ln -s "$entry" "$project/$(basename "$entry")"
 done
-ln -s "$veduta" "$project/build/release/src/veduta"
+# The README's build/release is the build under test; ~ is a scratch home, for the install.
+ln -s "$build" "$project/build/release"
+[ "$build/src/veduta" -ef "$veduta" ] || { echo "$veduta is not the program of $build"; exit 1; }
 
 # The lines of the README's ```sh blocks, as "LINE_NUMBER<TAB>COMMAND".
 readme_commands() {
@@ -30,10 +32,10 @@ readme_commands() {
 }
 
 # The renders/ files a command line names.
-named_outputs() { grep -oE "renders/[A-Za-z0-9_./-]+\.(exr|png|jpg|tif|glb|obj)" <<<"$1" | sort -u; }
+named_outputs() { grep -oE "renders/[A-Za-z0-9_./-]+\.(exr|png|jpg|tif|glb|gltf|obj|ply)" <<<"$1" | sort -u; }
 
 runs_and_writes() {  # runs_and_writes COMMAND: exit 0, and every renders/ file it names exists
-    (cd "$project" && timeout 600 bash -c "$1" </dev/null >"$work/out" 2>"$work/err")
+    (cd "$project" && HOME=$work/home timeout 600 bash -c "$1" </dev/null >"$work/out" 2>"$work/err")
     local rc=$? file
     if [ $rc != 0 ]; then
         echo "exit code $rc:"
@@ -56,7 +58,7 @@ while IFS=$'\t' read -r number line; do
     command=${line%%#*}  # the comment after the command is for the reader
     command=${command%"${command##*[![:space:]]}"}
     case "$command" in
-        "build/release/src/veduta"*)
+        "build/release/src/veduta"* | "cmake --install build/release "* | "cpack --config build/release/"*)
             start=$SECONDS
             check "README.md:$number: $command" runs_and_writes "$command"
             echo "README.md:$number ran in $((SECONDS - start)) s: $command"
