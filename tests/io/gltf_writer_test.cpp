@@ -12,6 +12,7 @@
 #include <tiny_gltf.h>
 
 #include "core/axes.h"
+#include "io/export_scene.h"
 #include "io/image_library.h"
 #include "io/scene_export.h"
 #include "test_paths.h"
@@ -23,23 +24,12 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string sceneXml() {
-    return R"(<scene>
-  <camera position="0 -10 2" look_at="0 0 2" up="0 0 1" fov="50" resolution="800 400"/>
+    return test::exportSceneXml(
+        R"(  <camera position="0 -10 2" look_at="0 0 2" up="0 0 1" fov="50" resolution="800 400"/>
   <sun azimuth="180" elevation="30" irradiance="3.2 3.05 2.8"/>
-  <material name="brick" diffuse="0.9 0.9 0.9" specular_intensity="0.5" shininess="16"
-            diffuse_map=")" +
-        test::sourceFile("materials/textures/brick_diffuse.png") + R"("
-            normal_map=")" +
-        test::sourceFile("materials/textures/brick_normal.png") + R"("/>
-  <material name="slate" diffuse="0.2 0.22 0.3"/>
-  <material name="pane" glass="true" ior="1.52" tint="0.9 0.95 0.9"/>
-  <box size="4 4 3" material="brick" id="17" building="3"/>
-  <plane size="2 2" material="pane" translate="0 -2.01 1.5" rotate="90 0 0" id="18"/>
-  <prototype name="spire"><cone radius="0.5" height="2" segments="6"/></prototype>
-  <instance prototype="spire" material="slate" translate="10 0 0" id="20"/>
-  <instance prototype="spire" material="slate" translate="0 10 0" id="21"/>
-  <instance prototype="spire" material="slate" translate="0 0 10" rotate="0 0 45" id="22"/>
-</scene>)";
+)",
+        "diffuse_map=\"" + test::sourceFile("materials/textures/brick_diffuse.png") + "\" normal_map=\"" +
+            test::sourceFile("materials/textures/brick_normal.png") + "\"");
 }
 
 class GltfWriter : public ::testing::Test {

@@ -10,6 +10,7 @@
 #include <assimp/Importer.hpp>
 
 #include "core/axes.h"
+#include "io/export_scene.h"
 #include "io/scene_export.h"
 #include "test_scenes.h"
 
@@ -18,19 +19,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A box baked in place, a cone placed three times (kept as a prototype), a glass pane.
-const char *const kSceneXml = R"(<scene>
-  <material name="brick" diffuse="0.6 0.25 0.2" specular_intensity="0.5" shininess="16"/>
-  <material name="slate" diffuse="0.2 0.22 0.3"/>
-  <material name="pane" glass="true" ior="1.52" tint="0.9 0.95 0.9"/>
-  <box size="4 4 3" material="brick" id="17" building="3"/>
-  <plane size="2 2" material="pane" translate="0 -2.01 1.5" rotate="90 0 0" id="18"/>
-  <prototype name="spire"><cone radius="0.5" height="2" segments="6"/></prototype>
-  <instance prototype="spire" material="slate" translate="10 0 0" id="20"/>
-  <instance prototype="spire" material="slate" translate="0 10 0" id="21"/>
-  <instance prototype="spire" material="slate" translate="0 0 10" rotate="0 0 45" id="22"/>
-</scene>)";
-
 class SceneExport : public ::testing::Test {
   protected:
     void SetUp() override {
@@ -38,7 +26,7 @@ class SceneExport : public ::testing::Test {
             ("veduta-export-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
         fs::remove_all(folder_);
         fs::create_directories(folder_);
-        scene_ = test::sceneFromXml(kSceneXml);
+        scene_ = test::sceneFromXml(test::exportSceneXml());
     }
     void TearDown() override {
         if (!::testing::Test::HasFailure()) fs::remove_all(folder_);
