@@ -50,11 +50,11 @@ cp /etc/resolv.conf "$root/etc/resolv.conf"
 cp "$deb" "$root/root/"
 mount -t proc proc "$root/proc"
 
-echo "== apt-get install ./$(basename "$deb") in the chroot"
+echo "== apt install ./$(basename "$deb") in the chroot"
 chroot "$root" /usr/bin/env DEBIAN_FRONTEND=noninteractive bash -euo pipefail -c '
     cd /root
     apt-get update -q >/dev/null
-    apt-get install -y -q ./veduta_*.deb >/root/apt.log 2>&1 || { tail -30 /root/apt.log; exit 1; }
+    apt install -y -q ./veduta_*.deb >/root/apt.log 2>&1 || { tail -30 /root/apt.log; exit 1; }
     grep -E "^(Need to get|After this operation)" /root/apt.log
     dpkg -L veduta | grep -E "^/usr/(bin|lib/veduta)/|man1|completions/"
     cd /tmp
