@@ -1,4 +1,5 @@
 #include "test_scenes.h"
+#include "app/scene_loading.h"
 #include "input_error.h"
 #include "test_paths.h"
 
@@ -13,6 +14,14 @@ namespace veduta::test {
 
 RenderScene sceneFromXml(const std::string &xml) {
     return buildRenderScene(readSceneText(xml, "test.xml", test::testData()));
+}
+
+SceneDescription defaultSceneAt(int width, int height, uint32_t samples) {
+    SceneDescription d = loadSceneDescription("");
+    d.camera.width = width;
+    d.camera.height = height;
+    d.settings.samplesPerPixel = samples;
+    return d;
 }
 
 std::string sceneErrorOf(const std::string &xml) {

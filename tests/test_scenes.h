@@ -11,6 +11,9 @@ namespace veduta::test {
 // Parses `xml` (which must hold a whole <scene>) and builds its RenderScene.
 RenderScene sceneFromXml(const std::string &xml);
 
+// The built-in default scene's description at `width` × `height` pixels and `samples` per pixel.
+SceneDescription defaultSceneAt(int width, int height, uint32_t samples);
+
 // The message of the InputError that reading and building `xml` throws, or "no error".
 std::string sceneErrorOf(const std::string &xml);
 

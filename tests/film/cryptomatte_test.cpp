@@ -10,7 +10,6 @@
 #include <fmt/format.h>
 #include <tbb/task_arena.h>
 
-#include "app/scene_loading.h"
 #include "core/murmur_hash.h"
 #include "core/render_attributes.h"
 #include "film/cryptomatte.h"
@@ -156,10 +155,7 @@ TEST(CryptomatteRender, SplitsTheBoundaryPixelsBetweenTwoObjects) {
 }
 
 RenderScene smallDefaultScene(uint32_t tileSize = 16) {
-    SceneDescription d = loadSceneDescription("");
-    d.camera.width = 48;
-    d.camera.height = 27;
-    d.settings.samplesPerPixel = 16;
+    SceneDescription d = test::defaultSceneAt(48, 27, 16);
     d.settings.tileSize = tileSize;
     return buildRenderScene(d);
 }

@@ -9,7 +9,6 @@
 
 #include <tbb/task_arena.h>
 
-#include "app/scene_loading.h"
 #include "film/passes.h"
 #include "io/checkpoint_file.h"
 #include "render/renderer.h"
@@ -20,10 +19,7 @@ namespace veduta {
 namespace {
 
 RenderScene smallDefaultScene(float noiseThreshold = 0) {
-    SceneDescription d = loadSceneDescription("");
-    d.camera.width = 64;
-    d.camera.height = 36;
-    d.settings.samplesPerPixel = 24;
+    SceneDescription d = test::defaultSceneAt(64, 36, 24);
     d.settings.noiseThreshold = noiseThreshold;
     d.settings.minSamples = 8;
     return buildRenderScene(d);
