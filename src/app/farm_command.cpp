@@ -25,6 +25,7 @@
 #include "app/slurm.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/program_folder.h"
 #include "io/output_files.h"
 
 namespace veduta {
@@ -115,13 +116,11 @@ std::string jobName(const fs::path &output, const fs::path &folder) {
     return fmt::format("veduta-{}-{:08x}", stem, uint32_t(std::hash<std::string>{}(folder.string())));
 }
 
-fs::path runningProgram() {
-    // The tasks run this very program, whatever name or link it was started by.
-    std::error_code error;
-    fs::path self = fs::read_symlink("/proc/self/exe", error);
-    if (error)
-        throw std::runtime_error(fmt::format("cannot find the running program in /proc/self/exe: {}", error.message()));
-    return self;
+// The tasks run this very program, whatever name or link it was started by.
+fs::path programForTasks() {
+    std::optional<fs::path> self = runningProgram();
+    if (!self) throw std::runtime_error("cannot find the running program: /proc/self/exe is not readable");
+    return *self;
 }
 
 FarmJob planJob(const SubmitArgs &args, const ImageSize &size, std::vector<std::vector<std::string>> tasks) {
@@ -129,7 +128,7 @@ FarmJob planJob(const SubmitArgs &args, const ImageSize &size, std::vector<std::
     job.output = fs::absolute(args.output.empty() ? defaultOutput(args.scene, ".exr") : args.output).lexically_normal();
     job.folder = fs::absolute(args.jobDir.empty() ? job.output.string() + ".farm" : args.jobDir).lexically_normal();
     job.name = jobName(job.output, job.folder);
-    job.program = runningProgram();
+    job.program = programForTasks();
     if (!args.scene.empty()) job.scene = fs::absolute(args.scene).lexically_normal();
     job.renderOptions = renderOptions(args, size);
     job.tasks = std::move(tasks);

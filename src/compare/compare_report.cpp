@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "core/json_text.h"
 #include "core/xml_escape.h"
 #include "io/output_files.h"
 
@@ -18,16 +19,6 @@ namespace {
 
 std::string jsonNumber(double v) { return std::isfinite(v) ? fmt::format("{:.6g}", v) : "null"; }
 std::string jsonNumber(const std::optional<double> &v) { return v ? jsonNumber(*v) : "null"; }
-
-std::string jsonString(const std::string &text) {
-    std::string out = "\"";
-    for (char c : text) {
-        if (c == '"' || c == '\\') out += '\\', out += c;
-        else if (static_cast<unsigned char>(c) < 0x20) out += fmt::format("\\u{:04x}", int(c));
-        else out += c;
-    }
-    return out + "\"";
-}
 
 std::string costJson(const SceneCost &c) {
     return fmt::format(

@@ -4,11 +4,17 @@ namespace veduta {
 
 namespace fs = std::filesystem;
 
-std::optional<fs::path> runningProgramFolder() {
+std::optional<fs::path> runningProgram() {
     std::error_code error;
     fs::path self = fs::read_symlink("/proc/self/exe", error);
     if (error) return std::nullopt;
-    return self.parent_path();
+    return self;
+}
+
+std::optional<fs::path> runningProgramFolder() {
+    std::optional<fs::path> self = runningProgram();
+    if (!self) return std::nullopt;
+    return self->parent_path();
 }
 
 namespace {

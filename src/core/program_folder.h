@@ -11,7 +11,10 @@
 
 namespace veduta {
 
-// The folder of the running executable, from /proc/self/exe; nothing where /proc is missing.
+// The running executable, whatever name or link started it, from /proc/self/exe; nothing where
+// /proc is missing.
+std::optional<std::filesystem::path> runningProgram();
+// Its folder.
 std::optional<std::filesystem::path> runningProgramFolder();
 
 enum class ProgramPart {

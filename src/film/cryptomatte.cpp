@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "core/json_text.h"
 #include "core/murmur_hash.h"
 #include "film/passes.h"
 #include "scene/object_names.h"
@@ -18,19 +19,6 @@ namespace {
 const char *const kRankChannels[2][2] = {{"R", "G"}, {"B", "A"}};  // [rank % 2][coverage]
 
 std::string layerName(CryptomatteKind kind, int layer) { return fmt::format("{}{:02d}", cryptomattePass(kind), layer); }
-
-void escapeJson(std::string &out, std::string_view text) {
-    for (char c : text) {
-        if (c == '"' || c == '\\') {
-            out += '\\';
-            out += c;
-        } else if (uint8_t(c) < 0x20) {
-            out += fmt::format("\\u{:04x}", unsigned(uint8_t(c)));
-        } else {
-            out += c;
-        }
-    }
-}
 
 // A reader of the JSON manifestJson writes: one object of string members.
 class ManifestReader {
@@ -60,6 +48,17 @@ class ManifestReader {
         if (peek() != c) throw std::runtime_error(fmt::format("the Cryptomatte manifest lacks a '{}'", c));
         ++at_;
     }
+    // The character JSON's one-letter escape `\c` stands for (`\"`, `\\` and `\/` for themselves).
+    static char escaped(char c) {
+        switch (c) {
+        case 'b': return '\b';
+        case 'f': return '\f';
+        case 'n': return '\n';
+        case 'r': return '\r';
+        case 't': return '\t';
+        default: return c;
+        }
+    }
     std::string string() {
         expect('"');
         std::string text;
@@ -71,6 +70,8 @@ class ManifestReader {
                     if (at_ + 4 > json_.size()) break;
                     c = char(std::stoi(json_.substr(at_, 4), nullptr, 16));
                     at_ += 4;
+                } else {
+                    c = escaped(c);
                 }
             }
             text += c;
@@ -206,9 +207,7 @@ std::string manifestJson(const std::map<std::string, std::string> &manifest) {
     std::string json = "{";
     for (const auto &[name, hex] : manifest) {
         if (json.size() > 1) json += ',';
-        json += '"';
-        escapeJson(json, name);
-        json += "\":\"" + hex + '"';
+        json += jsonString(name) + ":\"" + hex + '"';
     }
     return json + "}";
 }

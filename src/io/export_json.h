@@ -6,12 +6,11 @@
 #include <string>
 #include <string_view>
 
+#include "core/json_text.h"
 #include "core/vecmath.h"
 
 namespace veduta {
 
-// `text` as a JSON string literal, quotes included.
-std::string jsonString(std::string_view text);
 // The shortest decimal that reads back as `value`; throws std::invalid_argument for NaN and
 // infinities, which JSON cannot hold.
 std::string jsonNumber(double value);
