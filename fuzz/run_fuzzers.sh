@@ -17,7 +17,7 @@ if [ $# -lt 1 ] || ! [[ $1 =~ ^[0-9]+$ ]]; then
 fi
 seconds=$1
 shift
-all_targets=(scene material rules street_rules slg_tables slg_plans city_data osm citygml edbs xyz asc mesh_obj mesh_ply mesh_gltf checkpoint crs facade_languages)
+all_targets=(scene material rules street_rules slg_tables slg_plans city_data osm citygml edbs xyz asc mesh_obj mesh_ply mesh_gltf checkpoint crs facade_languages cryptomatte_manifest farm_job)
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=("${all_targets[@]}")
 
@@ -40,7 +40,7 @@ seed_files() {
         asc) ls data/*/*.asc "$shared"/dgm/*.asc ;;
         mesh_obj) ls tests/data/*.obj ;;
         mesh_ply) ls tests/data/*.ply ;;
-        mesh_gltf | checkpoint | crs | slg_plans | facade_languages) ;;
+        mesh_gltf | checkpoint | crs | slg_plans | facade_languages | cryptomatte_manifest | farm_job) ;;
     esac 2>/dev/null || true
 }
 

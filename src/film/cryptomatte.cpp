@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cctype>
 #include <cmath>
 #include <stdexcept>
 
@@ -59,6 +60,34 @@ class ManifestReader {
         default: return c;
         }
     }
+    // The four hex digits after `\u`.
+    uint32_t codePoint() {
+        if (at_ + 4 > json_.size()) throw std::runtime_error("the Cryptomatte manifest ends inside a \\u escape");
+        uint32_t value = 0;
+        for (size_t end = at_ + 4; at_ < end; ++at_) {
+            char c = json_[at_];
+            int digit = std::isdigit(uint8_t(c)) ? c - '0'
+                : std::isxdigit(uint8_t(c))      ? std::tolower(c) - 'a' + 10
+                                                 : -1;
+            if (digit < 0)
+                throw std::runtime_error("the Cryptomatte manifest has a \\u escape that is not four hex digits");
+            value = value * 16 + uint32_t(digit);
+        }
+        return value;
+    }
+    // A code point of the Basic Multilingual Plane as UTF-8 (names are UTF-8 in the header).
+    static void appendUtf8(std::string &text, uint32_t code) {
+        if (code < 0x80) {
+            text += char(code);
+        } else if (code < 0x800) {
+            text += char(0xC0 | (code >> 6));
+            text += char(0x80 | (code & 0x3F));
+        } else {
+            text += char(0xE0 | (code >> 12));
+            text += char(0x80 | ((code >> 6) & 0x3F));
+            text += char(0x80 | (code & 0x3F));
+        }
+    }
     std::string string() {
         expect('"');
         std::string text;
@@ -67,12 +96,10 @@ class ManifestReader {
             if (c == '\\' && at_ < json_.size()) {
                 c = json_[at_++];
                 if (c == 'u') {
-                    if (at_ + 4 > json_.size()) break;
-                    c = char(std::stoi(json_.substr(at_, 4), nullptr, 16));
-                    at_ += 4;
-                } else {
-                    c = escaped(c);
+                    appendUtf8(text, codePoint());
+                    continue;
                 }
+                c = escaped(c);
             }
             text += c;
         }
@@ -207,7 +234,7 @@ std::string manifestJson(const std::map<std::string, std::string> &manifest) {
     std::string json = "{";
     for (const auto &[name, hex] : manifest) {
         if (json.size() > 1) json += ',';
-        json += jsonString(name) + ":\"" + hex + '"';
+        json += jsonString(name) + ":" + jsonString(hex);
     }
     return json + "}";
 }

@@ -78,7 +78,8 @@ std::vector<CryptomatteEntry> readRanks(const std::vector<const std::vector<floa
 // How many ranks `image` holds of the kind (0: none).
 int storedRanks(const LayeredImage &image, CryptomatteKind kind);
 
-// The manifest {name: hex} as JSON, and back (only what manifestJson writes is read back).
+// The manifest {name: hex} as JSON, and back: one object of string members, with JSON's escapes;
+// parseManifest throws std::runtime_error for anything else.
 std::string manifestJson(const std::map<std::string, std::string> &manifest);
 std::map<std::string, std::string> parseManifest(const std::string &json);
 // The manifest stored in the image's header for the kind (empty if none).

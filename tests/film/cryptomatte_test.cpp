@@ -64,13 +64,23 @@ TEST(Cryptomatte, MetadataKeyIsTheTypeNamesHash) {
 }
 
 TEST(Cryptomatte, ManifestRoundTrips) {
-    std::map<std::string, std::string> manifest{
-        {"plain", "13851a76"}, {"a \"quoted\" \\ name", "42c9679f"}, {std::string("tab\there"), "00000001"}};
+    std::map<std::string, std::string> manifest{{"plain", "13851a76"},
+                                                {"a \"quoted\" \\ name", "42c9679f"},
+                                                {std::string("tab\there"), "00000001"},
+                                                {"a value another file wrote", "not \"hex\""}};
     std::string json = manifestJson(manifest);
     EXPECT_EQ(json.find('\t'), std::string::npos);
     EXPECT_EQ(parseManifest(json), manifest);
     EXPECT_EQ(parseManifest("{}"), (std::map<std::string, std::string>{}));
     EXPECT_THROW(parseManifest("{\"a\":"), std::runtime_error);
+}
+
+// Other writers escape what veduta writes as it is: a \u escape is a code point, kept as UTF-8.
+TEST(Cryptomatte, ManifestReadsUnicodeEscapesAsUtf8) {
+    EXPECT_EQ(parseManifest(R"({"Stra\u00dfe \u20ac":"0000002a"})"),
+              (std::map<std::string, std::string>{{"Straße €", "0000002a"}}));
+    EXPECT_THROW(parseManifest(R"({"a\u00zz":"0000002a"})"), std::runtime_error);
+    EXPECT_THROW(parseManifest(R"({"a\u00)"), std::runtime_error);
 }
 
 TEST(Cryptomatte, RanksByWeightThenId) {
